@@ -1,0 +1,125 @@
+/* RockingWall physics: the equations of motion of docs/model.md in plain C99 (no FMI types).
+ *
+ * State vector x = (q1, q2, dq1, dq2): absolute rotations of the lower and upper body (clockwise
+ * positive) and their rates. Models 1 (parapet) and 2 (simplySupported) keep q2 slaved to q1
+ * (q2 = q1, resp. q2 = -q1). Discrete state (modes) lives in rw_mode and changes only in
+ * rw_event_update() (event mode of the FMU); everything else is a pure function of
+ * (parameters, modes, inputs, x).
+ */
+#ifndef RW_PHYSICS_H
+#define RW_PHYSICS_H
+
+#include <stddef.h>
+
+enum { RW_PARAPET = 1, RW_SIMPLY_SUPPORTED = 2, RW_FLEXIBLE_TOP = 3 };
+enum { RW_RIGID = 1, RW_SEMI_RIGID_PAPER = 2, RW_SEMI_RIGID_HINGE = 3 };
+
+#define RW_NX 4 /* q1, q2, dq1, dq2 */
+
+/* Event indicator layout (continuous functions in continuous-time mode; values 1 = unused). */
+enum {
+    RW_Z_BASE = 0,     /* base hinge open: side_b*q1 + eps (impact); closed: 1 - |f_b|/cap + eps (opening) */
+    RW_Z_MID = 1,      /* flexibleTop mid open: side_m*(q2-q1) + eps (switch); closed: 1 - |f_m|/cap_m + eps */
+    RW_Z_BREAK1 = 2,   /* breakpoint: 2DOF semi-rigid |q1|-theta_y; 1DOF trilinear |q1|-2*Delta_1/h */
+    RW_Z_BREAK2 = 3,   /* breakpoint: hinge |x|-theta_y; paper |q2|-theta_y; 1DOF |q1|-2*Delta_2/h */
+    RW_Z_COLLAPSE = 4, /* > 0 while stable: parapet 1-|theta|/alpha, 1DOF 1-|D|/Delta_u, 2DOF G(q)/|q|^2 */
+    RW_NZ = 5
+};
+
+typedef struct {
+    int model;    /* RW_PARAPET .. RW_FLEXIBLE_TOP */
+    int hingeLaw; /* RW_RIGID .. RW_SEMI_RIGID_HINGE */
+    double h, b, W, psi, Kd, er, g;
+    double delta1Ratio, delta2A, delta2B, hingeSat, restRate;
+} rw_params;
+
+typedef struct {
+    double W1, Wd;             /* W1 = W2 = W/2, Wd = psi*W1 */
+    double Du, Fr, F0, Rel;    /* Delta_u, F_r, F0, R_el (Table 5.1) */
+    double D1, D2, Fi;         /* Delta_1, Delta_2 (Eq. 5.1, 5.2), plateau F_i */
+    double theta_y;            /* 2*hingeSat*Delta_1/h */
+    double cap_b, cap_m;       /* hinge capacities */
+    double M[2][2], K[2][2];   /* Eq. 3.2, 3.3 */
+    double pa[2];              /* p = pa*ag (Eq. 3.4, sign per convention) */
+    double fu;                 /* f_u = fu*u_top*(1,1), fu = Kd*h/2 */
+    double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
+    double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
+    double tiny;               /* rotation below which the direction of motion decides a side */
+} rw_derived;
+
+/* offsets of the hinge event indicators (rotation, relative force margin) */
+#define RW_EPS_Q(d) (0.1 * (d)->tiny)
+#define RW_EPS_F 1e-12
+
+typedef struct {
+    int closed_b, closed_m; /* rigid hinges: 1 = closed (rest / closed-hinge state) */
+    int side_b, side_m;     /* active side of each hinge, +1 / -1 */
+    double zoff_b, zoff_m;  /* offsets of the open-hinge event indicators side*rotation + zoff, set at
+                               each event so that the indicator is >= eps_q > 0 when integration restarts */
+} rw_mode;
+
+typedef struct {
+    double ag;    /* ground acceleration, + toward +x [m/s2] */
+    double u_top; /* diaphragm displacement [m] */
+} rw_input;
+
+/* Parameters --------------------------------------------------------------------------------- */
+void rw_params_default(rw_params *p);
+/* Range check of one Real parameter by name (NaN/inf rejected). 0 = ok, else msg filled. */
+int rw_check_real_param(const char *name, double value, char *msg, size_t n);
+int rw_check_int_param(const char *name, int value, char *msg, size_t n);
+/* Full check including cross-parameter rules. 0 = ok, else msg filled. */
+int rw_params_validate(const rw_params *p, char *msg, size_t n);
+void rw_derive(const rw_params *p, rw_derived *d);
+
+/* Is the hinge law set-valued (rest / closed-hinge states)? */
+int rw_is_rigid(const rw_params *p);
+
+/* Physics ------------------------------------------------------------------------------------ */
+/* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides). */
+void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double q[2], double Q[2]);
+/* Trilinear / rigid resisting force F(D) of the 1DOF (Doherty), rigid uses side for sign(D). */
+double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, double D);
+void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                    const double x[RW_NX], double dx[RW_NX]);
+/* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */
+void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                      const double x[RW_NX], double *f_b, double *f_m);
+/* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
+void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
+void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                         const double x[RW_NX], double z[RW_NZ]);
+/* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
+double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                     const double x[RW_NX]);
+/* 1 when x is past the instability point (spec "Collapse"). */
+int rw_is_collapsed(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                    const double x[RW_NX]);
+double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                 const double x[RW_NX]);
+/* Outputs */
+double rw_s1(const rw_params *p, const double x[RW_NX]);
+double rw_s2(const rw_params *p, const double x[RW_NX]);
+double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX]);
+int rw_condition(const rw_params *p, const rw_mode *m);
+
+/* Modes -------------------------------------------------------------------------------------- */
+typedef void (*rw_log_fn)(void *ctx, const char *message);
+
+typedef struct {
+    int impacts;        /* base impacts applied */
+    int states_changed; /* a continuous state jumped */
+    int modes_changed;  /* a discrete mode changed */
+} rw_event_result;
+
+/* Initial modes from the start states (spec "Initial state"); slaves q2 for models 1, 2. */
+void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
+                   rw_mode *m, rw_log_fn log, void *ctx);
+/* Event-mode update: impacts, mid-hinge switches, closing and opening of rigid hinges. */
+void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+                     double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx);
+/* Opening test of closed rigid hinges only (part of rw_event_update). Returns 1 if a hinge opened. */
+int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+                   const double x[RW_NX], rw_log_fn log, void *ctx);
+
+#endif

@@ -1,0 +1,508 @@
+"""Equations of motion of the three models (docs/model.md), one class per model.
+
+Every model works on the same state vector y = [q1, q2, dq1, dq2] (rad, rad/s); in the 1DOF
+models q2 is slaved (simplySupported: q2 = -q1; parapet: q2 = q1).  A model object provides
+  rhs(t, y, st)          dy/dt in the current discrete state `st` (a Mode),
+  events(st)             the event indicators of that discrete state (see `Event`),
+  handle(ev, t, y, st)   the map applied when `ev` crosses (impact, switch, breakpoint, ...),
+  resolve(t, y, st)      the opening tests of closed rigid hinges (rest / closed-hinge states),
+  rest_margin(t, st)     while everything is closed: min(capacity - |demand|) (>= 0: stays at rest),
+  collapse_now(y, st)    the collapse criterion evaluated at a state,
+  outputs(t, y)          s1, s2, F_top;  energy(t, y) the spec's energy.
+The hybrid integration (event location, restarts) is in solver.py.
+"""
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+
+def _sign(x):
+    return 1.0 if x > 0 else (-1.0 if x < 0 else 0.0)
+
+
+def _sat(z):
+    return 1.0 if z > 1.0 else (-1.0 if z < -1.0 else z)
+
+
+@dataclass
+class Mode:
+    """Discrete state: hinge sides (+1/-1) and closed flags (rigid hinges / rest)."""
+    side_b: float = 1.0
+    side_m: float = 1.0
+    base_closed: bool = False
+    mid_closed: bool = False
+    pending: dict = field(default_factory=dict)  # event name -> (orientation, certain), set by maps
+
+
+@dataclass
+class Event:
+    """An event indicator.  raw(t, y) changes sign at the event; drate(y, dy) is d raw/dt.
+    kind: 'base', 'mid', 'breakpoint', 'open_b', 'open_m', 'collapse'.
+    fixed: +1/-1 if the orientation is fixed by the discrete state (opening indicators), else None."""
+    name: str
+    kind: str
+    raw: object
+    drate: object = None
+    dacc: object = None
+    fixed: float = None
+
+
+class _Base:
+    rigid = False
+
+    def __init__(self, p, ag, u):
+        self.p, self.ag, self.u = p, ag, u
+
+    def all_closed(self, st):
+        return st.base_closed and (st.mid_closed or self.one_dof)
+
+    def resolve(self, t, y, st):
+        return y, []
+
+    def elastic(self, y):
+        return False
+
+    def outputs(self, t, y):
+        h = self.p.h
+        return y[0] * h / 2, (y[0] + y[1]) * h / 2, 0.0
+
+
+# ---------------------------------------------------------------------------------------------
+class Parapet(_Base):
+    """Housner's rigid block (docs/model.md "Model 1"): theta'' = -p^2 [sin(s a - th) + (ag/g) cos(s a - th)]."""
+    one_dof = True
+    rigid = True
+
+    def __init__(self, p, ag, u):
+        super().__init__(p, ag, u)
+        self.alpha, self.p2 = p.alpha, p.p_housner**2
+        self.thr = p.g * math.tan(self.alpha)  # uplift threshold |ag| > g tan(alpha)
+
+    def initial(self, q0, dq0):
+        th, w = float(q0[0]), float(dq0[0])
+        st = Mode()
+        if th == 0 and w == 0:
+            st.base_closed = True
+        else:
+            st.side_b = _sign(th) if th != 0 else _sign(w)
+            st.pending["base"] = (st.side_b, True)
+        return np.array([th, th, w, w]), st
+
+    def rhs(self, t, y, st):
+        if st.base_closed:
+            return np.zeros(4)
+        s = st.side_b
+        th = y[0]
+        a = -self.p2 * (math.sin(s * self.alpha - th) + self.ag(t) / self.p.g * math.cos(s * self.alpha - th))
+        return np.array([y[2], y[3], a, a])
+
+    def events(self, st):
+        return [Event("base", "base", lambda t, y: y[0], lambda y, dy: dy[0], lambda y, dy: dy[2]),
+                Event("collapse", "collapse", lambda t, y: self.alpha - abs(y[0]), fixed=1.0)]
+
+    def rest_margin(self, t, st):
+        return self.thr - abs(self.ag(t))
+
+    def resolve(self, t, y, st):
+        if st.base_closed and abs(self.ag(t)) > self.thr:
+            st.base_closed = False
+            st.side_b = -_sign(self.ag(t))
+            st.pending["base"] = (st.side_b, True)
+            return y, ["open"]
+        return y, []
+
+    def handle(self, ev, t, y, st, s_old):
+        y = y.copy()
+        if ev.kind == "base":  # impact at theta = 0: theta' *= er
+            y[0] = y[1] = 0.0
+            y[2] *= self.p.er
+            y[3] = y[2]
+            rec = ["base_impact"]
+            if abs(y[2]) < self.p.rest_rate:
+                y[:] = 0.0
+                st.base_closed = True
+                rec.append("close")
+            else:
+                st.side_b = -s_old
+                st.pending["base"] = (-s_old, -s_old * y[2] > 0)
+            return y, rec
+        raise AssertionError(ev.kind)
+
+    def collapse_now(self, y, st, t=0.0):
+        return abs(y[0]) >= self.alpha
+
+    def outputs(self, t, y):
+        return y[0] * self.p.h / 2, y[0] * self.p.h, 0.0
+
+    def energy(self, t, y):
+        p = self.p
+        th, w = y[0], y[2]
+        return 0.5 * (4 / 3) * (p.W / p.g) * p.R**2 * w**2 + p.W * p.R * (math.cos(self.alpha - abs(th)) - math.cos(self.alpha))
+
+
+# ---------------------------------------------------------------------------------------------
+class SimplySupported(_Base):
+    """Doherty's 1DOF (docs/model.md "Model 2"): (W/3g) D'' = -(W/2g) ag + F(D), D = q1 h/2, q2 = -q1."""
+    one_dof = True
+
+    def __init__(self, p, ag, u):
+        super().__init__(p, ag, u)
+        self.rigid = p.hinge_law == "rigid"
+        self.thr = 2 * p.F_r * p.g / p.W  # rigid uplift |ag| > (4b/h)(1 + 0.75 psi) g
+
+    def initial(self, q0, dq0):
+        q1, w = float(q0[0]), float(dq0[0])
+        st = Mode()
+        if self.rigid and q1 == 0 and w == 0:
+            st.base_closed = True
+        elif self.rigid:
+            st.side_b = _sign(q1) if q1 != 0 else _sign(w)
+            st.pending["base"] = (st.side_b, True)
+        return np.array([q1, -q1, w, -w]), st
+
+    def force(self, D, st):
+        """Resisting force F(D) (N/m): trilinear (Fig. 5.2, semi-rigid) or rigid."""
+        p = self.p
+        a = abs(D)
+        if self.rigid:
+            return -p.F_r * st.side_b * (1 - a / p.Delta_u)
+        if a <= p.Delta_1:
+            f = p.F_i * a / p.Delta_1
+        elif a <= p.Delta_2:
+            f = p.F_i
+        else:
+            f = p.F_r * (1 - a / p.Delta_u)
+        return -_sign(D) * f
+
+    def rhs(self, t, y, st):
+        if st.base_closed:
+            return np.zeros(4)
+        p = self.p
+        D = y[0] * p.h / 2
+        Ddd = (3 * p.g / p.W) * (-(p.W / (2 * p.g)) * self.ag(t) + self.force(D, st))
+        a = Ddd * 2 / p.h
+        return np.array([y[2], -y[2], a, -a])
+
+    def events(self, st):
+        p = self.p
+        h2 = p.h / 2
+        ev = [Event("base", "base", lambda t, y: y[0], lambda y, dy: dy[0], lambda y, dy: dy[2])]
+        if not self.rigid:
+            for name, d in (("bp1", p.Delta_1), ("bp2", p.Delta_2)):
+                ev.append(Event(name, "breakpoint", lambda t, y, d=d: abs(y[0]) * h2 - d,
+                                lambda y, dy: _sign(y[0]) * dy[0] * h2))
+        ev.append(Event("collapse", "collapse", lambda t, y: p.Delta_u - abs(y[0]) * h2, fixed=1.0))
+        return ev
+
+    def rest_margin(self, t, st):
+        return self.thr - abs(self.ag(t))
+
+    def resolve(self, t, y, st):
+        if self.rigid and st.base_closed and abs(self.ag(t)) > self.thr:
+            st.base_closed = False
+            st.side_b = -_sign(self.ag(t))
+            st.pending["base"] = (st.side_b, True)
+            return y, ["open"]
+        return y, []
+
+    def handle(self, ev, t, y, st, s_old):
+        y = y.copy()
+        if ev.kind == "base":  # impact at D = 0: dD *= er
+            y[0] = y[1] = 0.0
+            y[2] *= self.p.er
+            y[3] = -y[2]
+            rec = ["base_impact"]
+            if self.rigid and abs(y[2]) < self.p.rest_rate:  # |dD| < restRate*h/2
+                y[:] = 0.0
+                st.base_closed = True
+                rec.append("close")
+            else:
+                st.side_b = -s_old
+                st.pending["base"] = (-s_old, -s_old * y[2] > 0)
+            return y, rec
+        if ev.kind == "breakpoint":
+            dy = self.rhs(t, y, st)
+            st.pending[ev.name] = (-s_old, -s_old * ev.drate(y, dy) > 0)
+            return y, ["breakpoint"]
+        raise AssertionError(ev.kind)
+
+    def collapse_now(self, y, st, t=0.0):
+        return abs(y[0]) * self.p.h / 2 >= self.p.Delta_u
+
+    def outputs(self, t, y):
+        return y[0] * self.p.h / 2, 0.0, 0.0
+
+    def potential(self, D):
+        p = self.p
+        a = abs(D)
+        if self.rigid:
+            return p.F_r * (a - a * a / (2 * p.Delta_u))
+        d1, d2 = p.Delta_1, p.Delta_2
+        if a <= d1:
+            return p.F_i * a * a / (2 * d1)
+        v = p.F_i * d1 / 2
+        if a <= d2:
+            return v + p.F_i * (a - d1)
+        v += p.F_i * (d2 - d1)
+        return v + p.F_r * ((a - d2) - (a * a - d2 * d2) / (2 * p.Delta_u))
+
+    def energy(self, t, y):
+        p = self.p
+        D, dD = y[0] * p.h / 2, y[2] * p.h / 2
+        return 0.5 * p.W / (3 * p.g) * dD**2 + self.potential(D)
+
+
+# ---------------------------------------------------------------------------------------------
+class FlexibleTop(_Base):
+    """The paper's 2DOF (docs/model.md "Model 3"): M q'' + K q = p(ag) + f_u(u_top) + Q(q) (Eq. 3.1-3.8)."""
+    one_dof = False
+
+    def __init__(self, p, ag, u):
+        super().__init__(p, ag, u)
+        self.law = p.hinge_law
+        self.rigid = self.law == "rigid"
+        (self.m11, self.m12), (_, self.m22) = p.M
+        (self.k11, self.k12), (_, self.k22) = p.K
+        self.det = self.m11 * self.m22 - self.m12**2
+        self.pa1, self.pa2 = p.p_per_ag
+        self.fu = p.fu_per_u[0]
+        self.cb, self.cm, self.ty = p.cap_b, p.cap_m, p.theta_y
+        self.ks = self.k11 + 2 * self.k12 + self.k22
+        self.ms = self.m11 + 2 * self.m12 + self.m22
+
+    def initial(self, q0, dq0):
+        q1, q2 = map(float, q0)
+        v1, v2 = map(float, dq0)
+        st = Mode()
+        if self.rigid:
+            st.base_closed = q1 == 0 and v1 == 0
+            st.mid_closed = (q2 - q1) == 0 and (v2 - v1) == 0
+        if not st.base_closed and (q1 != 0 or v1 != 0):
+            st.side_b = _sign(q1) if q1 != 0 else _sign(v1)
+            st.pending["base"] = (st.side_b, True)
+        if not st.mid_closed and (q2 - q1 != 0 or v2 - v1 != 0):
+            st.side_m = _sign(q2 - q1) if q2 != q1 else _sign(v2 - v1)
+            st.pending["mid"] = (st.side_m, True)
+        return np.array([q1, q2, v1, v2]), st
+
+    def F(self, t):
+        """F = p(ag) + f_u(u_top) (Eq. 3.4 with ag positive toward +x)."""
+        a, u = self.ag(t), self.u(t)
+        fu = self.fu * u
+        return self.pa1 * a + fu, self.pa2 * a + fu
+
+    def Q(self, q1, q2, st):
+        """Hinge terms (A_i, B_i of Eq. 3.5-3.8 corrected, with the law's finite stiffness)."""
+        x = q2 - q1
+        if self.law == "rigid":
+            mb, mm = st.side_b, st.side_m
+        elif self.law == "semiRigidHinge":
+            mb, mm = _sat(q1 / self.ty), _sat(x / self.ty)
+        else:  # semiRigidPaper: A_c min(1,|q1|/ty), B_c min(1,|q2|/ty)
+            A = -self.cb * st.side_b + self.cm * st.side_m
+            B = -self.cm * st.side_m
+            return A * min(1.0, abs(q1) / self.ty), B * min(1.0, abs(q2) / self.ty)
+        return -self.cb * mb + self.cm * mm, -self.cm * mm
+
+    def rhs(self, t, y, st):
+        q1, q2, v1, v2 = y
+        if self.rigid and st.base_closed and st.mid_closed:
+            return np.zeros(4)
+        F1, F2 = self.F(t)
+        if self.rigid and st.base_closed:  # q1 = dq1 = 0; row 2 alone
+            a2 = (F2 - self.k22 * q2 - self.cm * st.side_m) / self.m22
+            return np.array([0.0, v2, 0.0, a2])
+        if self.rigid and st.mid_closed:  # q1 = q2 = theta
+            a = (F1 + F2 - self.ks * q1 - self.cb * st.side_b) / self.ms
+            return np.array([v1, v1, a, a])
+        Q1, Q2 = self.Q(q1, q2, st)
+        r1 = F1 - self.k11 * q1 - self.k12 * q2 + Q1
+        r2 = F2 - self.k12 * q1 - self.k22 * q2 + Q2
+        a1 = (self.m22 * r1 - self.m12 * r2) / self.det
+        a2 = (self.m11 * r2 - self.m12 * r1) / self.det
+        return np.array([v1, v2, a1, a2])
+
+    # demands on closed rigid hinges (docs/model.md "Rigid hinges")
+    def f_b_baseclosed(self, t, y, st):
+        F1, F2 = self.F(t)
+        q2 = y[1]
+        a2 = (F2 - self.k22 * q2 - self.cm * st.side_m) / self.m22
+        return F1 - self.k12 * q2 + self.cm * st.side_m - self.m12 * a2
+
+    def f_m_midclosed(self, t, y, st):
+        F1, F2 = self.F(t)
+        th = y[0]
+        a = (F1 + F2 - self.ks * th - self.cb * st.side_b) / self.ms
+        return F2 - (self.k12 + self.k22) * th - (self.m12 + self.m22) * a
+
+    def G_t(self, t, y, st):
+        """Collapse indicator G(q) = q . (K q - f_u - Q(q)) (docs/model.md "Collapse").
+
+        Q(q) is the hinge law as a function of q: for the rigid (and paper) law the signs of q1 and
+        x = q2 - q1 themselves (mu = sign), not the tracked sides, so -q.Q = cap_b|q1| + cap_m|x| >= 0."""
+        q1, q2 = y[0], y[1]
+        fu = self.fu * self.u(t)
+        if self.law == "semiRigidHinge":
+            Q1, Q2 = self.Q(q1, q2, st)
+        else:
+            Q1, Q2 = self.Q(q1, q2, Mode(side_b=_sign(q1), side_m=_sign(q2 - q1)))
+        return (q1 * (self.k11 * q1 + self.k12 * q2 - fu - Q1)
+                + q2 * (self.k12 * q1 + self.k22 * q2 - fu - Q2))
+
+    def elastic(self, y):
+        q1, q2 = y[0], y[1]
+        if self.law == "rigid":
+            return q1 == 0 and q2 == 0
+        if self.law == "semiRigidHinge":
+            return abs(q1) <= self.ty and abs(q2 - q1) <= self.ty
+        return abs(q1) <= self.ty and abs(q2) <= self.ty
+
+    def collapse_now(self, y, st, t=0.0):
+        return (not self.elastic(y)) and self.G_t(t, y, st) <= 0
+
+    def events(self, st):
+        ty = self.ty
+        base = Event("base", "base", lambda t, y: y[0], lambda y, dy: dy[0], lambda y, dy: dy[2])
+        mid = Event("mid", "mid", lambda t, y: y[1] - y[0], lambda y, dy: dy[1] - dy[0], lambda y, dy: dy[3] - dy[2])
+        col = Event("collapse", "collapse", lambda t, y: self.G_t(t, y, st))
+        if self.rigid:
+            if st.base_closed:  # mid open
+                return [mid, Event("open_b", "open_b", lambda t, y: self.cb - abs(self.f_b_baseclosed(t, y, st)), fixed=1.0), col]
+            if st.mid_closed:
+                return [base, Event("open_m", "open_m", lambda t, y: self.cm - abs(self.f_m_midclosed(t, y, st)), fixed=1.0), col]
+            return [base, mid, col]
+        ev = [base, mid,
+              Event("bp_b", "breakpoint", lambda t, y: abs(y[0]) - ty, lambda y, dy: _sign(y[0]) * dy[0])]
+        if self.law == "semiRigidHinge":
+            ev.append(Event("bp_m", "breakpoint", lambda t, y: abs(y[1] - y[0]) - ty,
+                            lambda y, dy: _sign(y[1] - y[0]) * (dy[1] - dy[0])))
+        else:
+            ev.append(Event("bp_2", "breakpoint", lambda t, y: abs(y[1]) - ty, lambda y, dy: _sign(y[1]) * dy[1]))
+        ev.append(col)
+        return ev
+
+    def rest_margin(self, t, st):
+        F1, F2 = self.F(t)
+        return min(self.cb - abs(F1 + F2), self.cm - abs(F2))
+
+    def resolve(self, t, y, st):
+        """Opening tests of closed rigid hinges; repeated until consistent (docs/model.md)."""
+        rec = []
+        if not self.rigid:
+            return y, rec
+        y = y.copy()
+        for _ in range(4):
+            F1, F2 = self.F(t)
+            if st.base_closed and st.mid_closed:
+                fb, fm = F1 + F2, F2
+                ob, om = abs(fb) > self.cb, abs(fm) > self.cm
+                if not (ob or om):
+                    return y, rec
+                sb, sm = _sign(fb), _sign(fm)
+                if ob and om:
+                    # base alone if the mid hinge then holds; else mid alone if the base then holds; else both
+                    a = (F1 + F2 - self.cb * sb) / self.ms
+                    holds_m = abs(F2 - (self.m12 + self.m22) * a) <= self.cm
+                    a2 = (F2 - self.cm * sm) / self.m22
+                    holds_b = abs(F1 + self.cm * sm - self.m12 * a2) <= self.cb
+                    ob = holds_m or not holds_b
+                    om = (not holds_m)
+                if ob:
+                    st.base_closed, st.side_b = False, sb
+                    st.pending["base"] = (sb, True)
+                if om:
+                    st.mid_closed, st.side_m = False, sm
+                    st.pending["mid"] = (sm, True)
+                rec.append("open")
+                continue
+            if st.base_closed:
+                fb = self.f_b_baseclosed(t, y, st)
+                if abs(fb) > self.cb:
+                    st.base_closed, st.side_b = False, _sign(fb)
+                    st.pending["base"] = (st.side_b, True)
+                    rec.append("open")
+                    continue
+            if st.mid_closed:
+                fm = self.f_m_midclosed(t, y, st)
+                if abs(fm) > self.cm:
+                    st.mid_closed, st.side_m = False, _sign(fm)
+                    st.pending["mid"] = (st.side_m, True)
+                    rec.append("open")
+                    continue
+            return y, rec
+        return y, rec
+
+    def handle(self, ev, t, y, st, s_old):
+        y = y.copy()
+        p = self.p
+        if ev.kind == "base":  # impact at q1 = 0: both rates times er
+            y[0] = 0.0
+            if self.rigid and st.mid_closed:
+                y[1] = 0.0
+            y[2] *= p.er
+            y[3] *= p.er
+            rec = ["base_impact"]
+            if self.rigid and abs(y[2]) < p.rest_rate:
+                y[0] = y[2] = 0.0
+                if st.mid_closed:
+                    y[1] = y[3] = 0.0
+                st.base_closed = True
+                rec.append("close")
+            else:
+                st.side_b = -s_old
+                st.pending["base"] = (-s_old, -s_old * y[2] > 0)
+            return y, rec
+        if ev.kind == "mid":  # mid-hinge switch, no energy loss (paper Section 4)
+            y[1] = y[0]
+            rec = ["mid_switch"]
+            if self.rigid and abs(y[3] - y[2]) < p.rest_rate:
+                y[3] = y[2]
+                st.mid_closed = True
+                rec.append("close")
+            else:
+                st.side_m = -s_old
+                st.pending["mid"] = (-s_old, -s_old * (y[3] - y[2]) > 0)
+            return y, rec
+        if ev.kind == "breakpoint":
+            dy = self.rhs(t, y, st)
+            st.pending[ev.name] = (-s_old, -s_old * ev.drate(y, dy) > 0)
+            return y, ["breakpoint"]
+        if ev.kind == "open_b":  # the demand reached the capacity: the base opens on side sign(f_b)
+            st.base_closed, st.side_b = False, _sign(self.f_b_baseclosed(t, y, st)) or 1.0
+            st.pending["base"] = (st.side_b, True)
+            return y, ["open"]
+        if ev.kind == "open_m":
+            st.mid_closed, st.side_m = False, _sign(self.f_m_midclosed(t, y, st)) or 1.0
+            st.pending["mid"] = (st.side_m, True)
+            return y, ["open"]
+        raise AssertionError(ev.kind)
+
+    def outputs(self, t, y):
+        s1 = y[0] * self.p.h / 2
+        s2 = (y[0] + y[1]) * self.p.h / 2
+        return s1, s2, self.p.Kd * (s2 - self.u(t))
+
+    def hinge_potential(self, q1, x):
+        cb, cm, ty = self.cb, self.cm, self.ty
+        if self.law == "semiRigidHinge":
+            def phi(z):
+                u = abs(z) / ty
+                return ty * (0.5 * u * u if u <= 1 else u - 0.5)
+            return cb * phi(q1) + cm * phi(x)
+        return cb * abs(q1) + cm * abs(x)  # rigid (also used, as a non-conserved measure, for semiRigidPaper)
+
+    def energy(self, t, y):
+        """E = 1/2 dq'M dq + 1/2 q'K_grav q + 1/2 Kd (s2 - u_top)^2 + V_h(q)  (spec's E when u_top = 0)."""
+        q1, q2, v1, v2 = y
+        p = self.p
+        T = 0.5 * (self.m11 * v1 * v1 + 2 * self.m12 * v1 * v2 + self.m22 * v2 * v2)
+        ks = p.Kd * p.h**2 / 4
+        Vg = 0.5 * ((self.k11 - ks) * q1 * q1 + 2 * (self.k12 - ks) * q1 * q2 + (self.k22 - ks) * q2 * q2)
+        s2 = (q1 + q2) * p.h / 2
+        Vs = 0.5 * p.Kd * (s2 - self.u(t)) ** 2
+        return T + Vg + Vs + self.hinge_potential(q1, q2 - q1)
+
+
+def make_model(p, ag, u):
+    return {"parapet": Parapet, "simplySupported": SimplySupported, "flexibleTop": FlexibleTop}[p.model](p, ag, u)

@@ -1,0 +1,208 @@
+"""Speed against accuracy: a work-precision diagram of every way this project can run the wall.
+
+Contenders, all on the same scenes and the same sampled input:
+  fmi2sim (CVODE BDF and Adams, rtol 1e-3 .. 1e-10), fmpy driving the same FMU (CVode at several
+  rtol, forward Euler at several steps), and the Python reference solver (RK45, DOP853, Radau).
+Error of a run = max(relative error of peak s1, of peak s2, RMS error of s1(t) / peak s1) against a
+converged run (fmi2sim BDF at rtol 1e-12, cross-checked with the reference solver at DOP853 1e-11).
+Cost = CPU time of the process doing the work (child rusage for fmi2sim, process_time in Python).
+
+Prints the table, the speed ratios at equal accuracy measured side by side in this one run,
+the model ladder (what each simpler model costs and how far its peaks are), and writes
+results/bench_*.csv and results/work_precision.png.
+
+    .venv/bin/python scripts/bench.py [--quick]
+"""
+import argparse
+import csv
+import os
+import pathlib
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from tqdm import tqdm
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "reference"))
+sys.path.insert(0, str(REPO / "scripts"))
+import rw_fmu  # noqa: E402
+from rwref import Params, simulate, inputs  # noqa: E402
+from fmpy import extract  # noqa: E402
+
+FMU = REPO / "build" / "RockingWall.fmu"
+FMI2SIM = REPO / "build" / "fmi2sim"
+WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0, er=0.86)
+DT_OUT = 0.01
+
+
+def scenes(quick):
+    gauss_t = np.arange(0.0, 8.0 + 1e-9, 0.002)
+    pulse = inputs.gaussian(0.04, 1.0)
+    gauss = inputs.Signal(gauss_t, np.array([pulse(t) for t in gauss_t]), "Gaussian D=0.04 m T=1 s")
+    elce = inputs.el_centro(0.5)
+    if quick:
+        elce = inputs.Signal(elce.t[elce.t <= 15.0], elce.a[elce.t <= 15.0], "El Centro x0.5 (15 s)")
+    out = []
+    for signal, label in ((elce, "El Centro 50%"), (gauss, "Gaussian")):
+        for kd in (5e4, 5e7):
+            out.append((f"{label}, Kd={kd / 1e3:g} kN/m", signal, kd))
+    return out
+
+
+class Fmi2sim:
+    """Runs build/fmi2sim on an input CSV; CPU time from the child's rusage."""
+
+    def __init__(self, workdir, fmu_dir):
+        self.workdir = pathlib.Path(workdir)
+        self.fmu_dir = fmu_dir
+
+    def run(self, signal, params, solver="bdf", rtol=1e-6, t_end=None):
+        inp = self.workdir / "input.csv"
+        if not inp.exists() or getattr(self, "_signal", None) is not signal:
+            np.savetxt(inp, np.column_stack([signal.t, signal.a]), delimiter=",", header="time,ag", comments="")
+            self._signal = signal
+        out = self.workdir / "out.csv"
+        cmd = [str(FMI2SIM), str(self.fmu_dir), "--input", str(inp), "--output", str(out),
+               "--solver", solver, "--rtol", f"{rtol:g}", "--stop-time", f"{t_end or signal.t[-1]:g}",
+               "--output-interval", f"{DT_OUT:g}"]
+        for name, value in rw_fmu.start_values(**params).items():
+            cmd += ["--set", f"{name}={value:g}" if isinstance(value, float) else f"{name}={value}"]
+        before = resource.getrusage(resource.RUSAGE_CHILDREN)
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+        after = resource.getrusage(resource.RUSAGE_CHILDREN)
+        if proc.returncode != 0:
+            raise RuntimeError(f"fmi2sim failed: {proc.stderr.strip()}")
+        cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+        data = np.genfromtxt(out, delimiter=",", names=True)
+        return data["time"], data["s1"], data["s2"], cpu
+
+
+def fmpy_run(fmu_dir, signal, params, solver, rtol=None, step=None):
+    start = time.process_time()
+    run = rw_fmu.simulate(fmu_dir, float(signal.t[-1]), signal.t, signal.a, rtol=rtol or 1e-6,
+                          output_interval=DT_OUT if step is None else max(step, DT_OUT),
+                          solver=solver, step_size=step, **params)
+    return run.t, run.s1, run.s2, time.process_time() - start
+
+
+def reference_run(signal, params, method, rtol):
+    start = time.process_time()
+    grid = np.arange(0.0, signal.t[-1] + DT_OUT / 2, DT_OUT)
+    res = simulate(Params(**params), signal, float(signal.t[-1]), method=method, rtol=rtol,
+                   atol=rtol * 1e-3, t_out=grid)
+    return res.t, res.s1, res.s2, time.process_time() - start
+
+
+def error(run, ref, grid):
+    """max(rel. error of peak s1, of peak s2, RMS(s1 - s1_ref)/peak s1) on the output grid."""
+    t, s1, s2 = run[:3]
+    t_u, idx = np.unique(t, return_index=True)
+    rt_u, ridx = np.unique(ref[0], return_index=True)
+    a = np.interp(grid, t_u, s1[idx])
+    r = np.interp(grid, rt_u, ref[1][ridx])
+    p1, p2 = np.max(np.abs(ref[1])), np.max(np.abs(ref[2]))
+    e_peak1 = abs(np.max(np.abs(s1)) - p1) / p1
+    e_peak2 = abs(np.max(np.abs(s2)) - p2) / p2
+    e_rms = np.sqrt(np.mean((a - r) ** 2)) / p1
+    return max(e_peak1, e_peak2, e_rms)
+
+
+def cost_at(points, target):
+    """CPU time a contender needs to reach error <= target: the cheapest run that does."""
+    ok = [cpu for err, cpu in points if err <= target]
+    return min(ok) if ok else None
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--quick", action="store_true", help="fewer tolerances, 15 s of El Centro")
+    parser.add_argument("--out", default=str(REPO / "results"))
+    args = parser.parse_args()
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+
+    fmu_dir = extract(str(FMU))
+    work = tempfile.mkdtemp(prefix="rw_bench_")
+    sim = Fmi2sim(work, fmu_dir)
+    rtols_sim = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10] if not args.quick else [1e-4, 1e-6, 1e-8]
+    rtols_py = [1e-4, 1e-6, 1e-8] if not args.quick else [1e-4, 1e-6]
+    contenders = []
+    for solver in ("bdf", "adams"):
+        for rtol in rtols_sim:
+            contenders.append((f"fmi2sim {solver.upper()}", rtol,
+                               lambda s, p, solver=solver, rtol=rtol: sim.run(s, p, solver, rtol)))
+    for rtol in rtols_py:
+        contenders.append(("fmpy CVode", rtol, lambda s, p, rtol=rtol: fmpy_run(fmu_dir, s, p, "CVode", rtol=rtol)))
+    for step in ([1e-3, 1e-4] if not args.quick else [1e-3]):
+        contenders.append(("fmpy Euler", step, lambda s, p, step=step: fmpy_run(fmu_dir, s, p, "Euler", step=step)))
+    for method in ("RK45", "DOP853", "Radau"):
+        for rtol in rtols_py:
+            contenders.append((f"reference {method}", rtol,
+                               lambda s, p, method=method, rtol=rtol: reference_run(s, p, method, rtol)))
+
+    rows = []
+    cases = scenes(args.quick)
+    with tqdm(total=len(cases) * (len(contenders) + 1), desc="bench") as bar:
+        for label, signal, kd in cases:
+            params = dict(WALL_1, model="flexibleTop", hinge_law="semiRigidHinge", Kd=kd)
+            grid = np.arange(0.0, signal.t[-1] + DT_OUT / 2, DT_OUT)
+            converged = sim.run(signal, params, "bdf", 1e-12)
+            bar.update()
+            for name, setting, fn in contenders:
+                if name.startswith("reference") and kd > 1e6 and name != "reference Radau" and setting < 1e-6:
+                    bar.update()
+                    continue  # explicit methods on the stiff spring at tight rtol take minutes: skipped, said below
+                try:
+                    run = fn(signal, params)
+                    rows.append((label, name, setting, error(run, converged, grid), run[3]))
+                except Exception as exc:  # a failing contender is a result too
+                    rows.append((label, name, setting, float("nan"), float("nan")))
+                    tqdm.write(f"{label}: {name} {setting:g} failed: {exc}")
+                bar.update()
+
+    with open(out / "bench_work_precision.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "contender", "setting", "error", "cpu_s"])
+        w.writerows(rows)
+
+    # The diagram: one panel per scene.
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    for ax, (label, _, _) in zip(axes.flat, cases):
+        for name in dict.fromkeys(r[1] for r in rows):
+            pts = sorted((r[4], r[3]) for r in rows if r[0] == label and r[1] == name and np.isfinite(r[3]))
+            if pts:
+                ax.loglog([p[0] for p in pts], [max(p[1], 1e-12) for p in pts], "o-", ms=3, label=name)
+        ax.set_title(label, fontsize=9)
+        ax.set_xlabel("CPU time [s]")
+        ax.set_ylabel("error")
+        ax.grid(alpha=0.3, which="both")
+    axes.flat[0].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(out / "work_precision.png", dpi=110)
+
+    # Speed ratios at equal accuracy, from this one run.
+    targets = [1e-2, 1e-3, 1e-4]
+    print("\nCPU seconds to reach an error target (cheapest run that does), and ratios to fmi2sim BDF")
+    print(f"{'scene':<34}{'target':>8}{'fmi2sim':>10}{'fmpy':>10}{'reference':>11}{'ref/sim':>9}{'fmpy/sim':>9}")
+    for label, _, _ in cases:
+        for target in targets:
+            def best(prefix):
+                pts = [(r[3], r[4]) for r in rows if r[0] == label and r[1].startswith(prefix)]
+                return cost_at(pts, target)
+            c_sim, c_fmpy, c_ref = best("fmi2sim"), best("fmpy"), best("reference")
+            fmt = lambda c: f"{c:.3f}" if c is not None else "-"
+            ratio = lambda c: f"{c / c_sim:.0f}x" if (c is not None and c_sim) else "-"
+            print(f"{label:<34}{target:>8g}{fmt(c_sim):>10}{fmt(c_fmpy):>10}{fmt(c_ref):>11}"
+                  f"{ratio(c_ref):>9}{ratio(c_fmpy):>9}")
+    print(f"\nwrote {out / 'bench_work_precision.csv'} and {out / 'work_precision.png'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,439 @@
+/* Unit tests of the RockingWall physics module (fmu_src/rw_physics.c, rw_modes.c).
+ * Usage: test_physics derive_equations.json  (written by scripts/derive_equations.py --json) */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "model_variables.h"
+#include "rw_physics.h"
+
+static int failures = 0, checks = 0;
+
+#define CHECK(cond, ...)                                                  \
+    do {                                                                  \
+        checks++;                                                         \
+        if (!(cond)) {                                                    \
+            failures++;                                                   \
+            printf("FAIL %s:%d: ", __FILE__, __LINE__);                   \
+            printf(__VA_ARGS__);                                          \
+            printf("\n");                                                 \
+        }                                                                 \
+    } while (0)
+
+static void check_close(const char *what, double got, double want, double rtol)
+{
+    const double tol = rtol * fmax(1.0, fabs(want));
+    CHECK(fabs(got - want) <= tol, "%s = %.12g, expected %.12g", what, got, want);
+}
+
+/* ---- tiny JSON number extractor: follows a path of keys, then reads the n next numbers ------ */
+static char *read_file(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    long n;
+    char *buf;
+    if (!f) return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = (char *)malloc((size_t)n + 1);
+    if (buf && fread(buf, 1, (size_t)n, f) != (size_t)n) { free(buf); buf = NULL; }
+    if (buf) buf[n] = '\0';
+    fclose(f);
+    return buf;
+}
+
+/* keys: NULL-terminated path, e.g. {"conditions", "1", "A", NULL}; returns count read */
+static int json_numbers(const char *text, const char *const *keys, double *out, int n)
+{
+    const char *p = text;
+    int k = 0;
+    char pat[64];
+    for (; *keys; keys++) {
+        snprintf(pat, sizeof pat, "\"%s\"", *keys);
+        p = strstr(p, pat);
+        if (!p) return 0;
+        p += strlen(pat);
+    }
+    while (k < n && *p) {
+        if (strchr("-+0123456789.", *p)) {
+            char *end;
+            out[k++] = strtod(p, &end);
+            p = end;
+        } else if (*p == '"' || *p == '}') {
+            break; /* next key or end of object */
+        } else {
+            p++;
+        }
+    }
+    return k;
+}
+
+static rw_params paper_params(void)
+{
+    rw_params p;
+    rw_params_default(&p);
+    p.h = 2.5; p.b = 0.15; p.W = 6622.0; p.psi = 0.5; p.Kd = 1e5; p.g = 9.81;
+    return p;
+}
+
+/* ---- tests ---------------------------------------------------------------------------------- */
+
+static void test_defaults_match_table(void)
+{
+    rw_params p;
+    char msg[256];
+    rw_params_default(&p);
+#define CHECK_START(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
+    if (!strcmp(CAUS, "parameter")) {                                                   \
+        double v = !strcmp(NAME, "model") ? p.model : !strcmp(NAME, "hingeLaw") ? p.hingeLaw : 0; \
+        if (!strcmp(NAME, "h")) v = p.h;                                                \
+        if (!strcmp(NAME, "b")) v = p.b;                                                \
+        if (!strcmp(NAME, "W")) v = p.W;                                                \
+        if (!strcmp(NAME, "psi")) v = p.psi;                                            \
+        if (!strcmp(NAME, "Kd")) v = p.Kd;                                              \
+        if (!strcmp(NAME, "er")) v = p.er;                                              \
+        if (!strcmp(NAME, "g")) v = p.g;                                                \
+        if (!strcmp(NAME, "delta1Ratio")) v = p.delta1Ratio;                            \
+        if (!strcmp(NAME, "delta2A")) v = p.delta2A;                                    \
+        if (!strcmp(NAME, "delta2B")) v = p.delta2B;                                    \
+        if (!strcmp(NAME, "hingeSat")) v = p.hingeSat;                                  \
+        if (!strcmp(NAME, "restRate")) v = p.restRate;                                  \
+        CHECK(v == (double)(START), "default of %s = %g, table start %g", NAME, v, (double)(START)); \
+    }
+    RW_VARIABLES(CHECK_START)
+#undef CHECK_START
+    CHECK(rw_params_validate(&p, msg, sizeof msg) == 0, "defaults invalid: %s", msg);
+}
+
+static void test_validation(void)
+{
+    rw_params p;
+    char msg[256];
+    CHECK(rw_check_real_param("h", -1.0, msg, sizeof msg) && strstr(msg, "h = -1"), "h=-1 accepted: %s", msg);
+    CHECK(rw_check_real_param("W", NAN, msg, sizeof msg), "W=NaN accepted");
+    CHECK(rw_check_real_param("er", 1.5, msg, sizeof msg), "er=1.5 accepted");
+    CHECK(rw_check_real_param("psi", -0.1, msg, sizeof msg), "psi<0 accepted");
+    CHECK(rw_check_real_param("Kd", 0.0, msg, sizeof msg) == 0, "Kd=0 rejected");
+    CHECK(rw_check_int_param("model", 4, msg, sizeof msg), "model=4 accepted");
+    CHECK(rw_check_int_param("hingeLaw", 0, msg, sizeof msg), "hingeLaw=0 accepted");
+    rw_params_default(&p);
+    p.b = 3.0;
+    CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "b = 3"), "b >= h accepted: %s", msg);
+    rw_params_default(&p);
+    p.delta2B = 2.0;
+    CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "delta"), "Delta_2 > Delta_u accepted");
+}
+
+static void test_against_sympy(const char *json_path)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    char *json = json_path ? read_file(json_path) : NULL;
+    double v[4];
+    int i, j;
+    static const int sides[5][2] = {{0, 0}, {1, -1}, {-1, 1}, {1, 1}, {-1, -1}}; /* condition: side_b, side_m */
+    rw_derive(&p, &d);
+    if (!json) {
+        printf("FAIL: cannot read %s (run scripts/derive_equations.py --json)\n", json_path ? json_path : "(none)");
+        failures++;
+        return;
+    }
+    {
+        const char *k[] = {"params", "psi", NULL};
+        CHECK(json_numbers(json, k, v, 1) == 1 && v[0] == p.psi, "JSON params differ from the test's");
+    }
+    {
+        const char *k[] = {"M", NULL};
+        CHECK(json_numbers(json, k, v, 4) == 4, "M not found");
+        for (i = 0; i < 2; i++)
+            for (j = 0; j < 2; j++) check_close("M", d.M[i][j], v[2 * i + j], 1e-12);
+    }
+    {
+        const char *k[] = {"K", NULL};
+        CHECK(json_numbers(json, k, v, 4) == 4, "K not found");
+        for (i = 0; i < 2; i++)
+            for (j = 0; j < 2; j++) check_close("K", d.K[i][j], v[2 * i + j], 1e-12);
+    }
+    {
+        const char *k[] = {"p_per_ag", NULL};
+        CHECK(json_numbers(json, k, v, 2) == 2, "p_per_ag not found");
+        check_close("p1/ag", d.pa[0], v[0], 1e-12);
+        check_close("p2/ag", d.pa[1], v[1], 1e-12);
+    }
+    {
+        const char *k1[] = {"cap_b", NULL}, *k2[] = {"cap_m", NULL};
+        CHECK(json_numbers(json, k1, v, 1) == 1, "cap_b not found");
+        check_close("cap_b", d.cap_b, v[0], 1e-12);
+        CHECK(json_numbers(json, k2, v, 1) == 1, "cap_m not found");
+        check_close("cap_m", d.cap_m, v[0], 1e-12);
+    }
+    /* A_c, B_c: the rigid hinge terms Q with the sides of condition c */
+    p.hingeLaw = RW_RIGID;
+    for (i = 1; i <= 4; i++) {
+        char cond[2] = {(char)('0' + i), 0};
+        const char *ka[] = {"conditions", cond, "A", NULL}, *kb[] = {"conditions", cond, "B", NULL};
+        rw_mode m = {0, 0, sides[i][0], sides[i][1], 0, 0};
+        double q[2] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1]}, Q[2], a, b;
+        rw_hinge_Q(&p, &d, &m, q, Q);
+        CHECK(json_numbers(json, ka, &a, 1) == 1 && json_numbers(json, kb, &b, 1) == 1, "condition %d missing", i);
+        check_close("A_c", Q[0], a, 1e-12);
+        check_close("B_c", Q[1], b, 1e-12);
+        CHECK(rw_condition(&p, &m) == i, "condition from sides = %d, expected %d", rw_condition(&p, &m), i);
+    }
+    free(json);
+}
+
+static void test_table_5_1(void)
+{
+    /* Delta_u [m], R_el [kN/m], F0/W for psi = 0, 0.5, 1 */
+    static const double want[3][4] = {{0.0, 0.150, 1.192, 0.180}, {0.5, 0.138, 1.639, 0.248}, {1.0, 0.131, 2.086, 0.315}};
+    int i;
+    for (i = 0; i < 3; i++) {
+        rw_params p = paper_params();
+        rw_derived d;
+        p.psi = want[i][0];
+        rw_derive(&p, &d);
+        CHECK(fabs(d.Du - want[i][1]) < 0.0006, "Delta_u(psi=%g) = %g", p.psi, d.Du);
+        CHECK(fabs(d.Rel / 1000.0 - want[i][2]) < 0.0006, "R_el(psi=%g) = %g", p.psi, d.Rel);
+        CHECK(fabs(d.Rel / p.W - want[i][3]) < 0.0006, "F0/W(psi=%g) = %g", p.psi, d.Rel / p.W);
+    }
+}
+
+static void test_trilinear(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m = {0, 0, 1, 1, 0, 0};
+    p.model = RW_SIMPLY_SUPPORTED;
+    rw_derive(&p, &d);
+    check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, d.D1 / 2), -d.Fi / 2, 1e-12);
+    check_close("F(D1)", rw_force_1dof(&p, &d, &m, d.D1), -d.Fi, 1e-12);
+    check_close("F((D1+D2)/2)", rw_force_1dof(&p, &d, &m, (d.D1 + d.D2) / 2), -d.Fi, 1e-12);
+    check_close("F(D2)", rw_force_1dof(&p, &d, &m, d.D2), -d.Fi, 1e-12);
+    check_close("F(D2+)", rw_force_1dof(&p, &d, &m, d.D2 * (1 + 1e-12)), -d.Fi, 1e-9);
+    check_close("F(Du)", rw_force_1dof(&p, &d, &m, d.Du), 0.0, 1e-9);
+    check_close("F(-0.1)", rw_force_1dof(&p, &d, &m, -0.1), -rw_force_1dof(&p, &d, &m, 0.1), 1e-12);
+    check_close("F_i", d.Fi, d.Fr * (1 - d.D2 / d.Du), 1e-12);
+    check_close("Delta_1", d.D1, 0.05 * d.Du, 1e-12);
+    check_close("Delta_2", d.D2, 0.92 * d.D1 + 0.21 * d.Du, 1e-12);
+}
+
+static void init(const rw_params *p, rw_derived *d, rw_mode *m, const rw_input *in, double x[RW_NX])
+{
+    rw_derive(p, d);
+    rw_init_modes(p, d, in, x, m, NULL, NULL);
+}
+
+static void test_impact_map(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0, 0};
+    rw_event_result r;
+    double x[RW_NX] = {0.01, 0.0, -0.2, 0.1};
+    init(&p, &d, &m, &in, x);
+    CHECK(m.side_b == 1 && m.side_m == -1 && !m.closed_b, "initial sides %d %d", m.side_b, m.side_m);
+    /* q1 crossed zero (late root): impact, rates times er */
+    x[0] = -1e-9;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.impacts == 1 && m.side_b == -1, "late root: impacts %d side %d", r.impacts, m.side_b);
+    check_close("dq1 after impact", x[2], -0.2 * p.er, 1e-14);
+    check_close("dq2 after impact", x[3], 0.1 * p.er, 1e-14);
+    CHECK(r.states_changed, "states_changed not set");
+    /* repeated call: nothing */
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.impacts == 0 && !r.states_changed && !r.modes_changed, "second call changed something");
+    /* early root: still 1e-13 on the old side but moving toward the other one */
+    x[0] = -1e-13;
+    x[2] = 0.3;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.impacts == 1 && m.side_b == 1, "early root: impacts %d side %d", r.impacts, m.side_b);
+    /* at zero but moving away from it (e.g. just opened): no impact */
+    x[0] = 1e-13;
+    x[2] = 0.3;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.impacts == 0, "impact while moving away from zero");
+    /* mid-hinge switch: no energy loss */
+    x[0] = 0.01; x[1] = 0.01 + 1e-9; x[2] = 0.1; x[3] = 0.2;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(m.side_m == 1 && r.impacts == 0 && !r.states_changed, "mid switch: side %d", m.side_m);
+}
+
+static void test_indicators(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0.5, 0.0};
+    double x[RW_NX] = {0.001, 0.0005, -0.1, 0.0}, z1[RW_NZ], z2[RW_NZ], y[RW_NX];
+    int law, i;
+    for (law = 1; law <= 3; law++) {
+        p.hingeLaw = law;
+        memcpy(y, x, sizeof y);
+        init(&p, &d, &m, &in, y);
+        /* continuity and sign change across q1 = 0 with the modes frozen */
+        y[0] = 1e-7;
+        rw_event_indicators(&p, &d, &m, &in, y, z1);
+        y[0] = -1e-7;
+        rw_event_indicators(&p, &d, &m, &in, y, z2);
+        CHECK(z1[RW_Z_BASE] > 0 && z2[RW_Z_BASE] < 0, "law %d: base indicator %g %g", law, z1[0], z2[0]);
+        for (i = 0; i < RW_NZ; i++)
+            CHECK(fabs(z1[i] - z2[i]) < 1e-3 * fmax(1.0, fabs(z1[i])) || i == RW_Z_COLLAPSE,
+                  "law %d: indicator %d jumps %g -> %g", law, i, z1[i], z2[i]);
+        /* breakpoint indicator of the semi-rigid laws */
+        if (law != RW_RIGID) {
+            y[0] = d.theta_y * 0.999;
+            rw_event_indicators(&p, &d, &m, &in, y, z1);
+            y[0] = d.theta_y * 1.001;
+            rw_event_indicators(&p, &d, &m, &in, y, z2);
+            CHECK(z1[RW_Z_BREAK1] < 0 && z2[RW_Z_BREAK1] > 0, "law %d: breakpoint indicator", law);
+        }
+    }
+}
+
+static void test_rigid_open_close(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0.1, 0.0};
+    rw_event_result r;
+    double x[RW_NX] = {0, 0, 0, 0}, z[RW_NZ];
+    p.hingeLaw = RW_RIGID;
+    init(&p, &d, &m, &in, x);
+    CHECK(m.closed_b && m.closed_m, "rest not closed: %d %d", m.closed_b, m.closed_m);
+    rw_event_indicators(&p, &d, &m, &in, x, z);
+    CHECK(z[RW_Z_BASE] > 0 && z[RW_Z_MID] > 0, "rest indicators %g %g", z[0], z[1]);
+    /* strong ground acceleration toward +x: wall rocks toward -x */
+    in.ag = 5.0;
+    rw_event_indicators(&p, &d, &m, &in, x, z);
+    CHECK(z[RW_Z_BASE] < 0 || z[RW_Z_MID] < 0, "overload not signalled %g %g", z[0], z[1]);
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.modes_changed && (!m.closed_b || !m.closed_m), "nothing opened");
+    CHECK(m.closed_b || m.side_b == -1, "base opened on side %d", m.side_b);
+    {
+        double dx[RW_NX];
+        rw_derivatives(&p, &d, &m, &in, x, dx);
+        CHECK(dx[2] <= 0 && dx[3] <= 0 && (dx[2] < 0 || dx[3] < 0), "opened wall accelerates toward -x: %g %g", dx[2], dx[3]);
+    }
+    /* closing: base impact with a rate below restRate */
+    init(&p, &d, &m, &in, x);
+    in.ag = 0.0;
+    x[0] = 1e-3; x[1] = 1e-3; x[2] = 0.1; x[3] = 0.1;
+    init(&p, &d, &m, &in, x);
+    CHECK(!m.closed_b && m.closed_m && m.side_b == 1, "mid not closed for q1 = q2");
+    x[0] = -1e-13; x[1] = -1e-13; x[2] = -1e-6; x[3] = -1e-6;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(m.closed_b && m.closed_m && x[0] == 0 && x[1] == 0 && x[2] == 0 && x[3] == 0, "did not come to rest");
+    /* parapet uplift threshold |ag| > g tan(alpha) */
+    p.model = RW_PARAPET;
+    rw_derive(&p, &d);
+    memset(x, 0, sizeof x);
+    in.ag = 0.99 * p.g * tan(d.alpha);
+    init(&p, &d, &m, &in, x);
+    CHECK(m.closed_b, "parapet opened below the threshold");
+    in.ag = -1.01 * p.g * tan(d.alpha);
+    init(&p, &d, &m, &in, x);
+    CHECK(!m.closed_b && m.side_b == 1, "parapet: closed %d side %d above the threshold", m.closed_b, m.side_b);
+    /* simply supported rigid: uplift at |ag| > (4b/h)(1 + 0.75 psi) g */
+    p.model = RW_SIMPLY_SUPPORTED;
+    {
+        const double thr = 4 * p.b / p.h * (1 + 0.75 * p.psi) * p.g;
+        in.ag = 0.999 * thr;
+        init(&p, &d, &m, &in, x);
+        CHECK(m.closed_b, "1DOF opened below the threshold");
+        in.ag = 1.001 * thr;
+        init(&p, &d, &m, &in, x);
+        CHECK(!m.closed_b && m.side_b == -1, "1DOF: closed %d side %d above the threshold", m.closed_b, m.side_b);
+    }
+}
+
+static void test_collapse(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0, 0};
+    double x[RW_NX];
+    int law;
+    p.psi = 0.0;
+    for (law = 1; law <= 3; law++) {
+        /* 2DOF along the simply supported shape q2 = -q1: G(q) = 0 at D = Delta_u (outside elastic range) */
+        double th;
+        p.hingeLaw = law;
+        rw_derive(&p, &d);
+        th = 2 * d.Du / p.h;
+        x[0] = 0.999 * th; x[1] = -x[0]; x[2] = x[3] = 0;
+        init(&p, &d, &m, &in, x);
+        if (law != RW_SEMI_RIGID_PAPER) /* the paper law's Q is not a potential: its root differs */
+            CHECK(!rw_is_collapsed(&p, &d, &m, &in, x), "law %d collapsed before Delta_u", law);
+        x[0] = 1.001 * th; x[1] = -x[0];
+        init(&p, &d, &m, &in, x);
+        if (law != RW_SEMI_RIGID_PAPER)
+            CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "law %d not collapsed past Delta_u", law);
+    }
+    p.model = RW_SIMPLY_SUPPORTED;
+    rw_derive(&p, &d);
+    x[0] = 2 * d.Du / p.h * 1.0001;
+    CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "1DOF not collapsed past Delta_u");
+    p.model = RW_PARAPET;
+    rw_derive(&p, &d);
+    x[0] = d.alpha * 0.999;
+    CHECK(!rw_is_collapsed(&p, &d, &m, &in, x), "parapet collapsed before alpha");
+    x[0] = -d.alpha * 1.001;
+    CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "parapet not collapsed past alpha");
+}
+
+/* free rocking with er = 1: RK4 between impacts keeps the energy */
+static void test_energy(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0, 0};
+    rw_event_result r;
+    double x[RW_NX] = {0.03, -0.01, 0, 0}, E0, E;
+    int law, k, i;
+    p.er = 1.0;
+    for (law = 1; law <= 3; law += 2) {
+        double t = 0, hstep = 2e-5;
+        p.hingeLaw = law;
+        x[0] = 0.03; x[1] = -0.01; x[2] = x[3] = 0;
+        init(&p, &d, &m, &in, x);
+        E0 = rw_energy(&p, &d, &m, &in, x);
+        for (k = 0; k < 50000; k++) {
+            double k1[4], k2[4], k3[4], k4[4], y[4];
+            rw_derivatives(&p, &d, &m, &in, x, k1);
+            for (i = 0; i < 4; i++) y[i] = x[i] + 0.5 * hstep * k1[i];
+            rw_derivatives(&p, &d, &m, &in, y, k2);
+            for (i = 0; i < 4; i++) y[i] = x[i] + 0.5 * hstep * k2[i];
+            rw_derivatives(&p, &d, &m, &in, y, k3);
+            for (i = 0; i < 4; i++) y[i] = x[i] + hstep * k3[i];
+            rw_derivatives(&p, &d, &m, &in, y, k4);
+            for (i = 0; i < 4; i++) x[i] += hstep / 6 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+            t += hstep;
+            rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+        }
+        E = rw_energy(&p, &d, &m, &in, x);
+        CHECK(fabs(E - E0) < 2e-3 * fabs(E0), "law %d: energy %g -> %g after %g s", law, E0, E, t);
+    }
+}
+
+int main(int argc, char **argv)
+{
+    test_defaults_match_table();
+    test_validation();
+    test_against_sympy(argc > 1 ? argv[1] : NULL);
+    test_table_5_1();
+    test_trilinear();
+    test_impact_map();
+    test_indicators();
+    test_rigid_open_close();
+    test_collapse();
+    test_energy();
+    printf("%d checks, %d failures\n", checks, failures);
+    return failures ? 1 : 0;
+}
