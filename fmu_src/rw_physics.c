@@ -298,8 +298,8 @@ double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, 
 {
     const double q1 = x[0], q2 = x[1];
     const double Kq1 = d->K[0][0] * q1 + d->K[0][1] * q2, Kq2 = d->K[1][0] * q1 + d->K[1][1] * q2;
-    const double fu = d->fu * in->u_top;
     double qQ;
+    (void)in; /* the spring counts as if the diaphragm held still (docs/model.md "Collapse") */
     if (p->hingeLaw == RW_RIGID) { /* q.Q = -cap_b|q1| - cap_m|x| for mu = sign (continuous form) */
         qQ = -d->cap_b * fabs(q1) - d->cap_m * fabs(q2 - q1);
     } else {
@@ -307,7 +307,7 @@ double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, 
         rw_hinge_Q(p, d, m, x, Q);
         qQ = q1 * Q[0] + q2 * Q[1];
     }
-    return q1 * Kq1 + q2 * Kq2 - fu * (q1 + q2) - qQ;
+    return q1 * Kq1 + q2 * Kq2 - qQ;
 }
 
 static int outside_elastic_range(const rw_params *p, const rw_derived *d, const double x[RW_NX])

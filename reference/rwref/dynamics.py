@@ -337,18 +337,18 @@ class FlexibleTop(_Base):
         return F2 - (self.k12 + self.k22) * th - (self.m12 + self.m22) * a
 
     def G_t(self, t, y, st):
-        """Collapse indicator G(q) = q . (K q - f_u - Q(q)) (docs/model.md "Collapse").
+        """Collapse indicator G(q) = q . (K q - Q(q)) (docs/model.md "Collapse"); the spring counts as
+        if the diaphragm held still, so a pushed-but-stable wall (u_top != 0) is not flagged.
 
         Q(q) is the hinge law as a function of q: for the rigid (and paper) law the signs of q1 and
         x = q2 - q1 themselves (mu = sign), not the tracked sides, so -q.Q = cap_b|q1| + cap_m|x| >= 0."""
         q1, q2 = y[0], y[1]
-        fu = self.fu * self.u(t)
         if self.law == "semiRigidHinge":
             Q1, Q2 = self.Q(q1, q2, st)
         else:
             Q1, Q2 = self.Q(q1, q2, Mode(side_b=_sign(q1), side_m=_sign(q2 - q1)))
-        return (q1 * (self.k11 * q1 + self.k12 * q2 - fu - Q1)
-                + q2 * (self.k12 * q1 + self.k22 * q2 - fu - Q2))
+        return (q1 * (self.k11 * q1 + self.k12 * q2 - Q1)
+                + q2 * (self.k12 * q1 + self.k22 * q2 - Q2))
 
     def elastic(self, y):
         q1, q2 = y[0], y[1]
