@@ -1,0 +1,248 @@
+/* Readers for input files (CSV and PEER NGA .AT2) and linear interpolation of the samples.
+ * Every problem is reported as "FILE:LINE: what is wrong" so a user can fix the file. */
+#define _POSIX_C_SOURCE 200809L
+#include "input_table.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char *trim(char *s)
+{
+    char *e;
+    while (*s == ' ' || *s == '\t') s++;
+    e = s + strlen(s);
+    while (e > s && (e[-1] == ' ' || e[-1] == '\t' || e[-1] == '\r' || e[-1] == '\n')) *--e = '\0';
+    return s;
+}
+
+/* A whole token as a finite double, or -1. */
+static int parse_number(const char *tok, double *out)
+{
+    char *end;
+    if (!*tok) return -1;
+    errno = 0;
+    *out = strtod(tok, &end);
+    if (end == tok || *end != '\0') return -1;
+    if (errno == ERANGE && fabs(*out) > 1.0) return -2;
+    if (!isfinite(*out)) return -2;
+    return 0;
+}
+
+static int grow(input_table *tab, size_t *cap)
+{
+    if (tab->n < *cap) return 0;
+    *cap = *cap ? 2 * *cap : 1024;
+    double *t = realloc(tab->t, *cap * sizeof *t);
+    if (!t) return -1;
+    tab->t = t;
+    for (size_t c = 0; c < tab->ncols; c++) {
+        double *v = realloc(tab->cols[c].values, *cap * sizeof *v);
+        if (!v) return -1;
+        tab->cols[c].values = v;
+    }
+    return 0;
+}
+
+static int check_time(const char *path, long line, const input_table *tab, double t, char *err, size_t n)
+{
+    if (tab->n > 0 && t == tab->t[tab->n - 1]) {
+        snprintf(err, n, "%s:%ld: time %g repeats the previous row's time", path, line, t);
+        return -1;
+    }
+    if (tab->n > 0 && t < tab->t[tab->n - 1]) {
+        snprintf(err, n, "%s:%ld: time %g is before the previous row's %g (times must increase)", path,
+                 line, t, tab->t[tab->n - 1]);
+        return -1;
+    }
+    return 0;
+}
+
+static int has_nul(const char *s, ssize_t len)
+{
+    return (ssize_t)strlen(s) != len;
+}
+
+int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    char *line = NULL;
+    size_t linecap = 0, cap = 0;
+    ssize_t len;
+    long lineno = 0;
+    int rc = -1;
+    memset(tab, 0, sizeof *tab);
+    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    /* header */
+    while ((len = getline(&line, &linecap, f)) >= 0) {
+        lineno++;
+        if (has_nul(line, len)) { snprintf(err, n, "%s:%ld: binary data, not a CSV text file", path, lineno); goto done; }
+        if (*trim(line)) break;
+    }
+    if (len < 0) { snprintf(err, n, "%s:%ld: empty file: expected a header 'time,NAME,...'", path, lineno); goto done; }
+    {
+        char *save = NULL, *tok = strtok_r(trim(line), ",", &save);
+        size_t count = 0;
+        for (; tok; tok = strtok_r(NULL, ",", &save), count++) {
+            if (count == 0) continue; /* the time column, whatever its name */
+            input_column *cols = realloc(tab->cols, (tab->ncols + 1) * sizeof *cols);
+            if (!cols) goto oom;
+            tab->cols = cols;
+            tab->cols[tab->ncols].name = strdup(trim(tok));
+            tab->cols[tab->ncols].values = NULL;
+            if (!*tab->cols[tab->ncols].name) {
+                tab->ncols++;
+                snprintf(err, n, "%s:%ld: header column %zu has no name", path, lineno, count + 1);
+                goto done;
+            }
+            tab->ncols++;
+        }
+        if (tab->ncols == 0) {
+            snprintf(err, n, "%s:%ld: header names no input column (expected 'time,NAME,...')", path, lineno);
+            goto done;
+        }
+    }
+    /* rows */
+    while ((len = getline(&line, &linecap, f)) >= 0) {
+        char *row, *save = NULL, *tok;
+        size_t col = 0;
+        double t = 0.0;
+        lineno++;
+        if (has_nul(line, len)) { snprintf(err, n, "%s:%ld: binary data, not a CSV text file", path, lineno); goto done; }
+        row = trim(line);
+        if (!*row) continue;
+        if (grow(tab, &cap) != 0) goto oom;
+        for (tok = strtok_r(row, ",", &save); tok; tok = strtok_r(NULL, ",", &save), col++) {
+            double v;
+            int bad;
+            if (col > tab->ncols) continue; /* counted, reported below */
+            bad = parse_number(trim(tok), &v);
+            if (bad) {
+                snprintf(err, n, "%s:%ld: column %zu: '%s' is %s", path, lineno, col + 1, trim(tok),
+                         bad == -2 ? "out of range (not a finite number)" : "not a number");
+                goto done;
+            }
+            if (col == 0) t = v;
+            else tab->cols[col - 1].values[tab->n] = v;
+        }
+        if (col != tab->ncols + 1) {
+            snprintf(err, n, "%s:%ld: %zu columns, the header has %zu", path, lineno, col, tab->ncols + 1);
+            goto done;
+        }
+        if (check_time(path, lineno, tab, t, err, n) != 0) goto done;
+        tab->t[tab->n++] = t;
+    }
+    if (tab->n == 0) { snprintf(err, n, "%s:%ld: no data rows after the header", path, lineno); goto done; }
+    rc = 0;
+    goto done;
+oom:
+    snprintf(err, n, "%s:%ld: out of memory", path, lineno);
+done:
+    free(line);
+    fclose(f);
+    if (rc != 0) input_free(tab);
+    return rc;
+}
+
+/* The 4th header line of an NGA file: "NPTS=  2688, DT=   .0100 SEC" (or "2688  .0100 NPTS, DT"). */
+static int parse_at2_header(char *line, long *npts, double *dt)
+{
+    char *p = strstr(line, "NPTS"), *q = strstr(line, "DT");
+    if (p && q && p < q && strchr(p, '=')) {
+        p = strchr(p, '=') + 1;
+        q = strchr(q, '=');
+        if (!q) return -1;
+        *npts = strtol(p, NULL, 10);
+        *dt = strtod(q + 1, NULL);
+    } else if (sscanf(line, "%ld %lf", npts, dt) != 2) {
+        return -1;
+    }
+    return (*npts > 0 && *dt > 0 && isfinite(*dt)) ? 0 : -1;
+}
+
+int input_read_at2(const char *path, const char *name, double g, double scale, input_table *tab,
+                   char *err, size_t n)
+{
+    FILE *f = fopen(path, "r");
+    char *line = NULL;
+    size_t linecap = 0;
+    ssize_t len;
+    long lineno = 0, npts = 0;
+    double dt = 0.0;
+    int rc = -1;
+    memset(tab, 0, sizeof *tab);
+    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    for (lineno = 1; lineno <= 4; lineno++) {
+        if ((len = getline(&line, &linecap, f)) < 0) {
+            snprintf(err, n, "%s:%ld: file ends inside the 4-line AT2 header", path, lineno);
+            goto done;
+        }
+        if (has_nul(line, len)) { snprintf(err, n, "%s:%ld: binary data, not an AT2 text file", path, lineno); goto done; }
+    }
+    lineno = 4;
+    if (parse_at2_header(line, &npts, &dt) != 0) {
+        snprintf(err, n, "%s:4: expected 'NPTS= N, DT= dt SEC' in the header, found '%s'", path, trim(line));
+        goto done;
+    }
+    if (npts > 100000000L) { snprintf(err, n, "%s:4: NPTS = %ld is too large", path, npts); goto done; }
+    tab->t = malloc((size_t)npts * sizeof *tab->t);
+    tab->cols = calloc(1, sizeof *tab->cols);
+    if (!tab->t || !tab->cols) { snprintf(err, n, "%s: out of memory", path); goto done; }
+    tab->ncols = 1;
+    tab->cols[0].name = strdup(name);
+    tab->cols[0].values = malloc((size_t)npts * sizeof(double));
+    if (!tab->cols[0].values || !tab->cols[0].name) { snprintf(err, n, "%s: out of memory", path); goto done; }
+    while ((len = getline(&line, &linecap, f)) >= 0) {
+        char *save = NULL, *tok;
+        lineno++;
+        if (has_nul(line, len)) { snprintf(err, n, "%s:%ld: binary data, not an AT2 text file", path, lineno); goto done; }
+        for (tok = strtok_r(line, " \t\r\n,", &save); tok; tok = strtok_r(NULL, " \t\r\n,", &save)) {
+            double v;
+            int bad = parse_number(tok, &v);
+            if (bad) {
+                snprintf(err, n, "%s:%ld: '%s' is %s", path, lineno, tok,
+                         bad == -2 ? "out of range (not a finite number)" : "not a number");
+                goto done;
+            }
+            if ((long)tab->n >= npts) {
+                snprintf(err, n, "%s:%ld: more values than NPTS = %ld", path, lineno, npts);
+                goto done;
+            }
+            tab->t[tab->n] = (double)tab->n * dt;
+            tab->cols[0].values[tab->n++] = v * g * scale;
+        }
+    }
+    if ((long)tab->n != npts) {
+        snprintf(err, n, "%s:%ld: %zu values, the header says NPTS = %ld", path, lineno, tab->n, npts);
+        goto done;
+    }
+    rc = 0;
+done:
+    free(line);
+    fclose(f);
+    if (rc != 0) input_free(tab);
+    return rc;
+}
+
+double input_value(const input_table *tab, size_t col, double t)
+{
+    const double *v = tab->cols[col].values;
+    size_t lo = 0, hi = tab->n - 1;
+    if (t <= tab->t[0]) return v[0];
+    if (t >= tab->t[hi]) return v[hi];
+    while (hi - lo > 1) { /* binary search: t[lo] <= t < t[hi] */
+        size_t mid = (lo + hi) / 2;
+        if (tab->t[mid] <= t) lo = mid; else hi = mid;
+    }
+    return v[lo] + (v[hi] - v[lo]) * (t - tab->t[lo]) / (tab->t[hi] - tab->t[lo]);
+}
+
+void input_free(input_table *tab)
+{
+    for (size_t c = 0; c < tab->ncols; c++) { free(tab->cols[c].name); free(tab->cols[c].values); }
+    free(tab->cols);
+    free(tab->t);
+    memset(tab, 0, sizeof *tab);
+}

@@ -1,0 +1,385 @@
+/* Model-Exchange simulation with CVODE (SUNDIALS 6): the FMI 2.0 call sequence, root-finding on
+ * the event indicators, the event iteration, time and step events, and CSV output.
+ *
+ * CVODE runs in CV_ONE_STEP mode so that fmi2CompletedIntegratorStep follows every accepted step
+ * and output rows on the regular grid are interpolated (CVodeGetDky) inside steps. After an event
+ * CVODE is re-initialised when the FMU says states or nominals changed, and after every state
+ * event: there CVODE has already stepped past the root with the pre-event right-hand side, so its
+ * history is stale even when no state jumped. */
+#include "simulate_me.h"
+
+#include <cvode/cvode.h>
+#include <math.h>
+#include <nvector/nvector_serial.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+#include <time.h>
+
+typedef struct {
+    const model_description *md;
+    const fmu_binary *fmu;
+    const sim_options *opt;
+    fmi2Component c;
+    size_t nx, nz;
+    unsigned int *in_vr;    /* one per input column: the FMU variable it drives */
+    const input_table **in_tab;
+    size_t *in_col, n_in;
+    const md_variable **out; /* outputs, XML order */
+    size_t n_out;
+    char *err;
+    size_t errn;
+    int failed;
+    char cvode_msg[512];
+} sim;
+
+static int fail(sim *s, const char *fmt, ...)
+{
+    va_list ap;
+    if (s->failed) return -1; /* keep the first, root-cause message */
+    va_start(ap, fmt);
+    vsnprintf(s->err, s->errn, fmt, ap);
+    va_end(ap);
+    s->failed = 1;
+    return -1;
+}
+
+#define FMI(s, call, name) \
+    do { if ((call) > fmi2Warning) return fail((s), "%s failed (see the FMU's log above)", (name)); } while (0)
+
+/* the same, inside run() once solver memory exists: clean up on the way out */
+#define FMI_DONE(s, call, name) \
+    do { if ((call) > fmi2Warning) { fail((s), "%s failed (see the FMU's log above)", (name)); goto done; } } while (0)
+
+static const char *status_name(fmi2Status st)
+{
+    static const char *n[] = {"OK", "Warning", "Discard", "Error", "Fatal", "Pending"};
+    return st <= fmi2Pending ? n[st] : "?";
+}
+
+static void fmu_logger(fmi2ComponentEnvironment env, fmi2String instance, fmi2Status status,
+                       fmi2String category, fmi2String message, ...)
+{
+    const int verbose = env ? *(const int *)env : 0;
+    va_list ap;
+    if (status < fmi2Warning && !verbose) return;
+    fprintf(stderr, "fmi2sim: [%s] %s %s: ", status_name(status), instance ? instance : "",
+            category ? category : "");
+    va_start(ap, message);
+    vfprintf(stderr, message, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+static void cvode_error_handler(int code, const char *module, const char *function, char *msg, void *user)
+{
+    sim *s = user;
+    (void)code; (void)module;
+    snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
+}
+
+/* Inputs at time t into the FMU. */
+static int apply_inputs(sim *s, double t)
+{
+    for (size_t i = 0; i < s->n_in; i++) {
+        double v = input_value(s->in_tab[i], s->in_col[i], t);
+        FMI(s, s->fmu->setReal(s->c, &s->in_vr[i], 1, &v), "fmi2SetReal (input)");
+    }
+    return 0;
+}
+
+static int set_point(sim *s, double t, const double *x)
+{
+    FMI(s, s->fmu->setTime(s->c, t), "fmi2SetTime");
+    if (apply_inputs(s, t) != 0) return -1;
+    if (s->nx) FMI(s, s->fmu->setContinuousStates(s->c, x, s->nx), "fmi2SetContinuousStates");
+    return 0;
+}
+
+static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
+{
+    sim *s = user;
+    if (set_point(s, t, N_VGetArrayPointer(y)) != 0) return -1;
+    if (s->fmu->getDerivatives(s->c, N_VGetArrayPointer(ydot), s->nx) > fmi2Warning)
+        return fail(s, "fmi2GetDerivatives failed at t = %.17g (see the FMU's log above)", t);
+    return 0;
+}
+
+static int roots(sunrealtype t, N_Vector y, sunrealtype *gout, void *user)
+{
+    sim *s = user;
+    if (set_point(s, t, N_VGetArrayPointer(y)) != 0) return -1;
+    if (s->fmu->getEventIndicators(s->c, gout, s->nz) > fmi2Warning)
+        return fail(s, "fmi2GetEventIndicators failed at t = %.17g (see the FMU's log above)", t);
+    return 0;
+}
+
+/* One CSV row: time and every output, read from the FMU as it stands. */
+static int write_row(sim *s, double t)
+{
+    FILE *f = s->opt->output;
+    fprintf(f, "%.15g", t);
+    for (size_t i = 0; i < s->n_out; i++) {
+        const md_variable *v = s->out[i];
+        fmi2Real r;
+        fmi2Integer k;
+        fmi2Boolean b;
+        fmi2String str;
+        switch (v->type) {
+        case MD_REAL:
+            FMI(s, s->fmu->getReal(s->c, &v->vr, 1, &r), "fmi2GetReal");
+            fprintf(f, ",%.12g", r);
+            break;
+        case MD_INTEGER:
+        case MD_ENUMERATION:
+            FMI(s, s->fmu->getInteger(s->c, &v->vr, 1, &k), "fmi2GetInteger");
+            fprintf(f, ",%d", k);
+            break;
+        case MD_BOOLEAN:
+            FMI(s, s->fmu->getBoolean(s->c, &v->vr, 1, &b), "fmi2GetBoolean");
+            fprintf(f, ",%d", b ? 1 : 0);
+            break;
+        case MD_STRING:
+            FMI(s, s->fmu->getString(s->c, &v->vr, 1, &str), "fmi2GetString");
+            fprintf(f, ",\"%s\"", str ? str : "");
+            break;
+        }
+    }
+    fputc('\n', f);
+    return 0;
+}
+
+/* Start values given with --set, converted to the variable's type (already checked in main). */
+static int apply_start_values(sim *s)
+{
+    for (size_t i = 0; i < s->opt->n_start_values; i++) {
+        const start_value *sv = &s->opt->start_values[i];
+        const md_variable *v = md_find(s->md, sv->name);
+        if (!v) return fail(s, "--set %s: no such variable", sv->name);
+        if (v->type == MD_REAL) {
+            double r = strtod(sv->value, NULL);
+            FMI(s, s->fmu->setReal(s->c, &v->vr, 1, &r), "fmi2SetReal (--set)");
+        } else if (v->type == MD_INTEGER || v->type == MD_ENUMERATION) {
+            int k = (int)strtol(sv->value, NULL, 10);
+            FMI(s, s->fmu->setInteger(s->c, &v->vr, 1, &k), "fmi2SetInteger (--set)");
+        } else if (v->type == MD_BOOLEAN) {
+            fmi2Boolean b = (strcmp(sv->value, "true") == 0 || strcmp(sv->value, "1") == 0);
+            FMI(s, s->fmu->setBoolean(s->c, &v->vr, 1, &b), "fmi2SetBoolean (--set)");
+        } else {
+            fmi2String str = sv->value;
+            FMI(s, s->fmu->setString(s->c, &v->vr, 1, &str), "fmi2SetString (--set)");
+        }
+    }
+    return 0;
+}
+
+/* The FMI 2.0 event iteration; the FMU is in event mode. */
+static int event_iteration(sim *s, fmi2EventInfo *info, int *values_changed, int *nominals_changed)
+{
+    int rounds = 0;
+    *values_changed = *nominals_changed = 0;
+    do {
+        memset(info, 0, sizeof *info);
+        FMI(s, s->fmu->newDiscreteStates(s->c, info), "fmi2NewDiscreteStates");
+        *values_changed |= info->valuesOfContinuousStatesChanged == fmi2True;
+        *nominals_changed |= info->nominalsOfContinuousStatesChanged == fmi2True;
+        if (info->terminateSimulation) break;
+        if (++rounds > 10000) return fail(s, "the event iteration did not converge (10000 rounds)");
+    } while (info->newDiscreteStatesNeeded);
+    return 0;
+}
+
+static void set_tolerances(sim *s, void *mem, N_Vector abstol)
+{
+    double *a = N_VGetArrayPointer(abstol);
+    if (s->opt->atol > 0) {
+        for (size_t i = 0; i < s->nx; i++) a[i] = s->opt->atol;
+    } else {
+        s->fmu->getNominalsOfContinuousStates(s->c, a, s->nx);
+        for (size_t i = 0; i < s->nx; i++) a[i] = s->opt->rtol * (a[i] > 0 ? a[i] : 1.0);
+    }
+    CVodeSVtolerances(mem, s->opt->rtol, abstol);
+}
+
+static int setup_io(sim *s)
+{
+    const model_description *md = s->md;
+    for (size_t i = 0; i < s->opt->n_inputs; i++) s->n_in += s->opt->inputs[i].ncols;
+    s->in_vr = calloc(s->n_in + 1, sizeof *s->in_vr);
+    s->in_tab = calloc(s->n_in + 1, sizeof *s->in_tab);
+    s->in_col = calloc(s->n_in + 1, sizeof *s->in_col);
+    s->out = calloc(md->n_vars + 1, sizeof *s->out);
+    if (!s->in_vr || !s->in_tab || !s->in_col || !s->out) return fail(s, "out of memory");
+    {
+        size_t k = 0;
+        for (size_t i = 0; i < s->opt->n_inputs; i++)
+            for (size_t c = 0; c < s->opt->inputs[i].ncols; c++, k++) {
+                const md_variable *v = md_find(md, s->opt->inputs[i].cols[c].name);
+                s->in_vr[k] = v->vr; /* existence and type checked in main */
+                s->in_tab[k] = &s->opt->inputs[i];
+                s->in_col[k] = c;
+            }
+    }
+    for (size_t i = 0; i < md->n_vars; i++)
+        if (strcmp(md->vars[i].causality, "output") == 0) s->out[s->n_out++] = &md->vars[i];
+    fprintf(s->opt->output, "time");
+    for (size_t i = 0; i < s->n_out; i++) fprintf(s->opt->output, ",%s", s->out[i]->name);
+    fputc('\n', s->opt->output);
+    return 0;
+}
+
+/* CVODE's counters restart at every CVodeReInit: add them up before each one and at the end. */
+static void add_counters(void *mem, sim_stats *st)
+{
+    long steps = 0, rhs_evals = 0, root_evals = 0;
+    CVodeGetNumSteps(mem, &steps);
+    CVodeGetNumRhsEvals(mem, &rhs_evals);
+    CVodeGetNumGEvals(mem, &root_evals);
+    st->steps += steps;
+    st->rhs_evals += rhs_evals;
+    st->root_evals += root_evals;
+}
+
+static int run(sim *s, sim_stats *st, SUNContext ctx)
+{
+    const sim_options *o = s->opt;
+    const double t0 = o->start_time, tend = o->stop_time, dt = o->output_interval;
+    const double eps = 1e-12 * fmax(1.0, fabs(tend));
+    fmi2CallbackFunctions cb = {fmu_logger, calloc, free, NULL, (fmi2ComponentEnvironment)&o->logging};
+    fmi2EventInfo info;
+    int values_changed, nominals_changed;
+    N_Vector y = NULL, abstol = NULL, ytmp = NULL;
+    SUNMatrix A = NULL;
+    SUNLinearSolver LS = NULL;
+    void *mem = NULL;
+    double t = t0, next_event = INFINITY;
+    long k_out = 1;
+    int rc = -1;
+
+    s->c = s->fmu->instantiate(s->md->model_identifier, fmi2ModelExchange, s->md->guid, o->resource_uri,
+                               &cb, fmi2False, o->logging ? fmi2True : fmi2False);
+    if (!s->c) return fail(s, "fmi2Instantiate returned NULL: the binary refused the FMU "
+                              "(wrong GUID %s? see its log above)", s->md->guid);
+    if (setup_io(s) != 0 || apply_start_values(s) != 0) return -1;
+    FMI(s, s->fmu->setupExperiment(s->c, fmi2False, 0.0, t0, fmi2True, tend), "fmi2SetupExperiment");
+    FMI(s, s->fmu->enterInitializationMode(s->c), "fmi2EnterInitializationMode");
+    if (apply_inputs(s, t0) != 0) return -1;
+    FMI(s, s->fmu->exitInitializationMode(s->c), "fmi2ExitInitializationMode");
+    if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) return -1;
+    if (info.terminateSimulation) { st->terminated_by_model = 1; write_row(s, t0); return 0; }
+    if (info.nextEventTimeDefined) next_event = info.nextEventTime;
+    FMI(s, s->fmu->enterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode");
+
+    y = N_VNew_Serial((sunindextype)(s->nx ? s->nx : 1), ctx);
+    ytmp = N_VClone(y);
+    abstol = N_VClone(y);
+    if (s->nx) {
+        FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
+        mem = CVodeCreate(o->adams ? CV_ADAMS : CV_BDF, ctx);
+        CVodeSetErrHandlerFn(mem, cvode_error_handler, s);
+        if (CVodeInit(mem, rhs, t0, y) != CV_SUCCESS) { fail(s, "CVodeInit: %s", s->cvode_msg); goto done; }
+        CVodeSetUserData(mem, s);
+        set_tolerances(s, mem, abstol);
+        A = SUNDenseMatrix((sunindextype)s->nx, (sunindextype)s->nx, ctx);
+        LS = SUNLinSol_Dense(y, A, ctx);
+        CVodeSetLinearSolver(mem, LS, A);
+        if (o->max_step > 0) CVodeSetMaxStep(mem, o->max_step);
+        if (s->nz) CVodeRootInit(mem, (int)s->nz, roots);
+        CVodeSetNoInactiveRootWarn(mem);
+    }
+    if (write_row(s, t0) != 0) goto done;
+
+    while (t < tend - eps) {
+        const double t_stop = fmin(tend, next_event);
+        double tret;
+        int state_event = 0, time_event, step_event = 0;
+        fmi2Boolean enter_event = fmi2False, terminate = fmi2False;
+        if (s->nx) {
+            int flag;
+            CVodeSetStopTime(mem, t_stop);
+            flag = CVode(mem, t_stop, y, &tret, CV_ONE_STEP);
+            if (s->failed) goto done;
+            if (flag < 0) { fail(s, "CVODE failed at t = %.10g: %s (%s)", tret, CVodeGetReturnFlagName(flag), s->cvode_msg); goto done; }
+            state_event = flag == CV_ROOT_RETURN;
+        } else {
+            tret = fmin(t_stop, t0 + (double)k_out * dt);
+        }
+        /* regular output rows strictly inside this step, from CVODE's interpolant */
+        for (double to = t0 + (double)k_out * dt; to < tret - eps && to <= tend + eps; to = t0 + (double)++k_out * dt) {
+            if (s->nx) CVodeGetDky(mem, to, 0, ytmp);
+            if (set_point(s, to, N_VGetArrayPointer(ytmp)) != 0 || write_row(s, to) != 0) goto done;
+        }
+        if (set_point(s, tret, N_VGetArrayPointer(y)) != 0) goto done;
+        if (s->md->needs_completed_integrator_step) {
+            FMI_DONE(s, s->fmu->completedIntegratorStep(s->c, fmi2True, &enter_event, &terminate), "fmi2CompletedIntegratorStep");
+            if (terminate) { st->terminated_by_model = 1; write_row(s, tret); t = tret; break; }
+            step_event = enter_event == fmi2True;
+        }
+        time_event = tret >= next_event - eps;
+        if (fabs(tret - (t0 + (double)k_out * dt)) <= eps) { /* a grid point: its row, before any event */
+            if (write_row(s, tret) != 0) goto done;
+            k_out++;
+        } else if (state_event || time_event || step_event) {
+            if (write_row(s, tret) != 0) goto done; /* the row before the event */
+        }
+        t = tret;
+        if (!(state_event || time_event || step_event)) continue;
+
+        st->events++;
+        st->state_events += state_event;
+        st->time_events += time_event;
+        st->step_events += step_event;
+        FMI_DONE(s, s->fmu->enterEventMode(s->c), "fmi2EnterEventMode");
+        if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) goto done;
+        if (info.terminateSimulation) { st->terminated_by_model = 1; write_row(s, t); break; }
+        next_event = info.nextEventTimeDefined ? info.nextEventTime : INFINITY;
+        FMI_DONE(s, s->fmu->enterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode");
+        if (s->nx) FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
+        if (write_row(s, t) != 0) goto done; /* the row after the event */
+        if (s->nx && (values_changed || nominals_changed || state_event)) {
+            if (nominals_changed) set_tolerances(s, mem, abstol);
+            add_counters(mem, st);
+            CVodeReInit(mem, t, y);
+            st->reinits++;
+        }
+    }
+    st->end_time = t;
+    rc = 0;
+done:
+    if (mem) {
+        add_counters(mem, st);
+        CVodeFree(&mem);
+    }
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (y) N_VDestroy(y);
+    if (ytmp) N_VDestroy(ytmp);
+    if (abstol) N_VDestroy(abstol);
+    return rc;
+}
+
+int simulate_me(const model_description *md, const fmu_binary *fmu, const sim_options *opt,
+                sim_stats *stats, char *err, size_t n)
+{
+    sim s;
+    SUNContext ctx;
+    clock_t c0 = clock();
+    int rc;
+    memset(&s, 0, sizeof s);
+    memset(stats, 0, sizeof *stats);
+    s.md = md; s.fmu = fmu; s.opt = opt; s.err = err; s.errn = n;
+    s.nx = (size_t)md->n_states;
+    s.nz = (size_t)md->n_event_indicators;
+    if (SUNContext_Create(NULL, &ctx) != 0) { snprintf(err, n, "SUNContext_Create failed"); return -1; }
+    rc = run(&s, stats, ctx);
+    if (s.c) {
+        if (rc == 0) fmu->terminate(s.c);
+        fmu->freeInstance(s.c);
+    }
+    free(s.in_vr); free(s.in_tab); free(s.in_col); free(s.out);
+    SUNContext_Free(&ctx);
+    stats->cpu_seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
+    return rc == 0 && !s.failed ? 0 : -1;
+}
