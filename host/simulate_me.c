@@ -1,6 +1,11 @@
 /* Model-Exchange simulation with CVODE (SUNDIALS 6): the FMI 2.0 call sequence, root-finding on
  * the event indicators, the event iteration, time and step events, and CSV output.
  *
+ * Inputs are linear between their samples, so every sample time is a kink: CVODE is stopped there
+ * (CVodeSetStopTime) instead of stepping across it. Besides accuracy this matters for models at
+ * rest, whose right-hand side is zero: CVODE's step would otherwise grow past an input that
+ * rises above a threshold and falls back within one step, and the root would be missed.
+ *
  * CVODE runs in CV_ONE_STEP mode so that fmi2CompletedIntegratorStep follows every accepted step
  * and output rows on the regular grid are interpolated (CVodeGetDky) inside steps. After an event
  * CVODE is re-initialised when the FMU says states or nominals changed, and after every state
@@ -78,6 +83,22 @@ static void cvode_error_handler(int code, const char *module, const char *functi
     sim *s = user;
     (void)code; (void)module;
     snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
+}
+
+/* The first input sample time after t (INFINITY when none). */
+static double next_input_time(const sim *s, double t)
+{
+    double next = INFINITY;
+    for (size_t i = 0; i < s->opt->n_inputs; i++) {
+        const input_table *tab = &s->opt->inputs[i];
+        size_t lo = 0, hi = tab->n;
+        while (lo < hi) { /* first sample > t */
+            size_t mid = (lo + hi) / 2;
+            if (tab->t[mid] <= t) lo = mid + 1; else hi = mid;
+        }
+        if (lo < tab->n && tab->t[lo] < next) next = tab->t[lo];
+    }
+    return next;
 }
 
 /* Inputs at time t into the FMU. */
@@ -292,7 +313,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     if (write_row(s, t0) != 0) goto done;
 
     while (t < tend - eps) {
-        const double t_stop = fmin(tend, next_event);
+        const double t_stop = fmin(fmin(tend, next_event), next_input_time(s, t + eps));
         double tret;
         int state_event = 0, time_event, step_event = 0;
         fmi2Boolean enter_event = fmi2False, terminate = fmi2False;

@@ -114,15 +114,104 @@ def error(run, ref, grid):
     return max(e_peak1, e_peak2, e_rms)
 
 
+class Tee:
+    """Print as usual and keep a copy in a file (the README quotes it: scripts/update_readme.py)."""
+
+    def __init__(self, path):
+        self.path, self.lines, self.stdout = path, [], None
+
+    def __enter__(self):
+        self.stdout, sys.stdout = sys.stdout, self
+        return self
+
+    def write(self, text):
+        self.lines.append(text)
+        return self.stdout.write(text)
+
+    def flush(self):
+        self.stdout.flush()
+
+    def __exit__(self, *exc):
+        sys.stdout = self.stdout
+        self.path.write_text("".join(self.lines).lstrip("\n"))
+
+
 def cost_at(points, target):
     """CPU time a contender needs to reach error <= target: the cheapest run that does."""
     ok = [cpu for err, cpu in points if err <= target]
     return min(ok) if ok else None
 
 
+LADDER = [  # (label, model, hinge law, K_d in N/m per m or None)
+    ("parapet (rigid block)", "parapet", "rigid", None),
+    ("simply supported, rigid", "simplySupported", "rigid", None),
+    ("simply supported, trilinear", "simplySupported", "semiRigidHinge", None),
+    ("2DOF rigid, Kd=50 kN/m", "flexibleTop", "rigid", 5e4),
+    ("2DOF semiRigidPaper, Kd=50 kN/m", "flexibleTop", "semiRigidPaper", 5e4),
+    ("2DOF semiRigidHinge, Kd=50 kN/m", "flexibleTop", "semiRigidHinge", 5e4),
+    ("2DOF semiRigidHinge, Kd=50000 kN/m", "flexibleTop", "semiRigidHinge", 5e7),
+]
+KD_SWEEP = np.logspace(3, 9, 13)  # N/m per m: 1 kN/m .. 1e6 kN/m
+
+
+def model_ladder(sim, cases, out):
+    """Cost (fmi2sim BDF, rtol 1e-6) and peaks of each model, and the K_d above which the simply
+    supported wall gives the 2DOF peak s1 within 5 % (same record, wall 1)."""
+    rows = []
+    print("\nModel ladder (fmi2sim BDF, rtol 1e-6; CPU seconds; peaks in m)")
+    for scene, signal in cases:
+        print(f"  {scene}")
+        for label, model, law, kd in LADDER:
+            params = dict(WALL_1, model=model, hinge_law=law, **({"Kd": kd} if kd else {}))
+            best = float("inf")
+            for _ in range(3):  # best of 3: the runs are milliseconds long
+                t, s1, s2, cpu = sim.run(signal, params, "bdf", 1e-6)
+                best = min(best, cpu)
+            rows.append((scene, label, best, np.max(np.abs(s1)), np.max(np.abs(s2)), t[-1] < signal.t[-1] - 1e-6))
+            r = rows[-1]
+            print(f"    {label:<38} cpu {r[2]:.4f}  s1 {r[3]:.4f}  s2 {r[4]:.4f}{'  collapsed' if r[5] else ''}")
+    with open(out / "bench_model_ladder.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "model", "cpu_s", "peak_s1", "peak_s2", "collapsed"])
+        w.writerows(rows)
+
+    print("\nK_d above which the simply supported wall gives the 2DOF peak s1 within 5 %")
+    sweep_rows = []
+    for scene, signal in cases:
+        for law_2dof, law_1dof in (("rigid", "rigid"), ("semiRigidHinge", "semiRigidHinge")):
+            one = sim.run(signal, dict(WALL_1, model="simplySupported", hinge_law=law_1dof), "bdf", 1e-6)
+            s1_1dof, cpu_1dof = np.max(np.abs(one[1])), one[3]
+            if s1_1dof == 0.0:
+                print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: the 1DOF does not rock here")
+                continue
+            within, cpus = [], []
+            for kd in KD_SWEEP:
+                two = sim.run(signal, dict(WALL_1, model="flexibleTop", hinge_law=law_2dof, Kd=kd), "bdf", 1e-6)
+                err = abs(np.max(np.abs(two[1])) - s1_1dof) / s1_1dof
+                within.append(err <= 0.05)
+                cpus.append(two[3])
+                sweep_rows.append((scene, law_2dof, kd, np.max(np.abs(two[1])), np.max(np.abs(two[2])), s1_1dof, err))
+            # the smallest K_d from which every stiffer one in the sweep stays within 5 %
+            k = len(within)
+            while k > 0 and within[k - 1]:
+                k -= 1
+            if k == len(within):
+                print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: at no K_d up to "
+                      f"{KD_SWEEP[-1] / 1e3:g} kN/m (the two hinge laws differ, see the README)")
+                continue
+            speed = np.mean(cpus[k:]) / cpu_1dof
+            print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: from K_d = {KD_SWEEP[k] / 1e3:.3g} kN/m"
+                  f" (the 2DOF costs {speed:.1f}x the 1DOF there)")
+    with open(out / "bench_kd_sweep.csv", "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["scene", "hinge_law", "Kd_N_per_m_per_m", "peak_s1", "peak_s2", "peak_s1_1dof", "rel_diff"])
+        w.writerows(sweep_rows)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="fewer tolerances, 15 s of El Centro")
+    parser.add_argument("--ladder-only", action="store_true", help="only the model ladder and the K_d sweep")
     parser.add_argument("--out", default=str(REPO / "results"))
     args = parser.parse_args()
     out = pathlib.Path(args.out)
@@ -131,6 +220,11 @@ def main():
     fmu_dir = extract(str(FMU))
     work = tempfile.mkdtemp(prefix="rw_bench_")
     sim = Fmi2sim(work, fmu_dir)
+    ladder_cases = [(label.split(",")[0], signal) for label, signal, kd in scenes(args.quick) if kd == 5e4]
+    if args.ladder_only:
+        with Tee(out / "bench_summary.txt"):
+            model_ladder(sim, ladder_cases, out)
+        return
     rtols_sim = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10] if not args.quick else [1e-4, 1e-6, 1e-8]
     rtols_py = [1e-4, 1e-6, 1e-8] if not args.quick else [1e-4, 1e-6]
     contenders = []
@@ -188,6 +282,7 @@ def main():
     fig.savefig(out / "work_precision.png", dpi=110)
 
     # Speed ratios at equal accuracy, from this one run.
+    tee = Tee(out / "bench_summary.txt").__enter__()
     targets = [1e-2, 1e-3, 1e-4]
     print("\nCPU seconds to reach an error target (cheapest run that does), and ratios to fmi2sim BDF")
     print(f"{'scene':<34}{'target':>8}{'fmi2sim':>10}{'fmpy':>10}{'reference':>11}{'ref/sim':>9}{'fmpy/sim':>9}")
@@ -201,7 +296,9 @@ def main():
             ratio = lambda c: f"{c / c_sim:.0f}x" if (c is not None and c_sim) else "-"
             print(f"{label:<34}{target:>8g}{fmt(c_sim):>10}{fmt(c_fmpy):>10}{fmt(c_ref):>11}"
                   f"{ratio(c_ref):>9}{ratio(c_fmpy):>9}")
-    print(f"\nwrote {out / 'bench_work_precision.csv'} and {out / 'work_precision.png'}")
+    model_ladder(sim, ladder_cases, out)
+    tee.__exit__(None, None, None)
+    print(f"\nwrote {out}/bench_work_precision.csv, bench_model_ladder.csv, bench_kd_sweep.csv and work_precision.png")
 
 
 if __name__ == "__main__":

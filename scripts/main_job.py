@@ -60,13 +60,15 @@ def main():
                                           output_interval=0.01, progress=progress, **params)
             bar.update(round(done + t_end) - bar.n)
 
-    print(f"\nWall 1 (b = 0.15 m, h = 2.5 m, W = 6.622 kN/m), El Centro 1940 x {args.scale}, e_r = 0.86")
-    print(f"{'case':<14}{'peak s1 [m]':>12}{'paper':>8}{'peak s2 [m]':>13}{'paper':>8}{'impacts':>9}  collapsed")
+    lines = [f"Wall 1 (b = 0.15 m, h = 2.5 m, W = 6.622 kN/m), El Centro 1940 x {args.scale}, e_r = 0.86",
+             f"{'case':<14}{'peak s1 [m]':>12}{'paper':>8}{'peak s2 [m]':>13}{'paper':>8}{'impacts':>9}  collapsed"]
     for label, _, _, paper_s1, paper_s2 in CASES:
         run = runs[label]
         p1 = f"{paper_s1:.3f}" if args.scale == 0.5 else "-"
         p2 = f"{paper_s2:.3f}" if (paper_s2 is not None and args.scale == 0.5) else "-"
-        print(f"{label:<14}{run.peak_s1:>12.4f}{p1:>8}{run.peak_s2:>13.4f}{p2:>8}{run.impacts:>9}  {run.collapsed}")
+        lines.append(f"{label:<14}{run.peak_s1:>12.4f}{p1:>8}{run.peak_s2:>13.4f}{p2:>8}{run.impacts:>9}  {run.collapsed}")
+    print("\n" + "\n".join(lines))
+    (out / "main_job.txt").write_text("\n".join(lines) + "\n")
 
     csv_path = out / "main_elcentro.csv"
     grid = np.arange(0.0, t_end + 1e-9, 0.01)
