@@ -1,0 +1,260 @@
+"""fmi2sim, the CVODE host: an analytic test FMU, agreement with fmpy and with the reference
+solver on RockingWall, and a clear message with a non-zero exit for every kind of bad input."""
+import math
+import os
+import shutil
+import subprocess
+import zipfile
+
+import numpy as np
+import pytest
+
+import rw_fmu
+from rwref import Params, inputs, simulate
+
+ASAN_BUILD = "asan" in str(os.environ.get("RW_BUILD_DIR", ""))
+
+
+def run(exe, *args, check=True):
+    proc = subprocess.run([str(exe), *map(str, args)], capture_output=True, text=True, timeout=300)
+    if check:
+        assert proc.returncode == 0, proc.stderr
+    return proc
+
+
+def read_csv(path):
+    return np.genfromtxt(path, delimiter=",", names=True)
+
+
+@pytest.fixture(scope="module")
+def ball_fmu(build_dir):
+    path = build_dir / "BouncingBall.fmu"
+    assert path.exists(), f"{path} is missing: build it first"
+    return path
+
+
+def bounce_times(data):
+    """Times at which the bounce counter steps up (the row after each bounce event)."""
+    steps = np.nonzero(np.diff(data["bounces"]) > 0)[0] + 1
+    return data["time"][steps]
+
+
+def analytic_bounces(h0, g, e, n):
+    v1 = math.sqrt(2 * g * h0)
+    times = [math.sqrt(2 * h0 / g)]
+    for k in range(1, n):
+        times.append(times[-1] + 2 * e**k * v1 / g)
+    return np.array(times)
+
+
+@pytest.mark.parametrize("solver", ["bdf", "adams"])
+def test_ball_hits_the_analytic_bounce_times(fmi2sim_exe, ball_fmu, tmp_path, solver):
+    out = tmp_path / "ball.csv"
+    run(fmi2sim_exe, ball_fmu, "--solver", solver, "--rtol", "1e-10", "--set", "h=2", "--set", "e=0.8",
+        "--stop-time", "5", "--output", out)
+    data = read_csv(out)
+    got = bounce_times(data)[:5]
+    want = analytic_bounces(2.0, 9.81, 0.8, 5)
+    np.testing.assert_allclose(got, want, rtol=1e-7)
+    # a row before and after each event: the event time appears twice, h = 0 after the bounce
+    for t in got:
+        rows = data[np.isclose(data["time"], t, rtol=0, atol=1e-12)]
+        assert len(rows) >= 2 and rows["v"][0] < 0 < rows["v"][-1]
+
+
+def test_ball_comes_to_rest_without_zeno(fmi2sim_exe, ball_fmu, tmp_path):
+    out = tmp_path / "ball.csv"
+    proc = run(fmi2sim_exe, ball_fmu, "--stop-time", "20", "--output", out, "--stats")
+    data = read_csv(out)
+    assert data["time"][-1] == pytest.approx(20.0)
+    assert abs(data["h"][-1]) < 1e-9 and data["v"][-1] == 0.0
+    assert "events" in proc.stderr and int(data["bounces"][-1]) < 100
+
+
+def test_ball_time_event(fmi2sim_exe, ball_fmu, tmp_path):
+    out = tmp_path / "ball.csv"
+    run(fmi2sim_exe, ball_fmu, "--set", "t_kick=0.2", "--set", "kick=3", "--rtol", "1e-10",
+        "--stop-time", "1", "--output", out)
+    data = read_csv(out)
+    at = data[np.isclose(data["time"], 0.2, rtol=0, atol=1e-12)]
+    assert len(at) >= 2
+    assert at["v"][-1] - at["v"][0] == pytest.approx(3.0, abs=1e-9)
+    assert at["v"][0] == pytest.approx(-9.81 * 0.2, rel=1e-8)
+
+
+@pytest.mark.skipif(ASAN_BUILD, reason="fmpy (no ASan runtime) cannot load FMUs built with ASan")
+def test_ball_agrees_with_fmpy(fmi2sim_exe, ball_fmu, tmp_path):
+    from fmpy import simulate_fmu
+    out = tmp_path / "ball.csv"
+    run(fmi2sim_exe, ball_fmu, "--rtol", "1e-9", "--stop-time", "3", "--output", out)
+    ours = bounce_times(read_csv(out))[:5]
+    res = simulate_fmu(str(ball_fmu), stop_time=3, relative_tolerance=1e-9, output=["bounces"])
+    theirs = bounce_times(res)[:5]
+    np.testing.assert_allclose(ours, theirs, rtol=1e-6)
+
+
+# ---- RockingWall --------------------------------------------------------------------------
+
+def write_input(path, t, a):
+    np.savetxt(path, np.column_stack([t, a]), delimiter=",", header="time,ag", comments="")
+    return path
+
+
+def gaussian_signal(t_end=8.0):
+    pulse = inputs.gaussian(0.04, 1.0)
+    t = np.arange(0.0, t_end + 1e-9, 0.002)
+    return inputs.Signal(t, np.array([pulse(x) for x in t]))
+
+
+@pytest.mark.parametrize("model,law", [("simplySupported", "semiRigidHinge"), ("flexibleTop", "semiRigidHinge"),
+                                       ("flexibleTop", "semiRigidPaper")])
+def test_rockingwall_agrees_with_fmpy_and_reference(fmi2sim_exe, rockingwall_fmu, tmp_path, model, law):
+    sig = gaussian_signal()
+    out = tmp_path / "wall.csv"
+    sets = rw_fmu.start_values(model=model, hinge_law=law, Kd=1e5)
+    args = [a for name, v in sets.items() for a in ("--set", f"{name}={v}")]
+    run(fmi2sim_exe, rockingwall_fmu, "--input", write_input(tmp_path / "in.csv", sig.t, sig.a),
+        "--rtol", "1e-8", "--stop-time", sig.t[-1], "--output-interval", 0.01, "--output", out, *args)
+    data = read_csv(out)
+    ref = simulate(Params(model=model, hinge_law=law, Kd=1e5), sig, float(sig.t[-1]),
+                   method="DOP853", rtol=1e-9, atol=1e-12)
+    peak1, peak2 = np.max(np.abs(data["s1"])), np.max(np.abs(data["s2"]))
+    assert peak1 == pytest.approx(ref.peak_s1, rel=0.01)
+    assert peak2 == pytest.approx(ref.peak_s2, rel=0.01, abs=1e-6)
+    assert int(data["impacts"][-1]) == ref.impacts
+    if not ASAN_BUILD:
+        fm = rw_fmu.simulate(rockingwall_fmu, float(sig.t[-1]), sig.t, sig.a, rtol=1e-8, model=model,
+                             hinge_law=law, Kd=1e5)
+        assert peak1 == pytest.approx(fm.peak_s1, rel=0.01)
+        assert int(data["impacts"][-1]) == fm.impacts
+
+
+def write_at2(path, acc_g, dt):
+    lines = ["PEER NGA STRONG MOTION DATABASE RECORD", "IMPERIAL VALLEY 1940, EL CENTRO (quakeio copy)",
+             "ACCELERATION TIME SERIES IN UNITS OF G", f"NPTS=  {len(acc_g)}, DT=   {dt:.4f} SEC"]
+    for i in range(0, len(acc_g), 5):
+        lines.append("".join(f"{a:15.7E}" for a in acc_g[i:i + 5]))
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+def test_el_centro_csv_and_at2_agree_with_reference(fmi2sim_exe, rockingwall_fmu, tmp_path):
+    rec = inputs.el_centro(0.5)
+    t_end = float(rec.t[-1])
+    common = ["--set", "model=2", "--rtol", "1e-8", "--stop-time", t_end, "--output-interval", 0.01]
+    run(fmi2sim_exe, rockingwall_fmu, "--input", write_input(tmp_path / "in.csv", rec.t, rec.a),
+        "--output", tmp_path / "csv.csv", *common)
+    at2 = write_at2(tmp_path / "elce.AT2", rec.a / 9.81 / 0.5, 0.02)
+    run(fmi2sim_exe, rockingwall_fmu, "--ag", at2, "--ag-scale", 0.5, "--output", tmp_path / "at2.csv", *common)
+    a, b = read_csv(tmp_path / "csv.csv"), read_csv(tmp_path / "at2.csv")
+    ref = simulate(Params(model="simplySupported"), rec, t_end, method="DOP853", rtol=1e-9, atol=1e-12)
+    assert np.max(np.abs(a["s1"])) == pytest.approx(ref.peak_s1, rel=0.01)
+    assert np.max(np.abs(b["s1"])) == pytest.approx(np.max(np.abs(a["s1"])), rel=1e-5)
+
+
+# ---- bad input: one clear message, non-zero exit -----------------------------------------
+
+def bad_zip(tmp_path):
+    p = tmp_path / "nomd.fmu"
+    with zipfile.ZipFile(p, "w") as z:
+        z.writestr("binaries/linux64/x.so", b"")
+    return p
+
+
+def wrong_guid(tmp_path, ball):
+    d = tmp_path / "wrongguid"
+    with zipfile.ZipFile(ball) as z:
+        z.extractall(d)
+    md = d / "modelDescription.xml"
+    md.write_text(md.read_text().replace("{6f3d1f0e-2b1c-4c1a-9a55-b0c1d2e3f401}", "{00000000-0000-0000-0000-000000000000}"))
+    out = tmp_path / "wrongguid.fmu"
+    shutil.make_archive(str(out.with_suffix("")), "zip", d)
+    out.with_suffix(".zip").rename(out)
+    return out
+
+
+CSV_CASES = {
+    "empty": ("", "empty file"),
+    "header_only": ("time,ag\n", "no data rows"),
+    "non_numeric": ("time,ag\n0,0\n0.1,abc\n", ":3: column 2: 'abc' is not a number"),
+    "non_monotonic": ("time,ag\n0,0\n0.2,1\n0.1,2\n", ":4: time 0.1 is before"),
+    "duplicate_time": ("time,ag\n0,0\n0.1,1\n0.1,2\n", ":4: time 0.1 repeats"),
+    "column_count": ("time,ag\n0,0\n0.1,1,5\n", ":3: 3 columns, the header has 2"),
+    "unknown_column": ("time,nosuch\n0,0\n", "column 'nosuch' is not a variable"),
+    "huge": ("time,ag\n0,0\n0.1,1e999\n", ":3: column 2: '1e999' is out of range"),
+    "binary": ("time,ag\n0,0\x00\x01\x02\n", ":2: binary data"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(CSV_CASES))
+def test_csv_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
+    text, message = CSV_CASES[case]
+    path = tmp_path / f"{case}.csv"
+    path.write_bytes(text.encode("latin-1"))
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--input", path, check=False)
+    assert proc.returncode != 0
+    assert str(path) in proc.stderr and message in proc.stderr, proc.stderr
+    assert proc.stderr.count("error:") == 1
+
+
+AT2_CASES = {
+    "bad_header": ("a\nb\nc\nno numbers here\n0.1 0.2\n", ":4: expected 'NPTS= N, DT= dt SEC'"),
+    "npts_mismatch": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 0.2\n", "2 values, the header says NPTS = 3"),
+    "non_numeric": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 x 0.3\n", ":5: 'x' is not a number"),
+    "truncated": ("a\nb\n", ":3: file ends inside the 4-line AT2 header"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(AT2_CASES))
+def test_at2_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
+    text, message = AT2_CASES[case]
+    path = tmp_path / f"{case}.AT2"
+    path.write_text(text)
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--ag", path, check=False)
+    assert proc.returncode != 0 and str(path) in proc.stderr and message in proc.stderr, proc.stderr
+
+
+def test_fmu_and_option_errors(fmi2sim_exe, ball_fmu, tmp_path):
+    cases = [
+        ([tmp_path / "missing.fmu"], "No such file"),
+        ([tmp_path / "notzip.fmu"], "not a valid FMU"),
+        ([bad_zip(tmp_path)], "modelDescription.xml"),
+        ([wrong_guid(tmp_path, ball_fmu)], "GUID"),
+        ([ball_fmu, "--set", "nosuch=1"], "no variable 'nosuch'"),
+        ([ball_fmu, "--set", "e=abc"], "'abc' is not a Real"),
+        ([ball_fmu, "--set", "bounces=1"], "cannot be set"),
+        ([ball_fmu, "--set", "der(h)=1"], "cannot be set"),
+        ([ball_fmu, "--frobnicate"], "unknown option"),
+        ([ball_fmu, "--rtol"], "--rtol needs a value"),
+        ([ball_fmu, "--rtol", "-1"], "--rtol must be > 0"),
+    ]
+    (tmp_path / "notzip.fmu").write_text("this is not a zip file")
+    for args, message in cases:
+        proc = run(fmi2sim_exe, *args, check=False)
+        assert proc.returncode != 0, args
+        assert message in proc.stderr, (args, proc.stderr)
+        assert "Traceback" not in proc.stderr and "Segmentation" not in proc.stderr
+
+
+def test_integer_type_is_checked(fmi2sim_exe, rockingwall_fmu):
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--set", "model=1.5", check=False)
+    assert proc.returncode != 0 and "'1.5' is not an Integer" in proc.stderr
+
+
+def test_fmu_error_is_reported(fmi2sim_exe, rockingwall_fmu):
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--set", "h=-1", check=False)
+    assert proc.returncode != 0 and "fmi2SetReal" in proc.stderr and "h" in proc.stderr
+
+
+@pytest.mark.skipif(shutil.which("valgrind") is None, reason="valgrind is not installed")
+@pytest.mark.skipif(ASAN_BUILD, reason="valgrind and ASan do not mix")
+def test_valgrind_memcheck_is_clean(fmi2sim_exe, ball_fmu, rockingwall_fmu, tmp_path):
+    sig = gaussian_signal(2.0)
+    inp = write_input(tmp_path / "in.csv", sig.t, sig.a)
+    for args in ([ball_fmu, "--stop-time", "3"], [rockingwall_fmu, "--input", inp, "--stop-time", "2"],
+                 [rockingwall_fmu, "--input", tmp_path / "missing.csv"]):
+        proc = subprocess.run(["valgrind", "--error-exitcode=99", "--leak-check=full",
+                               "--errors-for-leak-kinds=definite", str(fmi2sim_exe), *map(str, args),
+                               "--output", str(tmp_path / "o.csv")], capture_output=True, text=True, timeout=300)
+        assert proc.returncode in (0, 2), proc.stderr[-3000:]   # 2: the intended error exit, 99: memcheck errors
+        assert "ERROR SUMMARY: 0 errors" in proc.stderr, proc.stderr[-3000:]
