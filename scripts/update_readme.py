@@ -20,13 +20,20 @@ def rows(name):
     return list(csv.DictReader(open(path))) if path.exists() else None
 
 
+def number(x):
+    try:
+        return float(x)
+    except (TypeError, ValueError):
+        return None
+
+
 def fmt(x, digits=3):
-    return "" if x in ("", None) else f"{float(x):.{digits}f}"
+    return f"{number(x):.{digits}f}" if number(x) is not None else (x or "")
 
 
 def diff(ours, paper):
-    if ours in ("", None) or paper in ("", None):
-        return "missing"
+    if number(ours) is None or number(paper) is None:
+        return ours if ours else "missing"   # e.g. "collapse", or no record
     d = float(ours) - float(paper)
     return f"{d:+.3f} ({100 * d / float(paper):+.0f} %)" if float(paper) else f"{d:+.3f}"
 
@@ -76,10 +83,10 @@ def replace(readme, name, body):
     if body is None:
         print(f"update_readme: no data for '{name}', block left as it is", file=sys.stderr)
         return readme
-    pattern = re.compile(rf"(<!-- BEGIN {name} -->\n).*?(\n<!-- END {name} -->)", re.S)
+    pattern = re.compile(rf"(<!-- BEGIN {name} -->\n)(?:.*?\n)?(<!-- END {name} -->)", re.S)
     if not pattern.search(readme):
         raise SystemExit(f"update_readme: README.md has no block '{name}'")
-    return pattern.sub(lambda m: m.group(1) + body + m.group(2), readme)
+    return pattern.sub(lambda m: m.group(1) + body + "\n" + m.group(2), readme)
 
 
 def main():
