@@ -1,4 +1,5 @@
 /* Tests of the FMI 2.0 Model Exchange wrapper (fmu_src/fmi2Functions.c), linked statically. */
+#include "check.h"
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -8,20 +9,9 @@
 #include "fmi2Functions.h"
 #include "model_variables.h"
 
-static int failures = 0, checks = 0;
 static char last_log[4096];
 static int n_logs = 0;
 
-#define CHECK(cond, ...)                                \
-    do {                                                \
-        checks++;                                       \
-        if (!(cond)) {                                  \
-            failures++;                                 \
-            printf("FAIL %s:%d: ", __FILE__, __LINE__); \
-            printf(__VA_ARGS__);                        \
-            printf("\n");                               \
-        }                                               \
-    } while (0)
 
 static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
                    fmi2String message, ...)

@@ -1,5 +1,6 @@
 /* Unit tests of the RockingWall physics module (fmu_src/rw_physics.c, rw_modes.c).
  * Usage: test_physics derive_equations.json  (written by scripts/derive_equations.py --json) */
+#include "check.h"
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,18 +9,7 @@
 #include "model_variables.h"
 #include "rw_physics.h"
 
-static int failures = 0, checks = 0;
 
-#define CHECK(cond, ...)                                                  \
-    do {                                                                  \
-        checks++;                                                         \
-        if (!(cond)) {                                                    \
-            failures++;                                                   \
-            printf("FAIL %s:%d: ", __FILE__, __LINE__);                   \
-            printf(__VA_ARGS__);                                          \
-            printf("\n");                                                 \
-        }                                                                 \
-    } while (0)
 
 static void check_close(const char *what, double got, double want, double rtol)
 {
