@@ -43,9 +43,7 @@ DT_OUT = 0.01
 
 
 def scenes(quick):
-    gauss_t = np.arange(0.0, 8.0 + 1e-9, 0.002)
-    pulse = inputs.gaussian(0.04, 1.0)
-    gauss = inputs.Signal(gauss_t, np.array([pulse(t) for t in gauss_t]), "Gaussian D=0.04 m T=1 s")
+    gauss = inputs.sampled(inputs.gaussian(0.04, 1.0), 8.0, 0.002, "Gaussian D=0.04 m T=1 s")
     elce = inputs.el_centro(0.5)
     if quick:
         elce = inputs.Signal(elce.t[elce.t <= 15.0], elce.a[elce.t <= 15.0], "El Centro x0.5 (15 s)")
@@ -102,8 +100,7 @@ def reference_run(signal, params, method, rtol):
 
 def on_grid(run, grid):
     """s1, s2 of a run on the common output grid (event instants appear twice in a run)."""
-    t, idx = np.unique(run[0], return_index=True)
-    return np.interp(grid, t, run[1][idx]), np.interp(grid, t, run[2][idx])
+    return rw_fmu.on_grid(run[0], run[1], grid), rw_fmu.on_grid(run[0], run[2], grid)
 
 
 def error(run, ref, grid):

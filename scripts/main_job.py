@@ -76,9 +76,8 @@ def main():
     header = ["time", "ag"]
     for label, run in runs.items():
         key = label.replace(" ", "_").replace("=", "")
-        t_unique, idx = np.unique(run.t, return_index=True)
         for name in ("s1", "s2"):
-            columns.append(np.interp(grid, t_unique, getattr(run, name)[idx], right=np.nan))
+            columns.append(rw_fmu.on_grid(run.t, getattr(run, name), grid, right=np.nan))
             header.append(f"{name}_{key}")
     np.savetxt(csv_path, np.column_stack(columns), delimiter=",", header=",".join(header), comments="", fmt="%.6g")
 

@@ -63,6 +63,13 @@ class FmuRun:
         return float(np.max(np.abs(self.s2)))
 
 
+def on_grid(t, x, grid, right=None):
+    """x(t) of a run on a regular grid. fmpy and fmi2sim record an event instant twice (before
+    and after), so duplicate times are dropped first; right=np.nan marks a run that ended early."""
+    t_unique, idx = np.unique(t, return_index=True)
+    return np.interp(grid, t_unique, np.asarray(x)[idx], right=right)
+
+
 def start_values(model="flexibleTop", hinge_law="semiRigidHinge", q0=None, dq0=None, **params):
     """FMU start values from reference-solver style keyword arguments."""
     values = {"model": MODELS[model], "hingeLaw": HINGE_LAWS[hinge_law]}

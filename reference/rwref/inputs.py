@@ -68,6 +68,13 @@ class GaussianPulse:
         return self.D * math.exp(-z * z / (2 * s2)) * (z * z / (s2 * s2) - 1 / s2)
 
 
+def sampled(fn, t_end, dt, name="sampled signal"):
+    """fn (e.g. gaussian(...)) sampled every dt on [0, t_end]: the tabulated, linearly
+    interpolated form that FMU hosts take, so the FMU and this solver see the same input."""
+    t = np.arange(0.0, t_end + dt / 2, dt)
+    return Signal(t, np.array([fn(x) for x in t]), name)
+
+
 def gaussian(D, T, t0=None):
     return GaussianPulse(D, T, t0)
 

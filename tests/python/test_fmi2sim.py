@@ -101,9 +101,7 @@ def write_input(path, t, a):
 
 
 def gaussian_signal(t_end=8.0):
-    pulse = inputs.gaussian(0.04, 1.0)
-    t = np.arange(0.0, t_end + 1e-9, 0.002)
-    return inputs.Signal(t, np.array([pulse(x) for x in t]))
+    return inputs.sampled(inputs.gaussian(0.04, 1.0), t_end, 0.002)
 
 
 @pytest.mark.parametrize("model,law", [("simplySupported", "semiRigidHinge"), ("flexibleTop", "semiRigidHinge"),

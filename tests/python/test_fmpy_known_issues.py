@@ -5,16 +5,13 @@ right-hand side sees a lagged ground acceleration. scripts/rw_fmu.py installs a 
 that applies the input; this test shows that it matters. If it starts failing because the two
 runs agree, fmpy has been fixed: drop the workaround in rw_fmu.py.
 """
-import numpy as np
 
 import rw_fmu
 from rwref import Params, simulate, inputs
 
 
 def test_fmpy_rhs_ignores_inputs_and_the_workaround_fixes_it(rockingwall_fmu):
-    pulse = inputs.gaussian(0.04, 1.0)            # Table 5.2's impulse, the rigid 1DOF wall
-    t = np.arange(0.0, 6.0, 0.002)
-    signal = inputs.Signal(t, np.array([pulse(x) for x in t]))
+    signal = inputs.sampled(inputs.gaussian(0.04, 1.0), 6.0, 0.002)  # Table 5.2's impulse, rigid 1DOF
     kw = dict(model="simplySupported", hinge_law="rigid", rtol=1e-6, output_interval=0.01)
     try:
         rw_fmu.fmpy_input_in_rhs(False)

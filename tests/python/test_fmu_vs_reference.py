@@ -30,12 +30,6 @@ RMS_TOL = 0.02         # RMS of the s1 and s2 differences, relative to the peak
 PART_TOL = 0.05        # "parted": difference above 5 % of the peak
 
 
-def _sampled_gaussian(D, T, t_end, dt=0.002):
-    pulse = inputs.gaussian(D, T)
-    t = np.arange(0.0, t_end + dt / 2, dt)
-    return inputs.Signal(t, np.array([pulse(x) for x in t]))
-
-
 def _run_both(fmu, model, law, psi, signal, t_end, Kd):
     params = dict(h=2.5, b=0.15, W=6622.0, psi=psi, Kd=Kd, er=0.86)
     grid = np.arange(0.0, t_end + DT_OUT / 2, DT_OUT)
@@ -46,11 +40,6 @@ def _run_both(fmu, model, law, psi, signal, t_end, Kd):
     return ref, fmu_run, grid
 
 
-def _on_grid(t, x, grid):
-    t_u, idx = np.unique(t, return_index=True)   # fmpy records event instants twice
-    return np.interp(grid, t_u, np.asarray(x)[idx], right=np.nan)
-
-
 def _compare(ref, run, grid):
     """Peak errors, the RMS band up to where the histories part, and the time they part."""
     assert ref.collapsed == run.collapsed, f"collapse: reference {ref.collapsed}, FMU {run.collapsed}"
@@ -59,8 +48,8 @@ def _compare(ref, run, grid):
     peak = max(ref.peak_s1, ref.peak_s2, 1e-6)   # a wall that never lifts off: compare in metres
     diffs = []
     for name in ("s1", "s2"):
-        a = _on_grid(ref.t, getattr(ref, name), grid)[keep]
-        b = _on_grid(run.t, getattr(run, name), grid)[keep]
+        a = rw_fmu.on_grid(ref.t, getattr(ref, name), grid, right=np.nan)[keep]
+        b = rw_fmu.on_grid(run.t, getattr(run, name), grid, right=np.nan)[keep]
         diffs.append(np.abs(a - b))
     diff = np.maximum(*diffs)
     parted = np.nonzero(diff > PART_TOL * peak)[0]
@@ -75,7 +64,7 @@ def _compare(ref, run, grid):
 def test_gaussian_impulse(rockingwall_fmu, model, law, wall):
     psi, D = WALLS[wall]
     t_end = 6.0
-    ref, run, grid = _run_both(rockingwall_fmu, model, law, psi, _sampled_gaussian(D, 1.0, t_end), t_end, KD_GAUSS)
+    ref, run, grid = _run_both(rockingwall_fmu, model, law, psi, inputs.sampled(inputs.gaussian(D, 1.0), t_end, 0.002), t_end, KD_GAUSS)
     rms, t_part = _compare(ref, run, grid)
     print(f"wall {wall} {model}/{law}: peaks ref {ref.peak_s1:.5f}/{ref.peak_s2:.5f} "
           f"fmu {run.peak_s1:.5f}/{run.peak_s2:.5f} impacts {ref.impacts}/{run.impacts} rms {rms:.2e} parted {t_part}")
