@@ -1,84 +1,85 @@
-/* RockingWall: the FMI 2.0 Model Exchange API over the physics of rw_physics.c / rw_modes.c.
- * No global state: every instance owns its parameters, modes and states.
- * State machine: FMI 2.0 standard, section 3.2.3 (Model Exchange). */
+/* The FMI 2.0 API, Model Exchange and Co-Simulation, shared by every model of this repository:
+ * the model supplies the callbacks of fmu_model.h (rw_model.c, diaphragm/diaphragm_model.c).
+ * No global state: every instance owns its model data.
+ *
+ * This layer checks what the standard makes the importer's duty and reports every violation as
+ * fmi2Error with a logged reason: the call sequence (state machines of sections 3.2.3 and 4.2.4),
+ * NULL arguments, value references, types, settability, non-finite values, array sizes.
+ * fmi2DoStep integrates the model with CVODE (cs_cvode.c). */
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "cs_cvode.h"
 #include "fmi2Functions.h"
-#include "model_variables.h"
-#include "rw_physics.h"
-
-/* compile-time check: model_variables.h and rw_physics.h agree on the sizes */
-typedef char rw_check_nx[(RW_NUMBER_OF_STATES == RW_NX) ? 1 : -1];
-typedef char rw_check_nz[(RW_NUMBER_OF_EVENT_INDICATORS == RW_NZ) ? 1 : -1];
+#include "fmu_model.h"
 
 /* ---- instance ------------------------------------------------------------------------------ */
 
 enum {
     ST_INSTANTIATED = 1 << 0,
     ST_INIT = 1 << 1,
-    ST_EVENT = 1 << 2,
-    ST_CONT = 1 << 3,
-    ST_TERMINATED = 1 << 4,
-    ST_ERROR = 1 << 5
+    ST_EVENT = 1 << 2,      /* Model Exchange: event mode */
+    ST_CONT = 1 << 3,       /* Model Exchange: continuous-time mode */
+    ST_STEP = 1 << 4,       /* Co-Simulation: slave initialized, between steps */
+    ST_TERMINATED = 1 << 5,
+    ST_ERROR = 1 << 6
 };
-#define ST_ANY (ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR)
+#define ST_ANY (ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_CONT | ST_STEP | ST_TERMINATED | ST_ERROR)
+#define ST_INITIALIZED (ST_EVENT | ST_CONT | ST_STEP)
+#define ST_READABLE (ST_INIT | ST_INITIALIZED | ST_TERMINATED | ST_ERROR)
 
 /* log categories (declared in modelDescription.xml) */
 enum { LOG_EVENTS = 1 << 0, LOG_WARNING = 1 << 1, LOG_ERROR = 1 << 2 };
 static const char *const CATEGORY_NAMES[] = {"logEvents", "logStatusWarning", "logStatusError"};
 #define N_CATEGORIES 3
 
-/* time between the collapse event (where `collapsed` becomes true and is recorded) and the
- * time event that requests terminateSimulation */
-#define RW_TERMINATE_DELAY 1e-6
-
 typedef struct {
     char *name;
     fmi2CallbackFunctions cb;
+    fmi2Type type;
     int state;
     unsigned categories;
-    rw_params P;
-    rw_derived D;
-    rw_mode mode;
-    rw_input in;
-    double x[RW_NX];
+    void *M; /* the model's data (FMU_MODEL.data_size bytes) */
     double time;
-    int impacts;
-    int collapsed;
-    double terminate_time;
+    fmu_logger log;
+    /* Co-Simulation */
+    double rtol;
+    cs_solver *cs;
+    cs_input *inputs;      /* every Real input, value refreshed before each step */
+    size_t n_inputs;
+    int terminated;        /* the model ended the run (fmi2Terminated status) */
+    double last_successful_time;
 } Inst;
 
-/* ---- variable table from model_variables.h ------------------------------------------------- */
+#define MODEL (&FMU_MODEL)
 
-enum { T_Real, T_Integer, T_Boolean };
-typedef struct {
-    fmi2ValueReference vr;
-    int type;
-    const char *name;
-    const char *causality;
-    const char *initial;
-    double start;
-} VarInfo;
-
-#define RW_VAR_INFO(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
-    {VR, T_##TYPE, NAME, CAUS, INIT, START},
-static const VarInfo VARS[] = {RW_VARIABLES(RW_VAR_INFO)};
-#undef RW_VAR_INFO
-#define N_VARS (sizeof VARS / sizeof VARS[0])
-
-static const VarInfo *find_var(fmi2ValueReference vr)
+static const fmu_var *find_var(fmi2ValueReference vr)
 {
     size_t i;
-    for (i = 0; i < N_VARS; i++)
-        if (VARS[i].vr == vr) return &VARS[i];
+    for (i = 0; i < MODEL->nvars; i++)
+        if (MODEL->vars[i].vr == vr) return &MODEL->vars[i];
     return NULL;
 }
 
 static const char *TYPE_NAMES[] = {"Real", "Integer", "Boolean"};
+
+/* ---- memory -------------------------------------------------------------------------------- */
+
+/* the importer's memory functions when it gives both, else the C library's */
+static void *alloc(const fmi2CallbackFunctions *cb, size_t n, size_t size)
+{
+    return (cb->allocateMemory && cb->freeMemory) ? cb->allocateMemory(n, size) : calloc(n, size);
+}
+
+static void release(const fmi2CallbackFunctions *cb, void *p)
+{
+    if (!p) return;
+    if (cb->allocateMemory && cb->freeMemory) cb->freeMemory(p);
+    else free(p);
+}
 
 /* ---- logging ------------------------------------------------------------------------------- */
 
@@ -121,11 +122,9 @@ static fmi2Status fail(Inst *S, const char *fmt, ...)
     return fmi2Error;
 }
 
-static void physics_log(void *ctx, const char *message)
-{
-    Inst *S = (Inst *)ctx;
-    log_event(S, "t = %.9g: %s", S->time, message);
-}
+/* the model's messages */
+static void model_event(void *ctx, const char *message) { log_event((Inst *)ctx, "%s", message); }
+static void model_warning(void *ctx, const char *message) { log_warning((Inst *)ctx, "%s", message); }
 
 #define CHECK_INSTANCE(c) \
     do { if (!(c)) return fmi2Error; } while (0)
@@ -133,7 +132,12 @@ static void physics_log(void *ctx, const char *message)
 static int allowed(Inst *S, const char *f, int mask)
 {
     if (S->state & mask) return 1;
-    fail(S, "%s: illegal call sequence (not allowed in the current state)", f);
+    fail(S, "%s: illegal call sequence (not allowed in the current state%s)", f,
+         (S->type == fmi2CoSimulation && (mask & (ST_EVENT | ST_CONT)) && !(mask & ST_STEP))
+             ? "; a Model Exchange function called on a Co-Simulation instance"
+             : (S->type == fmi2ModelExchange && (mask & ST_STEP) && !(mask & (ST_EVENT | ST_CONT)))
+                   ? "; a Co-Simulation function called on a Model Exchange instance"
+                   : "");
     return 0;
 }
 
@@ -141,66 +145,12 @@ static int allowed(Inst *S, const char *f, int mask)
     do { if (!allowed(S, F, MASK)) return fmi2Error; } while (0)
 #define ASSERT_NOT_NULL(S, F, P) \
     do { if (!(P)) return fail(S, "%s: argument %s must not be NULL", F, #P); } while (0)
+#define ASSERT_SIZE(S, F, N, EXPECTED, WHAT) \
+    do { if ((N) != (size_t)(EXPECTED)) return fail(S, "%s: " WHAT " = %u, expected %d", F, (unsigned)(N), (EXPECTED)); } while (0)
 
-/* ---- helpers ------------------------------------------------------------------------------- */
-
-static void reset_values(Inst *S)
+static const fmu_var *lookup(Inst *S, const char *f, fmi2ValueReference vr, fmu_type type)
 {
-    rw_params_default(&S->P);
-    rw_derive(&S->P, &S->D);
-    memset(&S->mode, 0, sizeof S->mode);
-    S->mode.side_b = S->mode.side_m = 1;
-    S->in.ag = 0.0;
-    S->in.u_top = 0.0;
-    memset(S->x, 0, sizeof S->x);
-    S->time = 0.0;
-    S->impacts = 0;
-    S->collapsed = 0;
-    S->terminate_time = 0.0;
-}
-
-/* modes and states as seen by getters: in initialization mode the modes are not decided yet, so
- * they are computed on copies from the start values */
-static void view(Inst *S, rw_mode *m, double x[RW_NX])
-{
-    memcpy(x, S->x, sizeof S->x);
-    *m = S->mode;
-    if (S->state & (ST_INSTANTIATED | ST_INIT)) rw_init_modes(&S->P, &S->D, &S->in, x, m, NULL, NULL);
-}
-
-static double *real_param(rw_params *P, fmi2ValueReference vr)
-{
-    switch (vr) {
-    case RW_VR_h: return &P->h;
-    case RW_VR_b: return &P->b;
-    case RW_VR_W: return &P->W;
-    case RW_VR_psi: return &P->psi;
-    case RW_VR_Kd: return &P->Kd;
-    case RW_VR_er: return &P->er;
-    case RW_VR_g: return &P->g;
-    case RW_VR_delta1Ratio: return &P->delta1Ratio;
-    case RW_VR_delta2A: return &P->delta2A;
-    case RW_VR_delta2B: return &P->delta2B;
-    case RW_VR_hingeSat: return &P->hingeSat;
-    case RW_VR_restRate: return &P->restRate;
-    default: return NULL;
-    }
-}
-
-static int state_index(fmi2ValueReference vr)
-{
-    switch (vr) {
-    case RW_VR_q1: return 0;
-    case RW_VR_q2: return 1;
-    case RW_VR_dq1: return 2;
-    case RW_VR_dq2: return 3;
-    default: return -1;
-    }
-}
-
-static const VarInfo *lookup(Inst *S, const char *f, fmi2ValueReference vr, int type)
-{
-    const VarInfo *v = find_var(vr);
+    const fmu_var *v = find_var(vr);
     if (!v) {
         fail(S, "%s: unknown value reference %u", f, (unsigned)vr);
         return NULL;
@@ -212,6 +162,24 @@ static const VarInfo *lookup(Inst *S, const char *f, fmi2ValueReference vr, int 
     }
     return v;
 }
+
+/* may v be set now? (FMI 2.0 section 2.2.7) */
+static int settable(Inst *S, const char *f, const fmu_var *v)
+{
+    const int before_init = (S->state & (ST_INSTANTIATED | ST_INIT)) != 0;
+    if (!strcmp(v->causality, "input")) return 1;
+    if (!strcmp(v->causality, "parameter") || !strcmp(v->initial, "exact")) {
+        if (before_init) return 1;
+        fail(S, "%s: %s %s can only be set before fmi2ExitInitializationMode%s", f,
+             !strcmp(v->causality, "parameter") ? "parameter" : "start value of", v->name,
+             !strcmp(v->causality, "parameter") ? "" : " (use fmi2SetContinuousStates)");
+        return 0;
+    }
+    fail(S, "%s: variable %s (causality %s) cannot be set", f, v->name, v->causality);
+    return 0;
+}
+
+static int initializing(const Inst *S) { return (S->state & (ST_INSTANTIATED | ST_INIT)) != 0; }
 
 /* ---- inquiry, instantiation ---------------------------------------------------------------- */
 
@@ -229,6 +197,7 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
 {
     Inst *S;
     char msg[512];
+    size_t i;
     (void)fmuResourceLocation;
     (void)visible;
     if (!functions || !functions->logger) return NULL;
@@ -236,52 +205,59 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
         instantiate_error(functions, instanceName, "fmi2Instantiate: instanceName must be a non-empty string");
         return NULL;
     }
-    if (fmuType != fmi2ModelExchange) {
+    if (fmuType != fmi2ModelExchange && fmuType != fmi2CoSimulation) {
         instantiate_error(functions, instanceName,
-                          "fmi2Instantiate: only Model Exchange is supported (fmuType must be fmi2ModelExchange)");
+                          "fmi2Instantiate: fmuType must be fmi2ModelExchange or fmi2CoSimulation");
         return NULL;
     }
-    if (!fmuGUID || strcmp(fmuGUID, RW_GUID) != 0) {
-        snprintf(msg, sizeof msg, "fmi2Instantiate: wrong GUID \"%s\", this FMU has GUID " RW_GUID,
-                 fmuGUID ? fmuGUID : "(null)");
-        for (char *c = msg; *c; c++)
+    if (!fmuGUID || strcmp(fmuGUID, MODEL->guid) != 0) {
+        char *c;
+        snprintf(msg, sizeof msg, "fmi2Instantiate: wrong GUID \"%s\", this FMU has GUID %s",
+                 fmuGUID ? fmuGUID : "(null)", MODEL->guid);
+        for (c = msg; *c; c++)
             if (*c == '%') *c = '_';
         instantiate_error(functions, instanceName, msg);
         return NULL;
     }
-    {   /* the importer's memory functions when it gives both, else the C library's */
-        const int own = functions->allocateMemory && functions->freeMemory;
-        S = own ? (Inst *)functions->allocateMemory(1, sizeof(Inst)) : (Inst *)calloc(1, sizeof(Inst));
-        if (!S) return NULL;
-        memset(S, 0, sizeof *S);
-        S->cb = *functions;
-        if (!own) S->cb.allocateMemory = NULL, S->cb.freeMemory = NULL;
-        S->name = own ? (char *)functions->allocateMemory(strlen(instanceName) + 1, 1)
-                      : (char *)calloc(strlen(instanceName) + 1, 1);
-        if (!S->name) {
-            if (own) functions->freeMemory(S); else free(S);
-            return NULL;
-        }
+    S = (Inst *)alloc(functions, 1, sizeof(Inst));
+    if (!S) return NULL;
+    memset(S, 0, sizeof *S);
+    S->cb = *functions;
+    if (!(functions->allocateMemory && functions->freeMemory)) S->cb.allocateMemory = NULL, S->cb.freeMemory = NULL;
+    S->name = (char *)alloc(&S->cb, strlen(instanceName) + 1, 1);
+    S->M = alloc(&S->cb, 1, MODEL->data_size);
+    S->inputs = (cs_input *)alloc(&S->cb, MODEL->nvars + 1, sizeof(cs_input));
+    if (!S->name || !S->M || !S->inputs) {
+        fmi2FreeInstance(S);
+        return NULL;
     }
     strcpy(S->name, instanceName);
+    for (i = 0; i < MODEL->nvars; i++)
+        if (MODEL->vars[i].type == FMU_REAL && !strcmp(MODEL->vars[i].causality, "input"))
+            S->inputs[S->n_inputs++].vr = MODEL->vars[i].vr;
+    S->type = fmuType;
     S->categories = LOG_ERROR | LOG_WARNING | (loggingOn ? LOG_EVENTS : 0);
-    reset_values(S);
+    S->log.event = model_event;
+    S->log.warning = model_warning;
+    S->log.ctx = S;
+    MODEL->reset(S->M);
     S->state = ST_INSTANTIATED;
-    log_event(S, "fmi2Instantiate: instance created");
+    log_event(S, "fmi2Instantiate: %s instance created",
+              fmuType == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange");
     return S;
 }
 
 void fmi2FreeInstance(fmi2Component c)
 {
     Inst *S = (Inst *)c;
+    fmi2CallbackFunctions cb;
     if (!S) return;
-    if (S->cb.freeMemory && S->cb.allocateMemory) {
-        S->cb.freeMemory(S->name);
-        S->cb.freeMemory(S);
-    } else {
-        free(S->name);
-        free(S);
-    }
+    cb = S->cb;
+    cs_free(S->cs);
+    release(&cb, S->inputs);
+    release(&cb, S->M);
+    release(&cb, S->name);
+    release(&cb, S);
 }
 
 fmi2Status fmi2SetDebugLogging(fmi2Component c, fmi2Boolean loggingOn, size_t nCategories,
@@ -317,13 +293,14 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
                                fmi2Real startTime, fmi2Boolean stopTimeDefined, fmi2Real stopTime)
 {
     Inst *S = (Inst *)c;
-    (void)toleranceDefined;
-    (void)tolerance;
     (void)stopTimeDefined;
     (void)stopTime;
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2SetupExperiment", ST_INSTANTIATED);
     if (!isfinite(startTime)) return fail(S, "fmi2SetupExperiment: startTime = %g is not finite", startTime);
+    if (toleranceDefined && !(tolerance > 0 && tolerance < 1))
+        return fail(S, "fmi2SetupExperiment: tolerance = %g must be in (0, 1)", tolerance);
+    S->rtol = toleranceDefined ? tolerance : 0.0; /* only Co-Simulation uses it (CVODE inside) */
     S->time = startTime;
     return fmi2OK;
 }
@@ -337,29 +314,24 @@ fmi2Status fmi2EnterInitializationMode(fmi2Component c)
     return fmi2OK;
 }
 
-static void check_collapse(Inst *S)
-{
-    if (S->collapsed || !rw_is_collapsed(&S->P, &S->D, &S->mode, &S->in, S->x)) return;
-    S->collapsed = 1;
-    S->terminate_time = S->time + RW_TERMINATE_DELAY;
-    log_warning(S, "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): "
-                   "the wall passed its instability point; terminating the simulation",
-                S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1]);
-}
-
 fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     Inst *S = (Inst *)c;
     char msg[512];
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2ExitInitializationMode", ST_INIT);
-    if (rw_params_validate(&S->P, msg, sizeof msg)) return fail(S, "fmi2ExitInitializationMode: %s", msg);
-    rw_derive(&S->P, &S->D);
-    rw_init_modes(&S->P, &S->D, &S->in, S->x, &S->mode, physics_log, S);
-    S->impacts = 0;
-    S->collapsed = 0;
-    check_collapse(S);
-    S->state = ST_EVENT;
+    if (MODEL->exit_init(S->M, S->time, &S->log, msg, sizeof msg))
+        return fail(S, "fmi2ExitInitializationMode: %s", msg);
+    if (S->type == fmi2CoSimulation) {
+        int terminated = 0;
+        S->cs = cs_new(MODEL, S->M, S->time, S->rtol, &S->log, &terminated, msg, sizeof msg);
+        if (!S->cs) return fail(S, "fmi2ExitInitializationMode: %s", msg);
+        S->terminated = terminated;
+        S->last_successful_time = S->time;
+        S->state = ST_STEP;
+    } else {
+        S->state = ST_EVENT;
+    }
     return fmi2OK;
 }
 
@@ -367,7 +339,7 @@ fmi2Status fmi2Terminate(fmi2Component c)
 {
     Inst *S = (Inst *)c;
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2Terminate", ST_EVENT | ST_CONT);
+    ASSERT_STATE(S, "fmi2Terminate", ST_INITIALIZED);
     S->state = ST_TERMINATED;
     return fmi2OK;
 }
@@ -377,85 +349,55 @@ fmi2Status fmi2Reset(fmi2Component c)
     Inst *S = (Inst *)c;
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2Reset", ST_ANY);
-    reset_values(S);
+    cs_free(S->cs);
+    S->cs = NULL;
+    S->terminated = 0;
+    S->time = 0.0;
+    MODEL->reset(S->M);
     S->state = ST_INSTANTIATED;
     return fmi2OK;
 }
 
 /* ---- getters ------------------------------------------------------------------------------- */
 
+/* common checks of a getter: state, NULL arrays, every value reference of the right type */
+static int get_checks(Inst *S, const char *f, const fmi2ValueReference vr[], size_t nvr, const void *value,
+                      fmu_type type)
+{
+    size_t i;
+    if (!allowed(S, f, ST_READABLE)) return 0;
+    if (nvr == 0) return 1;
+    if (!vr) return fail(S, "%s: argument vr must not be NULL", f), 0;
+    if (!value) return fail(S, "%s: argument value must not be NULL", f), 0;
+    for (i = 0; i < nvr; i++)
+        if (!lookup(S, f, vr[i], type)) return 0;
+    return 1;
+}
+
 fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Real value[])
 {
     Inst *S = (Inst *)c;
-    size_t i;
-    rw_mode m;
-    double x[RW_NX], dx[RW_NX];
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2GetReal", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
-    if (nvr == 0) return fmi2OK;
-    ASSERT_NOT_NULL(S, "fmi2GetReal", vr);
-    ASSERT_NOT_NULL(S, "fmi2GetReal", value);
-    view(S, &m, x);
-    rw_derivatives(&S->P, &S->D, &m, &S->in, x, dx);
-    for (i = 0; i < nvr; i++) {
-        const double *pp;
-        int k;
-        if (!lookup(S, "fmi2GetReal", vr[i], T_Real)) return fmi2Error;
-        if ((pp = real_param(&S->P, vr[i])) != NULL) { value[i] = *pp; continue; }
-        if ((k = state_index(vr[i])) >= 0) { value[i] = x[k]; continue; }
-        switch (vr[i]) {
-        case RW_VR_ag: value[i] = S->in.ag; break;
-        case RW_VR_u_top: value[i] = S->in.u_top; break;
-        case RW_VR_s1: value[i] = rw_s1(&S->P, x); break;
-        case RW_VR_s2: value[i] = rw_s2(&S->P, x); break;
-        case RW_VR_F_top: value[i] = rw_F_top(&S->P, &S->in, x); break;
-        case RW_VR_energy: value[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
-        case RW_VR_der_dq1: value[i] = dx[2]; break;
-        case RW_VR_der_dq2: value[i] = dx[3]; break;
-        default: return fail(S, "fmi2GetReal: value reference %u not handled", (unsigned)vr[i]);
-        }
-    }
+    if (!get_checks(S, "fmi2GetReal", vr, nvr, value, FMU_REAL)) return fmi2Error;
+    if (nvr) MODEL->get_real(S->M, initializing(S), S->time, vr, nvr, value);
     return fmi2OK;
 }
 
 fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Integer value[])
 {
     Inst *S = (Inst *)c;
-    size_t i;
-    rw_mode m;
-    double x[RW_NX];
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2GetInteger", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
-    if (nvr == 0) return fmi2OK;
-    ASSERT_NOT_NULL(S, "fmi2GetInteger", vr);
-    ASSERT_NOT_NULL(S, "fmi2GetInteger", value);
-    view(S, &m, x);
-    for (i = 0; i < nvr; i++) {
-        if (!lookup(S, "fmi2GetInteger", vr[i], T_Integer)) return fmi2Error;
-        switch (vr[i]) {
-        case RW_VR_model: value[i] = S->P.model; break;
-        case RW_VR_hingeLaw: value[i] = S->P.hingeLaw; break;
-        case RW_VR_impacts: value[i] = S->impacts; break;
-        case RW_VR_condition: value[i] = rw_condition(&S->P, &m); break;
-        default: return fail(S, "fmi2GetInteger: value reference %u not handled", (unsigned)vr[i]);
-        }
-    }
+    if (!get_checks(S, "fmi2GetInteger", vr, nvr, value, FMU_INTEGER)) return fmi2Error;
+    if (nvr) MODEL->get_integer(S->M, initializing(S), vr, nvr, value);
     return fmi2OK;
 }
 
 fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, fmi2Boolean value[])
 {
     Inst *S = (Inst *)c;
-    size_t i;
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2GetBoolean", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
-    if (nvr == 0) return fmi2OK;
-    ASSERT_NOT_NULL(S, "fmi2GetBoolean", vr);
-    ASSERT_NOT_NULL(S, "fmi2GetBoolean", value);
-    for (i = 0; i < nvr; i++) {
-        if (!lookup(S, "fmi2GetBoolean", vr[i], T_Boolean)) return fmi2Error;
-        value[i] = S->collapsed ? fmi2True : fmi2False; /* the only Boolean */
-    }
+    if (!get_checks(S, "fmi2GetBoolean", vr, nvr, value, FMU_BOOLEAN)) return fmi2Error;
+    if (nvr) MODEL->get_boolean(S->M, vr, nvr, value); /* fmi2Boolean is int */
     return fmi2OK;
 }
 
@@ -464,7 +406,7 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
     Inst *S = (Inst *)c;
     (void)value;
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2GetString", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
+    ASSERT_STATE(S, "fmi2GetString", ST_READABLE);
     if (nvr == 0) return fmi2OK;
     ASSERT_NOT_NULL(S, "fmi2GetString", vr);
     return fail(S, "fmi2GetString: unknown value reference %u (the model has no String variables)", (unsigned)vr[0]);
@@ -472,41 +414,26 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 
 /* ---- setters ------------------------------------------------------------------------------- */
 
+#define ST_SETTABLE (ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_CONT | ST_STEP)
+
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
 {
     Inst *S = (Inst *)c;
-    size_t i;
+    size_t i, k;
     char msg[256];
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2SetReal", ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_CONT);
+    ASSERT_STATE(S, "fmi2SetReal", ST_SETTABLE);
     if (nvr == 0) return fmi2OK;
     ASSERT_NOT_NULL(S, "fmi2SetReal", vr);
     ASSERT_NOT_NULL(S, "fmi2SetReal", value);
     for (i = 0; i < nvr; i++) {
-        const VarInfo *v = lookup(S, "fmi2SetReal", vr[i], T_Real);
-        double *pp;
-        int k;
+        const fmu_var *v = lookup(S, "fmi2SetReal", vr[i], FMU_REAL);
         if (!v) return fmi2Error;
-        if (!isfinite(value[i]))
-            return fail(S, "fmi2SetReal: %s = %g is not a finite number", v->name, value[i]);
-        if ((pp = real_param(&S->P, vr[i])) != NULL) {
-            if (!(S->state & (ST_INSTANTIATED | ST_INIT)))
-                return fail(S, "fmi2SetReal: parameter %s can only be set before fmi2ExitInitializationMode", v->name);
-            if (rw_check_real_param(v->name, value[i], msg, sizeof msg)) return fail(S, "fmi2SetReal: %s", msg);
-            *pp = value[i];
-            rw_derive(&S->P, &S->D);
-        } else if ((k = state_index(vr[i])) >= 0) {
-            if (!(S->state & (ST_INSTANTIATED | ST_INIT)))
-                return fail(S, "fmi2SetReal: start value of state %s can only be set before fmi2ExitInitializationMode "
-                               "(use fmi2SetContinuousStates)", v->name);
-            S->x[k] = value[i];
-        } else if (vr[i] == RW_VR_ag) {
-            S->in.ag = value[i];
-        } else if (vr[i] == RW_VR_u_top) {
-            S->in.u_top = value[i];
-        } else {
-            return fail(S, "fmi2SetReal: variable %s (causality %s) cannot be set", v->name, v->causality);
-        }
+        if (!isfinite(value[i])) return fail(S, "fmi2SetReal: %s = %g is not a finite number", v->name, value[i]);
+        if (!settable(S, "fmi2SetReal", v)) return fmi2Error;
+        if (MODEL->set_real(S->M, vr[i], value[i], msg, sizeof msg)) return fail(S, "fmi2SetReal: %s", msg);
+        for (k = 0; k < S->n_inputs; k++) /* a new value without a derivative is held over the step */
+            if (S->inputs[k].vr == vr[i]) S->inputs[k].slope = 0.0;
     }
     return fmi2OK;
 }
@@ -517,21 +444,14 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     size_t i;
     char msg[256];
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2SetInteger", ST_INSTANTIATED | ST_INIT | ST_EVENT);
+    ASSERT_STATE(S, "fmi2SetInteger", ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_STEP);
     if (nvr == 0) return fmi2OK;
     ASSERT_NOT_NULL(S, "fmi2SetInteger", vr);
     ASSERT_NOT_NULL(S, "fmi2SetInteger", value);
     for (i = 0; i < nvr; i++) {
-        const VarInfo *v = lookup(S, "fmi2SetInteger", vr[i], T_Integer);
-        if (!v) return fmi2Error;
-        if (vr[i] != RW_VR_model && vr[i] != RW_VR_hingeLaw)
-            return fail(S, "fmi2SetInteger: variable %s (causality %s) cannot be set", v->name, v->causality);
-        if (!(S->state & (ST_INSTANTIATED | ST_INIT)))
-            return fail(S, "fmi2SetInteger: parameter %s can only be set before fmi2ExitInitializationMode", v->name);
-        if (rw_check_int_param(v->name, value[i], msg, sizeof msg)) return fail(S, "fmi2SetInteger: %s", msg);
-        if (vr[i] == RW_VR_model) S->P.model = value[i];
-        else S->P.hingeLaw = value[i];
-        rw_derive(&S->P, &S->D);
+        const fmu_var *v = lookup(S, "fmi2SetInteger", vr[i], FMU_INTEGER);
+        if (!v || !settable(S, "fmi2SetInteger", v)) return fmi2Error;
+        if (MODEL->set_integer(S->M, vr[i], value[i], msg, sizeof msg)) return fail(S, "fmi2SetInteger: %s", msg);
     }
     return fmi2OK;
 }
@@ -542,12 +462,13 @@ fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
     size_t i;
     (void)value;
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2SetBoolean", ST_INSTANTIATED | ST_INIT | ST_EVENT);
+    ASSERT_STATE(S, "fmi2SetBoolean", ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_STEP);
     if (nvr == 0) return fmi2OK;
     ASSERT_NOT_NULL(S, "fmi2SetBoolean", vr);
     for (i = 0; i < nvr; i++) {
-        const VarInfo *v = lookup(S, "fmi2SetBoolean", vr[i], T_Boolean);
+        const fmu_var *v = lookup(S, "fmi2SetBoolean", vr[i], FMU_BOOLEAN);
         if (!v) return fmi2Error;
+        /* no model of this repository has a settable Boolean */
         return fail(S, "fmi2SetBoolean: variable %s (causality %s) cannot be set", v->name, v->causality);
     }
     return fmi2OK;
@@ -558,7 +479,7 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
     Inst *S = (Inst *)c;
     (void)value;
     CHECK_INSTANCE(S);
-    ASSERT_STATE(S, "fmi2SetString", ST_INSTANTIATED | ST_INIT | ST_EVENT);
+    ASSERT_STATE(S, "fmi2SetString", ST_INSTANTIATED | ST_INIT | ST_EVENT | ST_STEP);
     if (nvr == 0) return fmi2OK;
     ASSERT_NOT_NULL(S, "fmi2SetString", vr);
     return fail(S, "fmi2SetString: unknown value reference %u (the model has no String variables)", (unsigned)vr[0]);
@@ -612,38 +533,17 @@ fmi2Status fmi2EnterEventMode(fmi2Component c)
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *info)
 {
     Inst *S = (Inst *)c;
-    rw_event_result r;
+    fmu_event_result r;
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2NewDiscreteStates", ST_EVENT);
     ASSERT_NOT_NULL(S, "fmi2NewDiscreteStates", info);
-    info->newDiscreteStatesNeeded = fmi2False;
-    info->terminateSimulation = fmi2False;
-    info->nominalsOfContinuousStatesChanged = fmi2False;
-    info->valuesOfContinuousStatesChanged = fmi2False;
-    info->nextEventTimeDefined = fmi2False;
-    info->nextEventTime = 0.0;
-    if (S->collapsed) {
-        /* `collapsed` became true at the collapse event (so importers record it); the time event
-         * RW_TERMINATE_DELAY later ends the run */
-        if (S->time >= S->terminate_time - 1e-12 * fmax(1.0, fabs(S->time))) {
-            info->terminateSimulation = fmi2True;
-            log_event(S, "t = %.9g: terminateSimulation after collapse", S->time);
-        } else {
-            info->nextEventTimeDefined = fmi2True;
-            info->nextEventTime = S->terminate_time;
-        }
-        return fmi2OK;
-    }
-    rw_event_update(&S->P, &S->D, &S->mode, &S->in, S->x, &r, physics_log, S);
-    S->impacts += r.impacts;
-    if (r.states_changed) info->valuesOfContinuousStatesChanged = fmi2True;
-    if (r.modes_changed || r.states_changed) info->newDiscreteStatesNeeded = fmi2True; /* confirm */
-    check_collapse(S);
-    if (S->collapsed) {
-        info->newDiscreteStatesNeeded = fmi2False;
-        info->nextEventTimeDefined = fmi2True;
-        info->nextEventTime = S->terminate_time;
-    }
+    MODEL->event_update(S->M, S->time, &S->log, &r);
+    info->newDiscreteStatesNeeded = r.more ? fmi2True : fmi2False;
+    info->terminateSimulation = r.terminate ? fmi2True : fmi2False;
+    info->nominalsOfContinuousStatesChanged = fmi2False; /* the nominals are constants */
+    info->valuesOfContinuousStatesChanged = r.states_changed ? fmi2True : fmi2False;
+    info->nextEventTimeDefined = r.next_time_defined ? fmi2True : fmi2False;
+    info->nextEventTime = r.next_time_defined ? r.next_time : 0.0;
     return fmi2OK;
 }
 
@@ -687,10 +587,10 @@ fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t n
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2SetContinuousStates", ST_CONT);
     ASSERT_NOT_NULL(S, "fmi2SetContinuousStates", x);
-    if (nx != RW_NX) return fail(S, "fmi2SetContinuousStates: nx = %u, expected %d", (unsigned)nx, RW_NX);
+    ASSERT_SIZE(S, "fmi2SetContinuousStates", nx, MODEL->nx, "nx");
     for (i = 0; i < nx; i++)
         if (!isfinite(x[i])) return fail(S, "fmi2SetContinuousStates: state %u = %g is not finite", (unsigned)i, x[i]);
-    memcpy(S->x, x, sizeof S->x);
+    MODEL->set_states(S->M, x);
     return fmi2OK;
 }
 
@@ -701,8 +601,8 @@ fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t nx)
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2GetDerivatives", ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
     ASSERT_NOT_NULL(S, "fmi2GetDerivatives", dx);
-    if (nx != RW_NX) return fail(S, "fmi2GetDerivatives: nx = %u, expected %d", (unsigned)nx, RW_NX);
-    rw_derivatives(&S->P, &S->D, &S->mode, &S->in, S->x, dx);
+    ASSERT_SIZE(S, "fmi2GetDerivatives", nx, MODEL->nx, "nx");
+    MODEL->derivatives(S->M, dx);
     for (i = 0; i < nx; i++)
         if (!isfinite(dx[i])) return fail(S, "fmi2GetDerivatives: derivative %u is not finite at t = %g", (unsigned)i, S->time);
     return fmi2OK;
@@ -711,26 +611,22 @@ fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t nx)
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real z[], size_t nz)
 {
     Inst *S = (Inst *)c;
-    rw_mode m;
-    double x[RW_NX];
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2GetEventIndicators", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
     ASSERT_NOT_NULL(S, "fmi2GetEventIndicators", z);
-    if (nz != RW_NZ) return fail(S, "fmi2GetEventIndicators: ni = %u, expected %d", (unsigned)nz, RW_NZ);
-    view(S, &m, x);
-    rw_event_indicators(&S->P, &S->D, &m, &S->in, x, z);
+    ASSERT_SIZE(S, "fmi2GetEventIndicators", nz, MODEL->nz, "ni");
+    MODEL->event_indicators(S->M, initializing(S), z);
     return fmi2OK;
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx)
 {
     Inst *S = (Inst *)c;
-    rw_mode m;
     CHECK_INSTANCE(S);
     ASSERT_STATE(S, "fmi2GetContinuousStates", ST_INIT | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
     ASSERT_NOT_NULL(S, "fmi2GetContinuousStates", x);
-    if (nx != RW_NX) return fail(S, "fmi2GetContinuousStates: nx = %u, expected %d", (unsigned)nx, RW_NX);
-    view(S, &m, x);
+    ASSERT_SIZE(S, "fmi2GetContinuousStates", nx, MODEL->nx, "nx");
+    MODEL->get_states(S->M, initializing(S), x);
     return fmi2OK;
 }
 
@@ -741,54 +637,135 @@ fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal
     ASSERT_STATE(S, "fmi2GetNominalsOfContinuousStates",
                  ST_INSTANTIATED | ST_EVENT | ST_CONT | ST_TERMINATED | ST_ERROR);
     ASSERT_NOT_NULL(S, "fmi2GetNominalsOfContinuousStates", x_nominal);
-    if (nx != RW_NX) return fail(S, "fmi2GetNominalsOfContinuousStates: nx = %u, expected %d", (unsigned)nx, RW_NX);
-    x_nominal[0] = x_nominal[1] = 0.01;
-    x_nominal[2] = x_nominal[3] = 0.1;
+    ASSERT_SIZE(S, "fmi2GetNominalsOfContinuousStates", nx, MODEL->nx, "nx");
+    MODEL->nominals(x_nominal);
     return fmi2OK;
 }
 
-/* ---- Co-Simulation: not supported (yet) ---------------------------------------------------- */
+/* ---- Co-Simulation ------------------------------------------------------------------------- */
 
+/* First derivatives of Real inputs ramp them over the next step (canInterpolateInputs). */
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                        const fmi2Integer order[], const fmi2Real value[])
 {
-    (void)vr; (void)nvr; (void)order; (void)value;
-    return unsupported(c, "fmi2SetRealInputDerivatives (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    size_t i, k;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2SetRealInputDerivatives", ST_INSTANTIATED | ST_INIT | ST_STEP);
+    if (nvr == 0) return fmi2OK;
+    ASSERT_NOT_NULL(S, "fmi2SetRealInputDerivatives", vr);
+    ASSERT_NOT_NULL(S, "fmi2SetRealInputDerivatives", order);
+    ASSERT_NOT_NULL(S, "fmi2SetRealInputDerivatives", value);
+    for (i = 0; i < nvr; i++) {
+        const fmu_var *v = lookup(S, "fmi2SetRealInputDerivatives", vr[i], FMU_REAL);
+        if (!v) return fmi2Error;
+        for (k = 0; k < S->n_inputs && S->inputs[k].vr != vr[i]; k++) {}
+        if (k == S->n_inputs) return fail(S, "fmi2SetRealInputDerivatives: %s is not an input", v->name);
+        if (order[i] != 1)
+            return fail(S, "fmi2SetRealInputDerivatives: order %d of %s (only first derivatives are used, "
+                           "maxInputDerivativeOrder would be exceeded)", (int)order[i], v->name);
+        if (!isfinite(value[i]))
+            return fail(S, "fmi2SetRealInputDerivatives: der(%s) = %g is not a finite number", v->name, value[i]);
+        S->inputs[k].slope = value[i];
+    }
+    return fmi2OK;
 }
+
 fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
                                         const fmi2Integer order[], fmi2Real value[])
 {
     (void)vr; (void)nvr; (void)order; (void)value;
-    return unsupported(c, "fmi2GetRealOutputDerivatives (Co-Simulation)");
+    return unsupported(c, "fmi2GetRealOutputDerivatives (maxOutputDerivativeOrder is 0)");
 }
-fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean noSetPrior)
+
+fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
+                      fmi2Boolean noSetFMUStatePriorToCurrentCommunicationPoint)
 {
-    (void)t; (void)h; (void)noSetPrior;
-    return unsupported(c, "fmi2DoStep (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    const double t = currentCommunicationPoint, h = communicationStepSize;
+    double t_reached, u;
+    char msg[512];
+    size_t k;
+    int rc;
+    (void)noSetFMUStatePriorToCurrentCommunicationPoint;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2DoStep", ST_STEP);
+    if (!isfinite(t) || !isfinite(h) || h <= 0)
+        return fail(S, "fmi2DoStep: communication point %g and step size %g must be finite, step size > 0", t, h);
+    if (fabs(t - S->time) > 1e-9 * fmax(1.0, fabs(t)))
+        return fail(S, "fmi2DoStep: currentCommunicationPoint = %.17g, but the FMU is at t = %.17g", t, S->time);
+    if (S->terminated) {
+        log_event(S, "fmi2DoStep: the model terminated at t = %.17g; no further steps", S->time);
+        return fmi2Discard;
+    }
+    for (k = 0; k < S->n_inputs; k++) { /* the values the master set, read back from the model */
+        MODEL->get_real(S->M, 0, S->time, &S->inputs[k].vr, 1, &u);
+        S->inputs[k].value = u;
+    }
+    rc = cs_step(S->cs, S->time, h, S->inputs, S->n_inputs, &S->log, &t_reached, msg, sizeof msg);
+    for (k = 0; k < S->n_inputs; k++) S->inputs[k].slope = 0.0; /* derivatives hold for one step */
+    if (rc < 0) return fail(S, "fmi2DoStep: %s", msg);
+    S->time = t_reached;
+    S->last_successful_time = t_reached;
+    if (rc == 1) {
+        S->terminated = 1;
+        log_event(S, "fmi2DoStep: the model terminated the simulation at t = %.17g", t_reached);
+        return fmi2Discard;
+    }
+    return fmi2OK;
 }
-fmi2Status fmi2CancelStep(fmi2Component c) { return unsupported(c, "fmi2CancelStep (Co-Simulation)"); }
+
+fmi2Status fmi2CancelStep(fmi2Component c)
+{
+    return unsupported(c, "fmi2CancelStep (fmi2DoStep never returns fmi2Pending)");
+}
+
 fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *v)
 {
-    (void)s; (void)v;
-    return unsupported(c, "fmi2GetStatus (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2GetStatus", ST_STEP | ST_TERMINATED);
+    ASSERT_NOT_NULL(S, "fmi2GetStatus", v);
+    if (s != fmi2DoStepStatus) return fail(S, "fmi2GetStatus: status kind %d is not a fmi2Status", (int)s);
+    *v = S->terminated ? fmi2Discard : fmi2OK; /* steps are synchronous: never pending */
+    return fmi2OK;
 }
+
 fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *v)
 {
-    (void)s; (void)v;
-    return unsupported(c, "fmi2GetRealStatus (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2GetRealStatus", ST_STEP | ST_TERMINATED);
+    ASSERT_NOT_NULL(S, "fmi2GetRealStatus", v);
+    if (s != fmi2LastSuccessfulTime) return fail(S, "fmi2GetRealStatus: status kind %d is not a Real", (int)s);
+    *v = S->last_successful_time;
+    return fmi2OK;
 }
+
 fmi2Status fmi2GetIntegerStatus(fmi2Component c, const fmi2StatusKind s, fmi2Integer *v)
 {
     (void)s; (void)v;
-    return unsupported(c, "fmi2GetIntegerStatus (Co-Simulation)");
+    return unsupported(c, "fmi2GetIntegerStatus (no Integer status kinds in FMI 2.0)");
 }
+
 fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boolean *v)
 {
-    (void)s; (void)v;
-    return unsupported(c, "fmi2GetBooleanStatus (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2GetBooleanStatus", ST_STEP | ST_TERMINATED);
+    ASSERT_NOT_NULL(S, "fmi2GetBooleanStatus", v);
+    if (s != fmi2Terminated) return fail(S, "fmi2GetBooleanStatus: status kind %d is not a Boolean", (int)s);
+    *v = S->terminated ? fmi2True : fmi2False;
+    return fmi2OK;
 }
+
 fmi2Status fmi2GetStringStatus(fmi2Component c, const fmi2StatusKind s, fmi2String *v)
 {
-    (void)s; (void)v;
-    return unsupported(c, "fmi2GetStringStatus (Co-Simulation)");
+    Inst *S = (Inst *)c;
+    CHECK_INSTANCE(S);
+    ASSERT_STATE(S, "fmi2GetStringStatus", ST_STEP | ST_TERMINATED);
+    ASSERT_NOT_NULL(S, "fmi2GetStringStatus", v);
+    if (s != fmi2PendingStatus) return fail(S, "fmi2GetStringStatus: status kind %d is not a String", (int)s);
+    *v = "";
+    return fmi2OK;
 }

@@ -411,6 +411,22 @@ double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
     }
 }
 
+/* Power of the ground motion on the wall, the rate of work of the inertia load -m ag in the frame
+ * of the ground: dE/dt = P_ground - F_top du_top/dt between impacts (E = rw_energy). */
+double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                       const double x[RW_NX])
+{
+    if (m->closed_b) return 0.0; /* at rest on the base: nothing moves */
+    switch (p->model) {
+    case RW_PARAPET: /* generalised force -(W/g) ag R cos(s alpha - theta) (Housner) */
+        return -(p->W / p->g) * d->R * in->ag * cos(m->side_b * d->alpha - x[0]) * x[2];
+    case RW_SIMPLY_SUPPORTED: /* force -(W/2g) ag on the mid-height displacement D = q1 h/2 */
+        return -(p->W / (2.0 * p->g)) * in->ag * x[2] * p->h / 2.0;
+    default: /* Eq. 3.4: p = pa ag on (dq1, dq2) */
+        return in->ag * (d->pa[0] * x[2] + d->pa[1] * x[3]);
+    }
+}
+
 double rw_s1(const rw_params *p, const double x[RW_NX])
 {
     return x[0] * p->h / 2.0;

@@ -97,6 +97,9 @@ int rw_is_collapsed(const rw_params *p, const rw_derived *d, const rw_mode *m, c
                     const double x[RW_NX]);
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                  const double x[RW_NX]);
+/* Rate of work of the ground motion on the wall (energy bookkeeping). */
+double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                       const double x[RW_NX]);
 /* Outputs */
 double rw_s1(const rw_params *p, const double x[RW_NX]);
 double rw_s2(const rw_params *p, const double x[RW_NX]);

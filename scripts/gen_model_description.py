@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
-"""Generate modelDescription.xml (top level of the repository) from fmu_src/model_variables.h,
-the one source of truth for the FMU's variables.
+"""Generate each FMU's modelDescription.xml from its C variable table, the one source of truth
+for its variables: RockingWall (fmu_src/model_variables.h -> modelDescription.xml at the top level)
+and Diaphragm (fmu_src/diaphragm/diaphragm_variables.h -> fmu_src/diaphragm/modelDescription.xml).
 
-    scripts/gen_model_description.py           # (re)write modelDescription.xml
-    scripts/gen_model_description.py --check   # exit 1 if the committed file differs
-    scripts/gen_model_description.py --stdout  # print it
+    scripts/gen_model_description.py                    # (re)write both
+    scripts/gen_model_description.py --check            # exit 1 if a committed file differs
+    scripts/gen_model_description.py --stdout Diaphragm # print one
 """
 import argparse
 import pathlib
@@ -13,8 +14,28 @@ import sys
 from xml.sax.saxutils import escape
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-HEADER = REPO / "fmu_src" / "model_variables.h"
-OUTPUT = REPO / "modelDescription.xml"
+
+# Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_none.c stands
+# in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
+SHARED_SOURCES = ["fmi2Functions.c", "cs_none.c"]
+MODELS = {
+    "RockingWall": dict(
+        header=REPO / "fmu_src" / "model_variables.h", output=REPO / "modelDescription.xml", prefix="RW",
+        description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
+                    "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
+        sources=["rw_physics.c", "rw_modes.c", "rw_model.c"] + SHARED_SOURCES,
+        log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
+    "Diaphragm": dict(
+        header=REPO / "fmu_src" / "diaphragm" / "diaphragm_variables.h",
+        output=REPO / "fmu_src" / "diaphragm" / "modelDescription.xml", prefix="DG",
+        description="Floor or roof diaphragm as one degree of freedom per metre of wall (mass, stiffness, "
+                    "damping ratio), driven by the ground acceleration and the wall's top force",
+        sources=["diaphragm_model.c"] + SHARED_SOURCES,
+        log_events="Instantiation and Co-Simulation steps"),
+}
+# the defaults of the functions below: RockingWall
+HEADER = MODELS["RockingWall"]["header"]
+OUTPUT = MODELS["RockingWall"]["output"]
 
 FIELDS = ["id", "vr", "name", "type", "causality", "variability", "initial", "start", "unit",
           "nominal", "derivative_of", "description"]
@@ -27,28 +48,32 @@ UNITS = {
     "N/m": {"kg": 1, "s": -2},
     "N/m2": {"kg": 1, "m": -1, "s": -2},
     "m/s2": {"m": 1, "s": -2},
+    "m/s": {"m": 1, "s": -1},
+    "kg/m": {"kg": 1, "m": -1},
+    "W/m": {"kg": 1, "m": 1, "s": -3},
     "J/m": {"kg": 1, "m": 1, "s": -2},
     "rad": {"rad": 1},
     "rad/s": {"rad": 1, "s": -1},
     "rad/s2": {"rad": 1, "s": -2},
 }
 LOG_CATEGORIES = [
-    ("logEvents", "Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
+    ("logEvents", None),  # the model's own description
     ("logStatusWarning", "Warnings (e.g. collapse)"),
     ("logStatusError", "Errors: invalid parameters or inputs, illegal calls"),
 ]
-SOURCE_FILES = ["rw_physics.c", "rw_modes.c", "fmi2Functions.c"]
+SOURCE_FILES = MODELS["RockingWall"]["sources"]
 
 
 def _unquote(tok):
     return tok[1:-1].replace('\\"', '"') if tok.startswith('"') else tok
 
 
-def parse_header(path=HEADER):
-    """Variables (list of dicts, table order), dependencies {id: [names]} and #defines."""
+def parse_header(path=HEADER, prefix="RW"):
+    """Variables (list of dicts, table order), dependencies {id: [names]} and #defines (with the
+    model's prefix replaced by RW_, so RW_GUID etc. for every model)."""
     text = path.read_text()
-    defines = dict(re.findall(r'#define\s+(RW_\w+)\s+("[^"]*"|\d+)\s*$', text, re.M))
-    defines = {k: _unquote(v) for k, v in defines.items()}
+    defines = dict(re.findall(rf'#define\s+({prefix}_\w+)\s+("[^"]*"|\d+)\s*$', text, re.M))
+    defines = {"RW_" + k[len(prefix) + 1:]: _unquote(v) for k, v in defines.items()}
     variables = []
     for line in text.splitlines():
         m = re.match(r'\s*X\((.*)\)\s*\\?\s*$', line)
@@ -79,8 +104,9 @@ def _fmt_start(v):
     return "true" if float(value) != 0 else "false"
 
 
-def generate():
-    variables, deps, defines = parse_header()
+def generate(name="RockingWall"):
+    model = MODELS[name]
+    variables, deps, defines = parse_header(model["header"], model["prefix"])
     index = {v["id"]: i + 1 for i, v in enumerate(variables)}  # 1-based ScalarVariable index
     by_vr = {v["vr"]: v for v in variables}
     by_name = {v["name"]: v for v in variables}
@@ -89,11 +115,10 @@ def generate():
     out = []
     w = out.append
     w('<?xml version="1.0" encoding="UTF-8"?>')
-    w('<!-- Generated by scripts/gen_model_description.py from fmu_src/model_variables.h: do not edit. -->')
-    w('<fmiModelDescription fmiVersion="2.0" modelName="RockingWall"')
+    w(f'<!-- Generated by scripts/gen_model_description.py from {model["header"].relative_to(REPO)}: do not edit. -->')
+    w(f'<fmiModelDescription fmiVersion="2.0" modelName="{name}"')
     w(f'  guid="{defines["RW_GUID"]}"')
-    w('  description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, '
-      'or two rigid bodies with a flexible diaphragm spring at the top (2DOF)"')
+    w(f'  description="{escape(model["description"])}"')
     w('  generationTool="RockingWall scripts/gen_model_description.py" version="0.1.0"')
     w(f'  variableNamingConvention="flat" numberOfEventIndicators="{defines["RW_NUMBER_OF_EVENT_INDICATORS"]}">')
     w(f'  <ModelExchange modelIdentifier="{defines["RW_MODEL_IDENTIFIER"]}" '
@@ -101,10 +126,17 @@ def generate():
       'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="false" '
       'canGetAndSetFMUstate="false" canSerializeFMUstate="false" providesDirectionalDerivative="false">')
     w('    <SourceFiles>')
-    for f in SOURCE_FILES:
+    for f in model["sources"]:
         w(f'      <File name="{f}"/>')
     w('    </SourceFiles>')
     w('  </ModelExchange>')
+    # Co-Simulation: CVODE inside (cs_cvode.c), events located within the step; inputs held or
+    # ramped with their first derivative over a step; any step size
+    w(f'  <CoSimulation modelIdentifier="{defines["RW_MODEL_IDENTIFIER"]}" '
+      'needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" '
+      'canInterpolateInputs="true" maxOutputDerivativeOrder="0" canRunAsynchronuously="false" '
+      'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="false" '
+      'canGetAndSetFMUstate="false" canSerializeFMUstate="false" providesDirectionalDerivative="false"/>')
     w('  <UnitDefinitions>')
     for name in sorted({v["unit"] for v in variables if v["unit"]}):
         exps = UNITS[name]
@@ -112,8 +144,8 @@ def generate():
         w(f'    <Unit name="{name}"><BaseUnit{attrs}/></Unit>')
     w('  </UnitDefinitions>')
     w('  <LogCategories>')
-    for name, desc in LOG_CATEGORIES:
-        w(f'    <Category name="{name}" description="{escape(desc)}"/>')
+    for cat, desc in LOG_CATEGORIES:
+        w(f'    <Category name="{cat}" description="{escape(desc or model["log_events"])}"/>')
     w('  </LogCategories>')
     w('  <DefaultExperiment startTime="0" stopTime="10" tolerance="1e-06"/>')
     w('  <ModelVariables>')
@@ -170,21 +202,27 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true", help="exit 1 if modelDescription.xml is out of date")
     ap.add_argument("--stdout", action="store_true", help="print instead of writing")
+    ap.add_argument("models", nargs="*", metavar="MODEL", help=f"which FMUs: {', '.join(MODELS)} (default: all)")
     args = ap.parse_args(argv)
-    xml = generate()
-    if args.stdout:
-        sys.stdout.write(xml)
-        return 0
-    if args.check:
-        current = OUTPUT.read_text() if OUTPUT.exists() else ""
-        if current != xml:
-            print(f"{OUTPUT} is out of date: run scripts/gen_model_description.py", file=sys.stderr)
-            return 1
-        print(f"{OUTPUT} is up to date")
-        return 0
-    OUTPUT.write_text(xml)
-    print(f"wrote {OUTPUT}")
-    return 0
+    for name in args.models:
+        if name not in MODELS:
+            ap.error(f"unknown model {name!r}: choose from {', '.join(MODELS)}")
+    stale = 0
+    for name in args.models or list(MODELS):
+        xml, output = generate(name), MODELS[name]["output"]
+        if args.stdout:
+            sys.stdout.write(xml)
+        elif args.check:
+            current = output.read_text() if output.exists() else ""
+            if current != xml:
+                print(f"{output} is out of date: run scripts/gen_model_description.py", file=sys.stderr)
+                stale = 1
+            else:
+                print(f"{output} is up to date")
+        else:
+            output.write_text(xml)
+            print(f"wrote {output}")
+    return stale
 
 
 if __name__ == "__main__":

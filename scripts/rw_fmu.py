@@ -91,8 +91,10 @@ def input_table(t, ag, u_top=None):
 
 
 def simulate(fmu, t_end, t_in=None, ag_in=None, rtol=1e-6, output_interval=1e-3,
-             solver="CVode", step_size=None, logger=None, progress=None, **kwargs):
-    """Simulate the FMU from 0 to t_end with fmpy; kwargs are start_values() arguments."""
+             solver="CVode", step_size=None, logger=None, progress=None, fmi_type="ModelExchange", **kwargs):
+    """Simulate the FMU from 0 to t_end with fmpy; kwargs are start_values() arguments.
+    fmi_type "CoSimulation" runs the FMU's own CVODE (fmi2DoStep) with communication steps of
+    output_interval; rtol then goes to fmi2SetupExperiment and `solver` is not used."""
     inputs = None if t_in is None else input_table(np.asarray(t_in), np.asarray(ag_in))
     callback = None
     if progress is not None:
@@ -103,7 +105,7 @@ def simulate(fmu, t_end, t_in=None, ag_in=None, rtol=1e-6, output_interval=1e-3,
         str(fmu), start_time=0.0, stop_time=t_end, solver=solver, step_size=step_size,
         relative_tolerance=rtol, output_interval=output_interval,
         start_values=start_values(**kwargs), input=inputs, output=OUTPUTS,
-        logger=logger, debug_logging=logger is not None, step_finished=callback)
+        logger=logger, debug_logging=logger is not None, step_finished=callback, fmi_type=fmi_type)
     return FmuRun(t=result["time"], s1=result["s1"], s2=result["s2"], F_top=result["F_top"],
                   q1=result["q1"], q2=result["q2"], impacts=int(result["impacts"][-1]),
                   collapsed=bool(result["collapsed"][-1]))

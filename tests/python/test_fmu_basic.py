@@ -35,8 +35,8 @@ class Log:
         return "\n".join(self.messages)
 
 
-def run(fmu, stop_time=10.0, start_values=None, inp=None, logger=None, **kw):
-    return simulate_fmu(str(fmu), stop_time=stop_time, start_values=start_values or {}, input=inp,
+def run(fmu, stop_time=10.0, start_values=None, inp=None, logger=None, fmi_type="ModelExchange", **kw):
+    return simulate_fmu(str(fmu), stop_time=stop_time, start_values=start_values or {}, input=inp, fmi_type=fmi_type,
                         output=["s1", "s2", "F_top", "energy", "impacts", "collapsed", "q1", "q2"],
                         relative_tolerance=1e-6, output_interval=1e-3, logger=logger,
                         debug_logging=logger is not None, **kw)

@@ -1,7 +1,9 @@
-"""modelDescription.xml: generated from fmu_src/model_variables.h, up to date, valid FMI 2.0."""
+"""modelDescription.xml of each FMU: generated from its C variable table, up to date, valid FMI 2.0."""
 import subprocess
 import sys
 import zipfile
+
+import pytest
 
 from fmpy import read_model_description
 from fmpy.validation import validate_fmu
@@ -15,17 +17,29 @@ def test_committed_model_description_is_up_to_date(repo):
     assert result.returncode == 0, result.stderr
 
 
-def test_fmu_validates(rockingwall_fmu):
-    assert validate_fmu(str(rockingwall_fmu)) == []
+@pytest.mark.parametrize("name", list(gen.MODELS))
+def test_fmu_validates(build_dir, name):
+    assert validate_fmu(str(build_dir / f"{name}.fmu")) == []
 
 
-def test_fmu_contains_the_committed_xml_and_sources(repo, rockingwall_fmu):
-    with zipfile.ZipFile(rockingwall_fmu) as zf:
+@pytest.mark.parametrize("name", list(gen.MODELS))
+def test_fmu_contains_the_committed_xml_and_sources(build_dir, name):
+    model = gen.MODELS[name]
+    with zipfile.ZipFile(build_dir / f"{name}.fmu") as zf:
         names = set(zf.namelist())
-        assert zf.read("modelDescription.xml").decode() == (repo / "modelDescription.xml").read_text()
-    assert "binaries/linux64/RockingWall.so" in names
-    for f in gen.SOURCE_FILES + ["rw_physics.h", "model_variables.h"]:
+        assert zf.read("modelDescription.xml").decode() == model["output"].read_text()
+    assert f"binaries/linux64/{name}.so" in names
+    for f in model["sources"] + ["fmu_model.h", "cs_cvode.h", model["header"].name]:
         assert f"sources/{f}" in names
+
+
+@pytest.mark.parametrize("name", list(gen.MODELS))
+def test_model_exchange_and_co_simulation_declared(build_dir, name):
+    md = read_model_description(str(build_dir / f"{name}.fmu"))
+    assert md.modelExchange.modelIdentifier == md.coSimulation.modelIdentifier == name
+    assert md.coSimulation.canHandleVariableCommunicationStepSize
+    assert md.coSimulation.canInterpolateInputs
+    assert md.modelExchange.canBeInstantiatedOnlyOncePerProcess is False
 
 
 def test_variables_match_the_c_table(rockingwall_fmu):
@@ -54,4 +68,14 @@ def test_variables_match_the_c_table(rockingwall_fmu):
     assert xml["Kd"].unit == "N/m2" and xml["W"].unit == "N/m" and xml["F_top"].unit == "N/m"
     assert xml["q1"].nominal == "0.01" or float(xml["q1"].nominal) == 0.01
     assert float(xml["dq1"].nominal) == 0.1
-    assert not md.coSimulation and md.modelExchange.canBeInstantiatedOnlyOncePerProcess is False
+    assert xml["P_ground"].unit == "W/m" and xml["dissipated"].variability == "discrete"
+
+
+def test_diaphragm_variables_match_its_c_table(build_dir):
+    model = gen.MODELS["Diaphragm"]
+    table, _, defines = gen.parse_header(model["header"], model["prefix"])
+    md = read_model_description(str(build_dir / "Diaphragm.fmu"))
+    assert md.guid == defines["RW_GUID"] and md.numberOfEventIndicators == 0
+    assert [(v.name, v.valueReference, v.causality) for v in md.modelVariables] == \
+        [(v["name"], v["vr"], v["causality"]) for v in table]
+    assert [d.variable.derivative.name for d in md.derivatives] == ["u", "v"]

@@ -1,0 +1,266 @@
+/* Co-Simulation inside the FMU with CVODE (SUNDIALS 6, linked statically so that the FMU needs
+ * nothing beyond the C library): see cs_cvode.h.
+ *
+ * Within a communication step the inputs are the master's values, held or ramped with the
+ * derivative it gave. When they differ from where the previous step ended, the right-hand side
+ * has a discontinuity at the communication point: the event indicators are checked there (an
+ * input can open a hinge at rest) and CVODE restarts, as it does after every event, because its
+ * history belongs to the old right-hand side. */
+#include "cs_cvode.h"
+
+#include <cvode/cvode.h>
+#include <math.h>
+#include <nvector/nvector_serial.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#define CS_MAX_EVENT_ROUNDS 1000
+#define CS_MAX_STEPS 1000000L
+
+struct cs_solver {
+    const fmu_model *model;
+    void *M;
+    int nx, nz;
+    SUNContext ctx;
+    void *mem;
+    N_Vector y, abstol;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+    double time;
+    double *z_before, *z_after;
+    /* inputs of the current step, and where the previous step left them */
+    const cs_input *in;
+    size_t n_in;
+    double t_in;
+    cs_input *prev_in;
+    size_t n_prev_in;
+    int next_time_defined;
+    double next_time;
+    cs_counters count;
+    char cvode_msg[256];
+};
+
+static void apply_inputs(cs_solver *s, double t)
+{
+    char unused[8];
+    size_t i;
+    for (i = 0; i < s->n_in; i++)
+        s->model->set_real(s->M, s->in[i].vr, s->in[i].value + s->in[i].slope * (t - s->t_in), unused, sizeof unused);
+}
+
+static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
+{
+    cs_solver *s = (cs_solver *)user;
+    apply_inputs(s, t);
+    s->model->set_states(s->M, N_VGetArrayPointer(y));
+    s->model->derivatives(s->M, N_VGetArrayPointer(ydot));
+    return 0;
+}
+
+static int roots(sunrealtype t, N_Vector y, sunrealtype *g, void *user)
+{
+    cs_solver *s = (cs_solver *)user;
+    apply_inputs(s, t);
+    s->model->set_states(s->M, N_VGetArrayPointer(y));
+    s->model->event_indicators(s->M, 0, g);
+    return 0;
+}
+
+static void cvode_error(int code, const char *module, const char *function, char *msg, void *user)
+{
+    cs_solver *s = (cs_solver *)user;
+    (void)code;
+    (void)module;
+    snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
+}
+
+/* CVODE from the model's states at t, counting the steps of the run that ends here. */
+static int restart(cs_solver *s, double t, char *msg, size_t n)
+{
+    long steps = 0;
+    CVodeGetNumSteps(s->mem, &steps);
+    s->count.steps += steps;
+    s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
+    if (CVodeReInit(s->mem, t, s->y) != CV_SUCCESS) {
+        snprintf(msg, n, "CVodeReInit at t = %.17g: %s", t, s->cvode_msg);
+        return -1;
+    }
+    s->time = t;
+    return 0;
+}
+
+/* The event iteration at te (the model is at te); then CVODE restarts from the model's states. */
+static int handle_event(cs_solver *s, double te, const fmu_logger *log, int *terminated, char *msg, size_t n)
+{
+    fmu_event_result r;
+    int rounds = 0;
+    *terminated = 0;
+    s->next_time_defined = 0;
+    s->count.events++;
+    do {
+        s->model->event_update(s->M, te, log, &r);
+        if (r.terminate) {
+            *terminated = 1;
+            return 0;
+        }
+        if (++rounds > CS_MAX_EVENT_ROUNDS) {
+            snprintf(msg, n, "the event iteration at t = %.17g did not converge in %d rounds", te, CS_MAX_EVENT_ROUNDS);
+            return -1;
+        }
+    } while (r.more);
+    if (r.next_time_defined) {
+        s->next_time_defined = 1;
+        s->next_time = r.next_time;
+    }
+    return restart(s, te, msg, n);
+}
+
+void cs_free(cs_solver *s)
+{
+    if (!s) return;
+    if (s->mem) CVodeFree(&s->mem);
+    if (s->LS) SUNLinSolFree(s->LS);
+    if (s->A) SUNMatDestroy(s->A);
+    if (s->y) N_VDestroy(s->y);
+    if (s->abstol) N_VDestroy(s->abstol);
+    if (s->ctx) SUNContext_Free(&s->ctx);
+    free(s->z_before);
+    free(s->z_after);
+    free(s->prev_in);
+    free(s);
+}
+
+cs_solver *cs_new(const fmu_model *model, void *M, double t_start, double rtol, const fmu_logger *log,
+                  int *terminated, char *msg, size_t n)
+{
+    cs_solver *s = (cs_solver *)calloc(1, sizeof *s);
+    double *a;
+    int i;
+    if (!s) goto oom;
+    s->model = model;
+    s->M = M;
+    s->nx = model->nx;
+    s->nz = model->nz;
+    s->time = t_start;
+    if (rtol <= 0) rtol = 1e-6;
+    s->z_before = (double *)calloc((size_t)s->nz + 1, sizeof(double));
+    s->z_after = (double *)calloc((size_t)s->nz + 1, sizeof(double));
+    s->prev_in = (cs_input *)calloc(model->nvars + 1, sizeof(cs_input));
+    if (!s->z_before || !s->z_after || !s->prev_in) goto oom;
+    if (SUNContext_Create(NULL, &s->ctx) != 0) goto oom;
+    s->y = N_VNew_Serial(s->nx, s->ctx);
+    s->abstol = N_VNew_Serial(s->nx, s->ctx);
+    s->mem = CVodeCreate(CV_BDF, s->ctx);
+    if (!s->y || !s->abstol || !s->mem) goto oom;
+    CVodeSetErrHandlerFn(s->mem, cvode_error, s);
+    model->get_states(M, 0, N_VGetArrayPointer(s->y));
+    if (CVodeInit(s->mem, rhs, t_start, s->y) != CV_SUCCESS) goto cvode_failed;
+    CVodeSetUserData(s->mem, s);
+    a = N_VGetArrayPointer(s->abstol);
+    model->nominals(a);
+    for (i = 0; i < s->nx; i++) a[i] = rtol * (a[i] > 0 ? a[i] : 1.0);
+    CVodeSVtolerances(s->mem, rtol, s->abstol);
+    s->A = SUNDenseMatrix(s->nx, s->nx, s->ctx);
+    s->LS = s->A ? SUNLinSol_Dense(s->y, s->A, s->ctx) : NULL;
+    if (!s->LS || CVodeSetLinearSolver(s->mem, s->LS, s->A) != CV_SUCCESS) goto cvode_failed;
+    CVodeSetMaxNumSteps(s->mem, CS_MAX_STEPS);
+    CVodeSetNoInactiveRootWarn(s->mem);
+    if (s->nz > 0 && CVodeRootInit(s->mem, s->nz, roots) != CV_SUCCESS) goto cvode_failed;
+    /* the initial event iteration a Model-Exchange master would run after initialization */
+    if (handle_event(s, t_start, log, terminated, msg, n) != 0) {
+        cs_free(s);
+        return NULL;
+    }
+    model->event_indicators(M, 0, s->z_before);
+    return s;
+oom:
+    snprintf(msg, n, "out of memory setting up CVODE");
+    cs_free(s);
+    return NULL;
+cvode_failed:
+    snprintf(msg, n, "setting up CVODE failed: %s", s->cvode_msg);
+    cs_free(s);
+    return NULL;
+}
+
+/* Did the master move the inputs away from where the previous step left them? */
+static int inputs_jumped(cs_solver *s, const cs_input *in, size_t n_in, double t)
+{
+    size_t i, k;
+    if (n_in != s->n_prev_in) return 1;
+    for (i = 0; i < n_in; i++) {
+        for (k = 0; k < s->n_prev_in && s->prev_in[k].vr != in[i].vr; k++) {}
+        if (k == s->n_prev_in) return 1;
+        if (in[i].slope != s->prev_in[k].slope ||
+            in[i].value != s->prev_in[k].value + s->prev_in[k].slope * (t - s->t_in))
+            return 1;
+    }
+    return 0;
+}
+
+int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, const fmu_logger *log,
+            double *t_reached, char *msg, size_t n)
+{
+    const double t_end = t + h;
+    const double eps = 1e-12 * fmax(1.0, fabs(t_end));
+    int terminated = 0, i;
+    *t_reached = t;
+    if (inputs_jumped(s, in, n_in, t)) {
+        int crossed = 0;
+        s->in = in;
+        s->n_in = n_in;
+        s->t_in = t;
+        apply_inputs(s, t);
+        s->model->set_states(s->M, N_VGetArrayPointer(s->y));
+        s->model->event_indicators(s->M, 0, s->z_after);
+        for (i = 0; i < s->nz; i++)
+            crossed |= (s->z_before[i] > 0) != (s->z_after[i] > 0);
+        if (crossed) {
+            if (handle_event(s, t, log, &terminated, msg, n) != 0) return -1;
+            if (terminated) return 1;
+        } else if (restart(s, t, msg, n) != 0) {
+            return -1;
+        }
+    }
+    s->in = in;
+    s->n_in = n_in;
+    s->t_in = t;
+    memcpy(s->prev_in, in, n_in * sizeof *in);
+    s->n_prev_in = n_in;
+    while (s->time < t_end - eps) {
+        double t_stop = t_end, tret = s->time;
+        int flag, time_event;
+        if (s->next_time_defined && s->next_time < t_stop) t_stop = fmax(s->next_time, s->time);
+        CVodeSetStopTime(s->mem, t_stop);
+        flag = t_stop > s->time ? CVode(s->mem, t_stop, s->y, &tret, CV_NORMAL) : CV_TSTOP_RETURN;
+        if (flag < 0) {
+            snprintf(msg, n, "CVODE failed at t = %.17g: %s (%s)", tret, CVodeGetReturnFlagName(flag), s->cvode_msg);
+            return -1;
+        }
+        s->time = tret;
+        apply_inputs(s, tret);
+        s->model->set_states(s->M, N_VGetArrayPointer(s->y));
+        time_event = s->next_time_defined && tret >= s->next_time - eps;
+        if (flag == CV_ROOT_RETURN || time_event) {
+            if (handle_event(s, tret, log, &terminated, msg, n) != 0) return -1;
+            *t_reached = tret;
+            if (terminated) return 1;
+        }
+    }
+    s->time = t_end;
+    *t_reached = t_end;
+    s->model->event_indicators(s->M, 0, s->z_before);
+    return 0;
+}
+
+cs_counters cs_get_counters(const cs_solver *s)
+{
+    cs_counters c = s->count;
+    long steps = 0;
+    CVodeGetNumSteps(s->mem, &steps);
+    c.steps += steps;
+    return c;
+}

@@ -1,0 +1,155 @@
+/* Diaphragm: a floor or roof diaphragm as one degree of freedom per metre of wall, the far end of
+ * RockingWall's top spring. In the frame of the ground (u relative to the ground):
+ *
+ *     m (u'' + ag) = F_top - c u' - k u,     c = 2 zeta sqrt(k m)
+ *
+ * where F_top is the force of the wall's spring on the diaphragm (RockingWall.F_top). Energy
+ * bookkeeping: d/dt (m u'^2/2 + k u^2/2) = P_ground + P_wall - P_damping. No events. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "diaphragm_variables.h"
+#include "fmu_model.h"
+
+typedef struct {
+    double m, k, zeta;
+    double ag, F_top;
+    double x[2]; /* u, v */
+} dg_data;
+
+#define FMU_Real FMU_REAL
+#define DG_VAR(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
+    {VR, FMU_##TYPE, NAME, CAUS, INIT},
+static const fmu_var VARS[] = {DG_VARIABLES(DG_VAR)};
+#undef DG_VAR
+
+static double damping(const dg_data *S) { return 2.0 * S->zeta * sqrt(S->k * S->m); }
+
+static double acceleration(const dg_data *S)
+{
+    return (S->F_top - damping(S) * S->x[1] - S->k * S->x[0]) / S->m - S->ag;
+}
+
+static void reset(void *M)
+{
+    dg_data *S = (dg_data *)M;
+    memset(S, 0, sizeof *S);
+#define DG_START(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
+    if (VR == DG_VR_m) S->m = START; \
+    if (VR == DG_VR_k) S->k = START; \
+    if (VR == DG_VR_zeta) S->zeta = START;
+    DG_VARIABLES(DG_START)
+#undef DG_START
+}
+
+static void get_real(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[])
+{
+    const dg_data *S = (const dg_data *)M;
+    const double u = S->x[0], vel = S->x[1];
+    size_t i;
+    (void)initializing;
+    (void)time;
+    for (i = 0; i < n; i++) {
+        switch (vr[i]) {
+        case DG_VR_m: v[i] = S->m; break;
+        case DG_VR_k: v[i] = S->k; break;
+        case DG_VR_zeta: v[i] = S->zeta; break;
+        case DG_VR_ag: v[i] = S->ag; break;
+        case DG_VR_F_top: v[i] = S->F_top; break;
+        case DG_VR_u: v[i] = u; break;
+        case DG_VR_v: v[i] = vel; break;
+        case DG_VR_der_v: v[i] = acceleration(S); break;
+        case DG_VR_energy: v[i] = 0.5 * S->m * vel * vel + 0.5 * S->k * u * u; break;
+        case DG_VR_P_ground: v[i] = -S->m * S->ag * vel; break;
+        case DG_VR_P_damping: v[i] = damping(S) * vel * vel; break;
+        default: v[i] = S->F_top * vel; break; /* DG_VR_P_wall */
+        }
+    }
+}
+
+static void get_integer(void *M, int initializing, const unsigned vr[], size_t n, int v[])
+{
+    (void)M; (void)initializing; (void)vr; (void)n; (void)v; /* no Integer variables */
+}
+
+static void get_boolean(void *M, const unsigned vr[], size_t n, int v[])
+{
+    (void)M; (void)vr; (void)n; (void)v; /* no Boolean variables */
+}
+
+static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
+{
+    dg_data *S = (dg_data *)M;
+    switch (vr) {
+    case DG_VR_m:
+    case DG_VR_k:
+        if (!(value > 0)) {
+            snprintf(msg, n, "%s = %g must be > 0", vr == DG_VR_m ? "m" : "k", value);
+            return 1;
+        }
+        if (vr == DG_VR_m) S->m = value;
+        else S->k = value;
+        return 0;
+    case DG_VR_zeta:
+        if (!(value >= 0 && value <= 1)) {
+            snprintf(msg, n, "zeta = %g must be in [0, 1]", value);
+            return 1;
+        }
+        S->zeta = value;
+        return 0;
+    case DG_VR_ag: S->ag = value; return 0;
+    case DG_VR_F_top: S->F_top = value; return 0;
+    case DG_VR_u: S->x[0] = value; return 0;
+    default: S->x[1] = value; return 0; /* DG_VR_v */
+    }
+}
+
+static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
+{
+    (void)M; (void)vr; (void)value;
+    snprintf(msg, n, "the Diaphragm has no Integer variables");
+    return 1;
+}
+
+static int exit_init(void *M, double time, const fmu_logger *log, char *msg, size_t n)
+{
+    (void)M; (void)time; (void)log; (void)msg; (void)n; /* each parameter was checked when set */
+    return 0;
+}
+
+static void get_states(void *M, int initializing, double x[])
+{
+    (void)initializing;
+    memcpy(x, ((dg_data *)M)->x, sizeof(double) * 2);
+}
+
+static void set_states(void *M, const double x[]) { memcpy(((dg_data *)M)->x, x, sizeof(double) * 2); }
+
+static void derivatives(void *M, double dx[])
+{
+    const dg_data *S = (const dg_data *)M;
+    dx[0] = S->x[1];
+    dx[1] = acceleration(S);
+}
+
+static void event_indicators(void *M, int initializing, double z[]) { (void)M; (void)initializing; (void)z; }
+
+static void nominals(double x[])
+{
+    x[0] = 0.01; /* diaphragm drifts of the order of 1 cm */
+    x[1] = 0.1;
+}
+
+static void event_update(void *M, double time, const fmu_logger *log, fmu_event_result *r)
+{
+    (void)M; (void)time; (void)log;
+    memset(r, 0, sizeof *r); /* no events: nothing changes */
+}
+
+const fmu_model FMU_MODEL = {
+    DG_MODEL_IDENTIFIER, DG_GUID, DG_NUMBER_OF_STATES, DG_NUMBER_OF_EVENT_INDICATORS,
+    VARS, sizeof VARS / sizeof VARS[0], sizeof(dg_data),
+    reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
+    get_states, set_states, derivatives, event_indicators, nominals, event_update,
+};

@@ -1,0 +1,75 @@
+/* The interface between one model and the shared FMI 2.0 wrapper (fmi2Functions.c, cs_cvode.c):
+ * the split of modelica/Reference-FMUs, model callbacks vs one shared API layer.
+ *
+ * A model (rw_model.c, diaphragm/diaphragm_model.c) defines the one object FMU_MODEL below. It
+ * sees no FMI types: the wrapper checks the call sequence, NULL pointers, value references,
+ * types, settability and finiteness, and turns the model's messages into fmi2Error + log. */
+#ifndef FMU_MODEL_H
+#define FMU_MODEL_H
+
+#include <stddef.h>
+
+typedef enum { FMU_REAL, FMU_INTEGER, FMU_BOOLEAN } fmu_type;
+
+/* One row of the model's variable table. The wrapper derives from causality and initial when a
+ * variable may be set (FMI 2.0 section 2.2.7): inputs always, parameters and variables with
+ * initial="exact" (start values of states) until fmi2ExitInitializationMode, others never. */
+typedef struct {
+    unsigned vr;
+    fmu_type type;
+    const char *name;
+    const char *causality;
+    const char *initial;
+} fmu_var;
+
+/* The model logs through this (event messages; the wrapper prefixes nothing). */
+typedef struct {
+    void (*event)(void *ctx, const char *message);   /* category logEvents */
+    void (*warning)(void *ctx, const char *message); /* category logStatusWarning */
+    void *ctx;
+} fmu_logger;
+
+/* What one event-mode update did (fmi2EventInfo without the FMI types). */
+typedef struct {
+    int states_changed;    /* a continuous state jumped (valuesOfContinuousStatesChanged) */
+    int more;              /* call again at the same instant (newDiscreteStatesNeeded) */
+    int terminate;         /* the model asks to end the simulation */
+    int next_time_defined; /* a time event is pending at next_time */
+    double next_time;
+} fmu_event_result;
+
+typedef struct {
+    const char *identifier;
+    const char *guid;
+    int nx, nz;
+    const fmu_var *vars;
+    size_t nvars;
+    size_t data_size; /* bytes of model data the wrapper allocates per instance */
+
+    /* start values of everything (fmi2Instantiate, fmi2Reset) */
+    void (*reset)(void *M);
+    /* Getters for a list of value references already checked to be of the right type.
+     * `initializing` is 1 before fmi2ExitInitializationMode (modes not decided yet). */
+    void (*get_real)(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[]);
+    void (*get_integer)(void *M, int initializing, const unsigned vr[], size_t n, int v[]);
+    void (*get_boolean)(void *M, const unsigned vr[], size_t n, int v[]);
+    /* Setters for one settable variable with a finite value: 0 = stored, else msg says why not. */
+    int (*set_real)(void *M, unsigned vr, double v, char *msg, size_t n);
+    int (*set_integer)(void *M, unsigned vr, int v, char *msg, size_t n);
+    /* fmi2ExitInitializationMode: validate the parameters together, decide the modes.
+     * 0 = ok, else msg says why not. */
+    int (*exit_init)(void *M, double time, const fmu_logger *log, char *msg, size_t n);
+
+    /* continuous-time evaluation (x has nx entries, z nz) */
+    void (*get_states)(void *M, int initializing, double x[]);
+    void (*set_states)(void *M, const double x[]);
+    void (*derivatives)(void *M, double dx[]);
+    void (*event_indicators)(void *M, int initializing, double z[]);
+    void (*nominals)(double x[]);
+    /* one event-mode update at `time` */
+    void (*event_update)(void *M, double time, const fmu_logger *log, fmu_event_result *r);
+} fmu_model;
+
+extern const fmu_model FMU_MODEL;
+
+#endif

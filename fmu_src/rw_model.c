@@ -1,0 +1,288 @@
+/* RockingWall as an FMU model: the callbacks of fmu_model.h over the physics of rw_physics.c and
+ * rw_modes.c. Holds the instance data (parameters, modes, inputs, states, counters); the FMI 2.0
+ * API itself is the shared fmi2Functions.c. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fmu_model.h"
+#include "model_variables.h"
+#include "rw_physics.h"
+
+/* compile-time check: model_variables.h and rw_physics.h agree on the sizes */
+typedef char rw_check_nx[(RW_NUMBER_OF_STATES == RW_NX) ? 1 : -1];
+typedef char rw_check_nz[(RW_NUMBER_OF_EVENT_INDICATORS == RW_NZ) ? 1 : -1];
+
+/* time between the collapse event (where `collapsed` becomes true and is recorded) and the
+ * time event that requests terminateSimulation */
+#define RW_TERMINATE_DELAY 1e-6
+
+typedef struct {
+    rw_params P;
+    rw_derived D;
+    rw_mode mode;
+    rw_input in;
+    double x[RW_NX];
+    int impacts;
+    int collapsed;
+    double terminate_time;
+    double dissipated;
+    /* for messages from the physics: the logger and the time of the current event */
+    const fmu_logger *log;
+    double time;
+} rw_data;
+
+#define FMU_Real FMU_REAL
+#define FMU_Integer FMU_INTEGER
+#define FMU_Boolean FMU_BOOLEAN
+#define RW_VAR(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
+    {VR, FMU_##TYPE, NAME, CAUS, INIT},
+static const fmu_var VARS[] = {RW_VARIABLES(RW_VAR)};
+#undef RW_VAR
+
+static void physics_log(void *ctx, const char *message)
+{
+    rw_data *S = (rw_data *)ctx;
+    char buf[768];
+    if (!S->log || !S->log->event) return;
+    snprintf(buf, sizeof buf, "t = %.9g: %s", S->time, message);
+    S->log->event(S->log->ctx, buf);
+}
+
+static void reset(void *M)
+{
+    rw_data *S = (rw_data *)M;
+    memset(S, 0, sizeof *S);
+    rw_params_default(&S->P);
+    rw_derive(&S->P, &S->D);
+    S->mode.side_b = S->mode.side_m = 1;
+}
+
+/* modes and states as seen by getters: before initialization ends the modes are not decided, so
+ * they are computed on copies from the start values */
+static void view(rw_data *S, int initializing, rw_mode *m, double x[RW_NX])
+{
+    memcpy(x, S->x, sizeof S->x);
+    *m = S->mode;
+    if (initializing) rw_init_modes(&S->P, &S->D, &S->in, x, m, NULL, NULL);
+}
+
+static double *real_param(rw_params *P, unsigned vr)
+{
+    switch (vr) {
+    case RW_VR_h: return &P->h;
+    case RW_VR_b: return &P->b;
+    case RW_VR_W: return &P->W;
+    case RW_VR_psi: return &P->psi;
+    case RW_VR_Kd: return &P->Kd;
+    case RW_VR_er: return &P->er;
+    case RW_VR_g: return &P->g;
+    case RW_VR_delta1Ratio: return &P->delta1Ratio;
+    case RW_VR_delta2A: return &P->delta2A;
+    case RW_VR_delta2B: return &P->delta2B;
+    case RW_VR_hingeSat: return &P->hingeSat;
+    case RW_VR_restRate: return &P->restRate;
+    default: return NULL;
+    }
+}
+
+static int state_index(unsigned vr)
+{
+    switch (vr) {
+    case RW_VR_q1: return 0;
+    case RW_VR_q2: return 1;
+    case RW_VR_dq1: return 2;
+    case RW_VR_dq2: return 3;
+    default: return -1;
+    }
+}
+
+static void get_real(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[])
+{
+    rw_data *S = (rw_data *)M;
+    rw_mode m;
+    double x[RW_NX], dx[RW_NX];
+    size_t i;
+    (void)time;
+    view(S, initializing, &m, x);
+    rw_derivatives(&S->P, &S->D, &m, &S->in, x, dx);
+    for (i = 0; i < n; i++) {
+        const double *pp = real_param(&S->P, vr[i]);
+        const int k = state_index(vr[i]);
+        if (pp) { v[i] = *pp; continue; }
+        if (k >= 0) { v[i] = x[k]; continue; }
+        switch (vr[i]) {
+        case RW_VR_ag: v[i] = S->in.ag; break;
+        case RW_VR_u_top: v[i] = S->in.u_top; break;
+        case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
+        case RW_VR_s2: v[i] = rw_s2(&S->P, x); break;
+        case RW_VR_F_top: v[i] = rw_F_top(&S->P, &S->in, x); break;
+        case RW_VR_energy: v[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
+        case RW_VR_P_ground: v[i] = rw_ground_power(&S->P, &S->D, &m, &S->in, x); break;
+        case RW_VR_dissipated: v[i] = S->dissipated; break;
+        case RW_VR_der_dq1: v[i] = dx[2]; break;
+        case RW_VR_der_dq2: v[i] = dx[3]; break;
+        default: v[i] = NAN; break; /* every Real of the table is handled above */
+        }
+    }
+}
+
+static void get_integer(void *M, int initializing, const unsigned vr[], size_t n, int v[])
+{
+    rw_data *S = (rw_data *)M;
+    rw_mode m;
+    double x[RW_NX];
+    size_t i;
+    view(S, initializing, &m, x);
+    for (i = 0; i < n; i++) {
+        switch (vr[i]) {
+        case RW_VR_model: v[i] = S->P.model; break;
+        case RW_VR_hingeLaw: v[i] = S->P.hingeLaw; break;
+        case RW_VR_impacts: v[i] = S->impacts; break;
+        default: v[i] = rw_condition(&S->P, &m); break; /* RW_VR_condition */
+        }
+    }
+}
+
+static void get_boolean(void *M, const unsigned vr[], size_t n, int v[])
+{
+    size_t i;
+    (void)vr;
+    for (i = 0; i < n; i++) v[i] = ((rw_data *)M)->collapsed; /* the only Boolean */
+}
+
+static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
+{
+    rw_data *S = (rw_data *)M;
+    double *pp = real_param(&S->P, vr);
+    int k;
+    if (pp) {
+        const fmu_var *v = VARS;
+        while (v->vr != vr) v++;
+        if (rw_check_real_param(v->name, value, msg, n)) return 1;
+        *pp = value;
+        rw_derive(&S->P, &S->D);
+    } else if ((k = state_index(vr)) >= 0) {
+        S->x[k] = value;
+    } else if (vr == RW_VR_ag) {
+        S->in.ag = value;
+    } else { /* RW_VR_u_top, the only other settable Real */
+        S->in.u_top = value;
+    }
+    return 0;
+}
+
+static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
+{
+    rw_data *S = (rw_data *)M;
+    const char *name = vr == RW_VR_model ? "model" : "hingeLaw";
+    if (rw_check_int_param(name, value, msg, n)) return 1;
+    if (vr == RW_VR_model) S->P.model = value;
+    else S->P.hingeLaw = value;
+    rw_derive(&S->P, &S->D);
+    return 0;
+}
+
+static void check_collapse(rw_data *S)
+{
+    char buf[512];
+    if (S->collapsed || !rw_is_collapsed(&S->P, &S->D, &S->mode, &S->in, S->x)) return;
+    S->collapsed = 1;
+    S->terminate_time = S->time + RW_TERMINATE_DELAY;
+    if (!S->log || !S->log->warning) return;
+    snprintf(buf, sizeof buf,
+             "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): "
+             "the wall passed its instability point; terminating the simulation",
+             S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1]);
+    S->log->warning(S->log->ctx, buf);
+}
+
+static int exit_init(void *M, double time, const fmu_logger *log, char *msg, size_t n)
+{
+    rw_data *S = (rw_data *)M;
+    if (rw_params_validate(&S->P, msg, n)) return 1;
+    S->log = log;
+    S->time = time;
+    rw_derive(&S->P, &S->D);
+    rw_init_modes(&S->P, &S->D, &S->in, S->x, &S->mode, physics_log, S);
+    S->impacts = 0;
+    S->collapsed = 0;
+    S->dissipated = 0.0;
+    check_collapse(S);
+    return 0;
+}
+
+static void get_states(void *M, int initializing, double x[])
+{
+    rw_mode m;
+    view((rw_data *)M, initializing, &m, x);
+}
+
+static void set_states(void *M, const double x[])
+{
+    memcpy(((rw_data *)M)->x, x, sizeof(double) * RW_NX);
+}
+
+static void derivatives(void *M, double dx[])
+{
+    rw_data *S = (rw_data *)M;
+    rw_derivatives(&S->P, &S->D, &S->mode, &S->in, S->x, dx);
+}
+
+static void event_indicators(void *M, int initializing, double z[])
+{
+    rw_data *S = (rw_data *)M;
+    rw_mode m;
+    double x[RW_NX];
+    view(S, initializing, &m, x);
+    rw_event_indicators(&S->P, &S->D, &m, &S->in, x, z);
+}
+
+static void nominals(double x[])
+{
+    x[0] = x[1] = 0.01; /* rotations of a rocking wall are of the order of 0.01 rad */
+    x[2] = x[3] = 0.1;
+}
+
+static void event_update(void *M, double time, const fmu_logger *log, fmu_event_result *r)
+{
+    rw_data *S = (rw_data *)M;
+    rw_event_result e;
+    double energy_before;
+    memset(r, 0, sizeof *r);
+    S->log = log;
+    S->time = time;
+    if (S->collapsed) {
+        /* `collapsed` became true at the collapse event (so importers record it); the time event
+         * RW_TERMINATE_DELAY later ends the run */
+        if (time >= S->terminate_time - 1e-12 * fmax(1.0, fabs(time))) {
+            r->terminate = 1;
+            physics_log(S, "terminateSimulation after collapse");
+        } else {
+            r->next_time_defined = 1;
+            r->next_time = S->terminate_time;
+        }
+        return;
+    }
+    energy_before = rw_energy(&S->P, &S->D, &S->mode, &S->in, S->x);
+    rw_event_update(&S->P, &S->D, &S->mode, &S->in, S->x, &e, physics_log, S);
+    S->impacts += e.impacts;
+    if (e.states_changed) {
+        r->states_changed = 1;
+        S->dissipated += energy_before - rw_energy(&S->P, &S->D, &S->mode, &S->in, S->x);
+    }
+    r->more = e.modes_changed || e.states_changed; /* confirm at the same instant */
+    check_collapse(S);
+    if (S->collapsed) {
+        r->more = 0;
+        r->next_time_defined = 1;
+        r->next_time = S->terminate_time;
+    }
+}
+
+const fmu_model FMU_MODEL = {
+    RW_MODEL_IDENTIFIER, RW_GUID, RW_NX, RW_NZ,
+    VARS, sizeof VARS / sizeof VARS[0], sizeof(rw_data),
+    reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
+    get_states, set_states, derivatives, event_indicators, nominals, event_update,
+};
