@@ -67,9 +67,14 @@ class CoupledResult(dict):
         work = np.concatenate([[0.0], np.cumsum(0.5 * (power_in[1:] + power_in[:-1]) * np.diff(t))])
         return stored - stored[0] - work + self["wall_dissipated"]
 
-    def ground_work(self):
-        p = self["wall_P_ground"] + self["dia_P_ground"]
+    def _work(self, p):
         return np.concatenate([[0.0], np.cumsum(0.5 * (p[1:] + p[:-1]) * np.diff(self["time"]))])
+
+    def ground_work(self):
+        return self._work(self["wall_P_ground"] + self["dia_P_ground"])
+
+    def damping_loss(self):
+        return self._work(self["dia_P_damping"])
 
 
 def _assemble(t, wall_rows, dia_rows):
@@ -215,7 +220,8 @@ def plot(r, path, title, other=None):
     ax[1].set_ylabel("F_top [kN/m]")
     ax[2].plot(t, r.ground_work(), label="ground work")
     ax[2].plot(t, r["wall_energy"] + r["dia_energy"], label="stored (wall + diaphragm)")
-    ax[2].plot(t, r["wall_dissipated"], label="impacts")
+    ax[2].plot(t, r["wall_dissipated"], label="lost in impacts")
+    ax[2].plot(t, r.damping_loss(), label="lost in diaphragm damping")
     ax[2].plot(t, r.energy_residual(), label="residual")
     ax[2].set_ylabel("energy [J/m]")
     ax[2].set_xlabel("time [s]")
