@@ -18,7 +18,12 @@ static char *trim(char *s)
     return s;
 }
 
-/* A whole token as a finite double, or -1. */
+/* Larger magnitudes are no physical input but a corrupt file, and would overflow inside the
+ * model (1e300 m/s2 gives infinite states) far from the line that caused it. */
+#define INPUT_MAX_ABS 1e100
+#define OUT_OF_RANGE "out of range (not a finite number of magnitude <= 1e100)"
+
+/* A whole token as a double: 0, -1 (not a number), -2 (out of range). */
 static int parse_number(const char *tok, double *out)
 {
     char *end;
@@ -27,8 +32,19 @@ static int parse_number(const char *tok, double *out)
     *out = strtod(tok, &end);
     if (end == tok || *end != '\0') return -1;
     if (errno == ERANGE && fabs(*out) > 1.0) return -2;
-    if (!isfinite(*out)) return -2;
+    if (!isfinite(*out) || fabs(*out) > INPUT_MAX_ABS) return -2;
     return 0;
+}
+
+/* The next comma-separated field of *s (NULL after the last). Unlike strtok, an empty field
+ * stays a field, so "0.1,,2" is reported instead of silently read as "0.1,2". */
+static char *next_field(char **s)
+{
+    char *f = *s, *comma;
+    if (!f) return NULL;
+    comma = strchr(f, ',');
+    if (comma) { *comma = '\0'; *s = comma + 1; } else *s = NULL;
+    return f;
 }
 
 static int grow(input_table *tab, size_t *cap)
@@ -60,9 +76,14 @@ static int check_time(const char *path, long line, const input_table *tab, doubl
     return 0;
 }
 
+/* A line with a NUL or a control character other than white space is not text. */
 static int has_nul(const char *s, ssize_t len)
 {
-    return (ssize_t)strlen(s) != len;
+    for (ssize_t i = 0; i < len; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') || c == 0x7f) return 1;
+    }
+    return 0;
 }
 
 int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
@@ -81,11 +102,11 @@ int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
         if (has_nul(line, len)) { snprintf(err, n, "%s:%ld: binary data, not a CSV text file", path, lineno); goto done; }
         if (*trim(line)) break;
     }
-    if (len < 0) { snprintf(err, n, "%s:%ld: empty file: expected a header 'time,NAME,...'", path, lineno); goto done; }
+    if (len < 0) { snprintf(err, n, "%s: empty file: expected a header 'time,NAME,...'", path); goto done; }
     {
-        char *save = NULL, *tok = strtok_r(trim(line), ",", &save);
+        char *rest = trim(line), *tok;
         size_t count = 0;
-        for (; tok; tok = strtok_r(NULL, ",", &save), count++) {
+        for (tok = next_field(&rest); tok; tok = next_field(&rest), count++) {
             if (count == 0) continue; /* the time column, whatever its name */
             input_column *cols = realloc(tab->cols, (tab->ncols + 1) * sizeof *cols);
             if (!cols) goto oom;
@@ -106,7 +127,7 @@ int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
     }
     /* rows */
     while ((len = getline(&line, &linecap, f)) >= 0) {
-        char *row, *save = NULL, *tok;
+        char *row, *tok;
         size_t col = 0;
         double t = 0.0;
         lineno++;
@@ -114,14 +135,15 @@ int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
         row = trim(line);
         if (!*row) continue;
         if (grow(tab, &cap) != 0) goto oom;
-        for (tok = strtok_r(row, ",", &save); tok; tok = strtok_r(NULL, ",", &save), col++) {
+        for (tok = next_field(&row); tok; tok = next_field(&row), col++) {
             double v;
             int bad;
             if (col > tab->ncols) continue; /* counted, reported below */
             bad = parse_number(trim(tok), &v);
             if (bad) {
-                snprintf(err, n, "%s:%ld: column %zu: '%s' is %s", path, lineno, col + 1, trim(tok),
-                         bad == -2 ? "out of range (not a finite number)" : "not a number");
+                if (!*trim(tok)) snprintf(err, n, "%s:%ld: column %zu is empty", path, lineno, col + 1);
+                else snprintf(err, n, "%s:%ld: column %zu: '%s' is %s", path, lineno, col + 1, trim(tok),
+                              bad == -2 ? OUT_OF_RANGE : "not a number");
                 goto done;
             }
             if (col == 0) t = v;
@@ -168,6 +190,7 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
     FILE *f = fopen(path, "r");
     char *line = NULL;
     size_t linecap = 0;
+    size_t cap = 0;
     ssize_t len;
     long lineno = 0, npts = 0;
     double dt = 0.0;
@@ -187,13 +210,16 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
         goto done;
     }
     if (npts > 100000000L) { snprintf(err, n, "%s:4: NPTS = %ld is too large", path, npts); goto done; }
-    tab->t = malloc((size_t)npts * sizeof *tab->t);
+    if (!isfinite((double)npts * dt) || (double)npts * dt > INPUT_MAX_ABS) {
+        snprintf(err, n, "%s:4: NPTS * DT = %ld * %g is out of range", path, npts, dt);
+        goto done;
+    }
+    /* the arrays grow with the values read: the header alone must not make us allocate */
     tab->cols = calloc(1, sizeof *tab->cols);
-    if (!tab->t || !tab->cols) { snprintf(err, n, "%s: out of memory", path); goto done; }
+    if (!tab->cols) { snprintf(err, n, "%s: out of memory", path); goto done; }
     tab->ncols = 1;
     tab->cols[0].name = strdup(name);
-    tab->cols[0].values = malloc((size_t)npts * sizeof(double));
-    if (!tab->cols[0].values || !tab->cols[0].name) { snprintf(err, n, "%s: out of memory", path); goto done; }
+    if (!tab->cols[0].name) { snprintf(err, n, "%s: out of memory", path); goto done; }
     while ((len = getline(&line, &linecap, f)) >= 0) {
         char *save = NULL, *tok;
         lineno++;
@@ -202,12 +228,16 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
             double v;
             int bad = parse_number(tok, &v);
             if (bad) {
-                snprintf(err, n, "%s:%ld: '%s' is %s", path, lineno, tok,
-                         bad == -2 ? "out of range (not a finite number)" : "not a number");
+                snprintf(err, n, "%s:%ld: '%s' is %s", path, lineno, tok, bad == -2 ? OUT_OF_RANGE : "not a number");
                 goto done;
             }
             if ((long)tab->n >= npts) {
                 snprintf(err, n, "%s:%ld: more values than NPTS = %ld", path, lineno, npts);
+                goto done;
+            }
+            if (grow(tab, &cap) != 0) { snprintf(err, n, "%s:%ld: out of memory", path, lineno); goto done; }
+            if (!isfinite(v * g * scale) || fabs(v * g * scale) > INPUT_MAX_ABS) {
+                snprintf(err, n, "%s:%ld: '%s' times g = %g times the scale %g is out of range", path, lineno, tok, g, scale);
                 goto done;
             }
             tab->t[tab->n] = (double)tab->n * dt;

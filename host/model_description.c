@@ -6,6 +6,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <errno.h>
+#include <unistd.h>
 
 static char *attr(xmlNode *node, const char *name)
 {
@@ -91,11 +93,18 @@ int md_parse(const char *path, model_description *md, char *err, size_t n)
     xmlDoc *doc;
     xmlNode *root, *me, *vars, *ms;
     memset(md, 0, sizeof *md);
+    if (access(path, R_OK) != 0) {
+        snprintf(err, n, "%s: %s (an FMU must contain modelDescription.xml)", path, strerror(errno));
+        return -1;
+    }
     doc = xmlReadFile(path, NULL, XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!doc) {
         const xmlError *e = xmlGetLastError();
+        size_t len;
         snprintf(err, n, "%s:%d: not well-formed XML: %s", path, e ? e->line : 0,
                  e && e->message ? e->message : "parse error");
+        len = strlen(err); /* libxml2 ends its messages with a newline; ours are one line */
+        while (len > 0 && (err[len - 1] == '\n' || err[len - 1] == '\r')) err[--len] = '\0';
         return -1;
     }
     root = xmlDocGetRootElement(doc);

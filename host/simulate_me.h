@@ -11,6 +11,15 @@ typedef struct {
     const char *name, *value;
 } start_value;
 
+/* Peaks without a time history: for every output, max |value| and the last value, taken over the
+ * output rows and every accepted solver step (so a peak between grid points is not missed).
+ * simulate_me allocates the arrays; summary_free (summary.h) releases them. */
+typedef struct {
+    const md_variable **vars; /* outputs, XML order */
+    double *max_abs, *final;  /* NAN for String outputs */
+    size_t n;
+} sim_summary;
+
 typedef struct {
     int adams;              /* 0: BDF, 1: Adams-Moulton */
     double rtol, atol;      /* atol <= 0: rtol * nominal of each state */
@@ -21,7 +30,8 @@ typedef struct {
     const input_table *inputs;
     size_t n_inputs;
     int logging;            /* fmi2SetDebugLogging / logger verbosity */
-    FILE *output;           /* CSV */
+    FILE *output;           /* CSV; NULL: no time history */
+    sim_summary *summary;   /* NULL: none */
     const char *resource_uri;
 } sim_options;
 

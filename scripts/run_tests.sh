@@ -2,7 +2,8 @@
 # Sets everything up (scripts/setup.sh) and runs all tests:
 #   1. the C unit tests (ctest) of the normal build,
 #   2. the same C tests built and run again under AddressSanitizer + UndefinedBehaviorSanitizer,
-#   3. fmi2sim's tests against the sanitizer build (fmi2sim and the FMUs it loads built with ASan),
+#   3. fmpy simulating the sanitizer build of the FMU (ASan runtime preloaded into Python), and
+#      fmi2sim's tests against the sanitizer build (fmi2sim and the FMUs it loads built with ASan),
 #   4. the Python test suite (pytest): reference solver, FMU through fmpy, fmi2sim (also valgrind).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -16,6 +17,9 @@ echo "== C unit tests under AddressSanitizer + UndefinedBehaviorSanitizer (build
 /usr/bin/cmake --build build-asan -j2 > /dev/null
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   /usr/bin/ctest --test-dir build-asan --output-on-failure
+
+echo "== the FMU under AddressSanitizer + UndefinedBehaviorSanitizer, simulated through fmpy"
+RW_ASAN_BUILD_DIR=build-asan .venv/bin/python -m pytest tests/python/test_fmu_asan.py -q -p no:cacheprovider
 
 echo "== fmi2sim under AddressSanitizer + UndefinedBehaviorSanitizer"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 RW_BUILD_DIR=build-asan \

@@ -2,6 +2,7 @@
 solver on RockingWall, and a clear message with a non-zero exit for every kind of bad input."""
 import math
 import os
+import re
 import shutil
 import subprocess
 import zipfile
@@ -181,7 +182,31 @@ CSV_CASES = {
     "unknown_column": ("time,nosuch\n0,0\n", "column 'nosuch' is not a variable"),
     "huge": ("time,ag\n0,0\n0.1,1e999\n", ":3: column 2: '1e999' is out of range"),
     "binary": ("time,ag\n0,0\x00\x01\x02\n", ":2: binary data"),
+    # issue #6: finite but absurd values would overflow inside the model, far from their line
+    "huge_finite": ("time,ag\n0,0\n0.1,1e300\n", ":3: column 2: '1e300' is out of range"),
+    "huge_time": ("time,ag\n0,0\n-1e300,0\n", ":3: column 1: '-1e300' is out of range"),
+    "nan_time": ("time,ag\nnan,0\n", ":2: column 1: 'nan' is out of range"),
+    "inf_value": ("time,ag\n0,inf\n", ":2: column 2: 'inf' is out of range"),
+    "truncated": ("time,ag\n0,0\n0.1,", ":3: column 2 is empty"),
+    "truncated_number": ("time,ag\n0,0\n0.1,1e", ":3: column 2: '1e' is not a number"),
+    "empty_field": ("time,ag\n0,0\n0.1,,1\n", ":3: column 2 is empty"),   # was read as "0.1,1"
+    "header_gap": ("time,,ag\n0,0,0\n", ":1: header column 2 has no name"),
+    "gzip": ("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", ":1: binary data"),
+    "png": ("\x89PNG\r\n\x1a\n\x00\x00", ":1: header names no input column"),
+    "output_column": ("time,s1\n0,0\n", ":1: 's1' is not an input of the model"),
+    "blank_lines_only": ("\n\n  \n", "empty file"),
 }
+
+
+def assert_one_clear_error(proc, *needles):
+    """Non-zero exit, exactly one 'fmi2sim: error:' line holding every needle, no sanitizer report."""
+    assert proc.returncode != 0, proc.stderr
+    errors = [line for line in proc.stderr.splitlines() if line.startswith("fmi2sim: error:")]
+    assert len(errors) == 1, proc.stderr
+    for needle in needles:
+        assert str(needle) in errors[0], (needle, proc.stderr)
+    for report in ("Sanitizer", "runtime error", "Segmentation", "Traceback"):
+        assert report not in proc.stderr, proc.stderr
 
 
 @pytest.mark.parametrize("case", sorted(CSV_CASES))
@@ -190,9 +215,7 @@ def test_csv_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, c
     path = tmp_path / f"{case}.csv"
     path.write_bytes(text.encode("latin-1"))
     proc = run(fmi2sim_exe, rockingwall_fmu, "--input", path, check=False)
-    assert proc.returncode != 0
-    assert str(path) in proc.stderr and message in proc.stderr, proc.stderr
-    assert proc.stderr.count("error:") == 1
+    assert_one_clear_error(proc, path, message)
 
 
 AT2_CASES = {
@@ -200,6 +223,17 @@ AT2_CASES = {
     "npts_mismatch": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 0.2\n", "2 values, the header says NPTS = 3"),
     "non_numeric": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 x 0.3\n", ":5: 'x' is not a number"),
     "truncated": ("a\nb\n", ":3: file ends inside the 4-line AT2 header"),
+    "empty": ("", ":1: file ends inside the 4-line AT2 header"),
+    "binary": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1\x00\x07 0.2\n", ":5: binary data"),
+    "huge": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 1e400 0.3\n", ":5: '1e400' is out of range"),
+    "huge_finite": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 1e300 0.3\n", ":5: '1e300' is out of range"),
+    "nan": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 nan 0.3\n", ":5: 'nan' is out of range"),
+    "dt_zero": ("a\nb\nc\nNPTS=  3, DT=   0 SEC\n0.1 0.2 0.3\n", ":4: expected 'NPTS= N, DT= dt SEC'"),
+    "dt_huge": ("a\nb\nc\nNPTS=  3, DT=   1e308 SEC\n0.1 0.2 0.3\n", ":4: NPTS * DT = 3 * 1e+308 is out of range"),
+    "npts_negative": ("a\nb\nc\nNPTS=  -3, DT=   .02 SEC\n0.1 0.2 0.3\n", ":4: expected 'NPTS= N, DT= dt SEC'"),
+    "npts_too_large": ("a\nb\nc\nNPTS=  999999999, DT=   .02 SEC\n0.1\n", ":4: NPTS = 999999999 is too large"),
+    "npts_claims_more": ("a\nb\nc\nNPTS=  99999999, DT=   .02 SEC\n0.1\n", "1 values, the header says NPTS = 99999999"),
+    "more_than_npts": ("a\nb\nc\nNPTS=  2, DT=   .02 SEC\n0.1 0.2\n0.3\n", ":6: more values than NPTS = 2"),
 }
 
 
@@ -207,9 +241,55 @@ AT2_CASES = {
 def test_at2_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
     text, message = AT2_CASES[case]
     path = tmp_path / f"{case}.AT2"
-    path.write_text(text)
+    path.write_bytes(text.encode("latin-1"))
     proc = run(fmi2sim_exe, rockingwall_fmu, "--ag", path, check=False)
-    assert proc.returncode != 0 and str(path) in proc.stderr and message in proc.stderr, proc.stderr
+    assert_one_clear_error(proc, path, message)
+
+
+def test_at2_scale_that_overflows_is_reported(fmi2sim_exe, rockingwall_fmu, tmp_path):
+    path = tmp_path / "ok.AT2"
+    path.write_text("a\nb\nc\nNPTS=  2, DT=   .0200 SEC\n0.1 0.2\n")
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--ag", path, "--ag-scale", "1e300", check=False)
+    assert_one_clear_error(proc, f"{path}:5:", "is out of range")
+
+
+def repacked(tmp_path, fmu, name, change):
+    """A copy of `fmu` with change(folder) applied to its unpacked files."""
+    d = tmp_path / name
+    with zipfile.ZipFile(fmu) as z:
+        z.extractall(d)
+    change(d)
+    out = tmp_path / f"{name}.fmu"
+    shutil.make_archive(str(out.with_suffix("")), "zip", d)
+    out.with_suffix(".zip").rename(out)
+    return out
+
+
+def test_broken_fmus_name_the_file(fmi2sim_exe, rockingwall_fmu, tmp_path):
+    """An FMU that is empty, cut short, without its binary, with a broken binary or XML, a GUID its
+    binary does not know, or a folder without modelDescription.xml: one error naming it."""
+    so = "binaries/linux64/RockingWall.so"
+    empty = tmp_path / "empty.fmu"
+    empty.write_bytes(b"")
+    cut = tmp_path / "cut.fmu"
+    cut.write_bytes(rockingwall_fmu.read_bytes()[:20000])
+    no_md = tmp_path / "folder"
+    no_md.mkdir()
+    cases = [
+        (empty, "not a valid FMU"),
+        (cut, "not a valid FMU"),
+        (repacked(tmp_path, rockingwall_fmu, "nobin", lambda d: (d / so).unlink()), "cannot load the FMU binary"),
+        (repacked(tmp_path, rockingwall_fmu, "badso", lambda d: (d / so).write_text("not ELF")), "cannot load the FMU binary"),
+        (repacked(tmp_path, rockingwall_fmu, "badxml",
+                  lambda d: (d / "modelDescription.xml").write_text("<fmiModelDescription")), "modelDescription.xml:1: not well-formed XML"),
+        (repacked(tmp_path, rockingwall_fmu, "guid", lambda d: (d / "modelDescription.xml").write_text(
+            re.sub(r'guid="\{[^}]*\}"', 'guid="{00000000-0000-0000-0000-000000000000}"',
+                   (d / "modelDescription.xml").read_text()))), "GUID"),
+        (no_md, "modelDescription.xml: No such file"),
+    ]
+    for fmu, message in cases:
+        proc = run(fmi2sim_exe, fmu, "--stop-time", "0.1", check=False)
+        assert_one_clear_error(proc, fmu, message)
 
 
 def test_fmu_and_option_errors(fmi2sim_exe, ball_fmu, tmp_path):
@@ -256,3 +336,23 @@ def test_valgrind_memcheck_is_clean(fmi2sim_exe, ball_fmu, rockingwall_fmu, tmp_
                                "--output", str(tmp_path / "o.csv")], capture_output=True, text=True, timeout=300)
         assert proc.returncode in (0, 2), proc.stderr[-3000:]   # 2: the intended error exit, 99: memcheck errors
         assert "ERROR SUMMARY: 0 errors" in proc.stderr, proc.stderr[-3000:]
+
+
+def test_summary_gives_peaks_and_final_values_without_time_history(fmi2sim_exe, ball_fmu, tmp_path):
+    """--summary: max |value| and last value of every output; alone it writes no time history."""
+    import json
+    common = ["--set", "h=2", "--set", "e=0.8", "--rtol", "1e-10", "--stop-time", "5"]
+    alone = run(fmi2sim_exe, ball_fmu, *common, "--summary", tmp_path / "alone.json")
+    assert alone.stdout == ""
+    run(fmi2sim_exe, ball_fmu, *common, "--output", tmp_path / "ball.csv", "--summary", tmp_path / "both.json")
+    alone_out = json.loads((tmp_path / "alone.json").read_text())["outputs"]
+    both = json.loads((tmp_path / "both.json").read_text())
+    assert both["outputs"] == alone_out  # the CSV does not change the peaks
+    assert both["end_time"] == 5 and both["terminated_by_model"] is False
+    data = read_csv(tmp_path / "ball.csv")
+    assert set(alone_out) == set(data.dtype.names) - {"time"}
+    assert alone_out["h"]["max_abs"] == 2.0  # dropped from rest at h = 2
+    assert alone_out["v"]["max_abs"] == pytest.approx(math.sqrt(2 * 9.81 * 2.0), rel=1e-7)  # first impact
+    for name, s in alone_out.items():
+        assert s["final"] == pytest.approx(data[name][-1], rel=1e-11, abs=1e-11)
+        assert s["max_abs"] >= np.max(np.abs(data[name])) * (1 - 1e-11)  # steps as well as rows

