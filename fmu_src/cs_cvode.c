@@ -39,7 +39,6 @@ struct cs_solver {
     size_t n_prev_in;
     int next_time_defined;
     double next_time;
-    cs_counters count;
     char cvode_msg[256];
 };
 
@@ -77,12 +76,9 @@ static void cvode_error(int code, const char *module, const char *function, char
     snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
 }
 
-/* CVODE from the model's states at t, counting the steps of the run that ends here. */
+/* CVODE from the model's states at t. */
 static int restart(cs_solver *s, double t, char *msg, size_t n)
 {
-    long steps = 0;
-    CVodeGetNumSteps(s->mem, &steps);
-    s->count.steps += steps;
     s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
     if (CVodeReInit(s->mem, t, s->y) != CV_SUCCESS) {
         snprintf(msg, n, "CVodeReInit at t = %.17g: %s", t, s->cvode_msg);
@@ -99,7 +95,6 @@ static int handle_event(cs_solver *s, double te, const fmu_logger *log, int *ter
     int rounds = 0;
     *terminated = 0;
     s->next_time_defined = 0;
-    s->count.events++;
     do {
         s->model->event_update(s->M, te, log, &r);
         if (r.terminate) {
@@ -254,13 +249,4 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     *t_reached = t_end;
     s->model->event_indicators(s->M, 0, s->z_before);
     return 0;
-}
-
-cs_counters cs_get_counters(const cs_solver *s)
-{
-    cs_counters c = s->count;
-    long steps = 0;
-    CVodeGetNumSteps(s->mem, &steps);
-    c.steps += steps;
-    return c;
 }

@@ -17,10 +17,6 @@ typedef struct {
     double value, slope;
 } cs_input;
 
-typedef struct {
-    long steps, events; /* totals over all steps, for the log */
-} cs_counters;
-
 /* After fmi2ExitInitializationMode: the event iteration at t_start, then CVODE set up from the
  * model's states. rtol <= 0 means 1e-6; absolute tolerances are rtol * nominal. NULL on failure
  * with msg filled. *terminated is set when the model ends the run already at t_start. */
@@ -33,7 +29,5 @@ void cs_free(cs_solver *s);
  * or = t + h), -1 on failure (msg says why). */
 int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, const fmu_logger *log,
             double *t_reached, char *msg, size_t n);
-
-cs_counters cs_get_counters(const cs_solver *s);
 
 #endif

@@ -25,10 +25,3 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     snprintf(msg, n, "Co-Simulation is not available in this binary");
     return -1;
 }
-
-cs_counters cs_get_counters(const cs_solver *s)
-{
-    cs_counters c = {0, 0};
-    (void)s;
-    return c;
-}

@@ -7,22 +7,8 @@
 #include <string.h>
 
 #include "fmi2Functions.h"
+#include "fmi2_test_logger.h"
 #include "model_variables.h"
-
-static char last_log[4096];
-static int n_logs = 0;
-
-
-static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
-                   fmi2String message, ...)
-{
-    (void)env;
-    snprintf(last_log, sizeof last_log, "[%s] %s: %s", category, name, message);
-    n_logs++;
-    if (status >= fmi2Error) printf("  log: %s\n", last_log);
-}
-
-static const fmi2CallbackFunctions CB = {logger, calloc, free, NULL, NULL};
 
 static fmi2Component inst(const char *name)
 {
@@ -35,13 +21,6 @@ static fmi2Status init_inst(fmi2Component c)
     if (s == fmi2OK) s = fmi2EnterInitializationMode(c);
     if (s == fmi2OK) s = fmi2ExitInitializationMode(c);
     return s;
-}
-
-static double get_real(fmi2Component c, fmi2ValueReference vr)
-{
-    double v = NAN;
-    fmi2GetReal(c, &vr, 1, &v);
-    return v;
 }
 
 static void test_two_instances(void)
@@ -207,6 +186,7 @@ static void test_simulation(void)
 
 int main(void)
 {
+    print_errors = 1;
     test_two_instances();
     test_wrong_guid();
     test_bad_values();

@@ -10,22 +10,8 @@
 #include <string.h>
 
 #include "fmi2Functions.h"
+#include "fmi2_test_logger.h"
 #include "model_variables.h"
-
-static char last_msg[2048];
-static fmi2Status last_status;
-static int n_logs;
-
-static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
-                   fmi2String message, ...)
-{
-    (void)env; (void)name; (void)category;
-    snprintf(last_msg, sizeof last_msg, "%s", message ? message : "(null)");
-    last_status = status;
-    n_logs++;
-}
-
-static const fmi2CallbackFunctions CB = {logger, calloc, free, NULL, NULL};
 
 /* ---- the states of Model Exchange and how to reach them ---------------------------------- */
 enum { S_INST, S_INIT, S_EVENT, S_CONT, S_TERM, S_ERROR, N_STATES };
@@ -114,7 +100,7 @@ static void expect_error(fmi2Component c, fmi2Status got, const char *what, cons
 {
     CHECK(got == fmi2Error, "%s: status %d, expected fmi2Error", what, (int)got);
     CHECK(n_logs > 0 && last_status == fmi2Error, "%s: no error logged", what);
-    CHECK(!must_mention || strstr(last_msg, must_mention), "%s: log '%s' does not mention '%s'", what, last_msg,
+    CHECK(!must_mention || strstr(last_message, must_mention), "%s: log '%s' does not mention '%s'", what, last_message,
           must_mention);
     if (c) {
         CHECK(fmi2Reset(c) == fmi2OK, "%s: fmi2Reset after the error", what);
@@ -154,7 +140,7 @@ static void test_every_call_in_an_allowed_state_succeeds(void)
             if (!(API[f].allowed & B(s)) || s == S_ERROR) continue;
             c = in_state(s);
             st = API[f].call(c);
-            CHECK(st == fmi2OK, "%s in %s: status %d (%s)", API[f].name, STATE_NAMES[s], (int)st, last_msg);
+            CHECK(st == fmi2OK, "%s in %s: status %d (%s)", API[f].name, STATE_NAMES[s], (int)st, last_message);
             fmi2FreeInstance(c);
         }
 }
@@ -235,16 +221,16 @@ static void test_instantiate_arguments(void)
     no_logger.logger = NULL;
     n_logs = 0;
     CHECK(fmi2Instantiate(NULL, fmi2ModelExchange, RW_GUID, "", &CB, fmi2False, fmi2False) == NULL, "NULL name");
-    CHECK(n_logs == 1 && last_status == fmi2Error && strstr(last_msg, "instanceName"), "NULL name: log '%s'", last_msg);
+    CHECK(n_logs == 1 && last_status == fmi2Error && strstr(last_message, "instanceName"), "NULL name: log '%s'", last_message);
     n_logs = 0;
     CHECK(fmi2Instantiate("", fmi2ModelExchange, RW_GUID, "", &CB, fmi2False, fmi2False) == NULL, "empty name");
-    CHECK(n_logs == 1 && strstr(last_msg, "instanceName"), "empty name: log '%s'", last_msg);
+    CHECK(n_logs == 1 && strstr(last_message, "instanceName"), "empty name: log '%s'", last_message);
     n_logs = 0;
     CHECK(fmi2Instantiate("x", fmi2ModelExchange, NULL, "", &CB, fmi2False, fmi2False) == NULL, "NULL GUID");
-    CHECK(n_logs == 1 && strstr(last_msg, "GUID"), "NULL GUID: log '%s'", last_msg);
+    CHECK(n_logs == 1 && strstr(last_message, "GUID"), "NULL GUID: log '%s'", last_message);
     n_logs = 0;
     CHECK(fmi2Instantiate("x", fmi2ModelExchange, "{1631bb30-%s%n}", "", &CB, fmi2False, fmi2False) == NULL, "format GUID");
-    CHECK(n_logs == 1 && !strchr(last_msg, '%'), "a GUID with %% reaches the logger as a format: '%s'", last_msg);
+    CHECK(n_logs == 1 && !strchr(last_message, '%'), "a GUID with %% reaches the logger as a format: '%s'", last_message);
     CHECK(fmi2Instantiate("x", fmi2ModelExchange, RW_GUID, "", &no_logger, fmi2False, fmi2False) == NULL, "no logger");
     {   /* fmuResourceLocation is optional for this FMU (it has no resources): NULL is accepted */
         fmi2Component c = fmi2Instantiate("x", fmi2ModelExchange, RW_GUID, NULL, &CB, fmi2False, fmi2False);

@@ -209,15 +209,6 @@ def assert_one_clear_error(proc, *needles):
         assert report not in proc.stderr, proc.stderr
 
 
-@pytest.mark.parametrize("case", sorted(CSV_CASES))
-def test_csv_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
-    text, message = CSV_CASES[case]
-    path = tmp_path / f"{case}.csv"
-    path.write_bytes(text.encode("latin-1"))
-    proc = run(fmi2sim_exe, rockingwall_fmu, "--input", path, check=False)
-    assert_one_clear_error(proc, path, message)
-
-
 AT2_CASES = {
     "bad_header": ("a\nb\nc\nno numbers here\n0.1 0.2\n", ":4: expected 'NPTS= N, DT= dt SEC'"),
     "npts_mismatch": ("a\nb\nc\nNPTS=  3, DT=   .0200 SEC\n0.1 0.2\n", "2 values, the header says NPTS = 3"),
@@ -237,12 +228,16 @@ AT2_CASES = {
 }
 
 
-@pytest.mark.parametrize("case", sorted(AT2_CASES))
-def test_at2_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
-    text, message = AT2_CASES[case]
-    path = tmp_path / f"{case}.AT2"
+# (option, file suffix, cases) of the two readers of input files
+READERS = [("--input", ".csv", CSV_CASES), ("--ag", ".AT2", AT2_CASES)]
+
+
+@pytest.mark.parametrize("option,suffix,case", [(o, x, c) for o, x, cases in READERS for c in sorted(cases)])
+def test_input_file_errors_name_file_and_line(fmi2sim_exe, rockingwall_fmu, tmp_path, option, suffix, case):
+    text, message = (CSV_CASES if suffix == ".csv" else AT2_CASES)[case]
+    path = tmp_path / f"{case}{suffix}"
     path.write_bytes(text.encode("latin-1"))
-    proc = run(fmi2sim_exe, rockingwall_fmu, "--ag", path, check=False)
+    proc = run(fmi2sim_exe, rockingwall_fmu, option, path, check=False)
     assert_one_clear_error(proc, path, message)
 
 
