@@ -1,6 +1,7 @@
-/* RockingWall: the one source of truth for the FMU's variables.
- * scripts/gen_model_description.py generates modelDescription.xml from this file; fmi2Functions.c
- * uses the same table for value references, types and settability.
+/* RockingWall: the one source of truth for the FMU's variables other than the parameters (those
+ * are the table of rw_parameters.h, listed first in modelDescription.xml).
+ * scripts/gen_model_description.py generates modelDescription.xml from the two tables;
+ * fmi2Functions.c uses the same tables for value references, types and settability.
  *
  * RW_VARIABLES(X) lists one X(...) per line with the fields
  *   X(ID, VR, NAME, TYPE, CAUSALITY, VARIABILITY, INITIAL, START, UNIT, NOMINAL, DERIVATIVE_OF, DESCRIPTION)
@@ -10,27 +11,15 @@
 #ifndef RW_MODEL_VARIABLES_H
 #define RW_MODEL_VARIABLES_H
 
+#include "rw_parameters.h"
+
 #define RW_MODEL_IDENTIFIER "RockingWall"
 #define RW_GUID "{1631bb30-f128-4b07-ae72-de0576cbb789}"
 #define RW_NUMBER_OF_STATES 4
-#define RW_NUMBER_OF_EVENT_INDICATORS 5
+#define RW_NUMBER_OF_EVENT_INDICATORS 8
 
 /* clang-format off */
 #define RW_VARIABLES(X) \
-X(h,           1, "h",           Real,    "parameter", "fixed",      "exact",      2.5,    "m",      0,    0,  "Wall height (> 0)") \
-X(b,           2, "b",           Real,    "parameter", "fixed",      "exact",      0.15,   "m",      0,    0,  "Wall thickness (> 0, < h)") \
-X(W,           3, "W",           Real,    "parameter", "fixed",      "exact",      6622,   "N/m",    0,    0,  "Wall weight per metre of wall (> 0)") \
-X(psi,         4, "psi",         Real,    "parameter", "fixed",      "exact",      0,      "1",      0,    0,  "Overburden ratio Wd/W1 (>= 0)") \
-X(Kd,          5, "Kd",          Real,    "parameter", "fixed",      "exact",      1e6,    "N/m2",   0,    0,  "Top spring stiffness per metre of wall, N/m per m (>= 0)") \
-X(er,          6, "er",          Real,    "parameter", "fixed",      "exact",      0.86,   "1",      0,    0,  "Coefficient of restitution at base impacts, in [0, 1]") \
-X(g,           7, "g",           Real,    "parameter", "fixed",      "exact",      9.81,   "m/s2",   0,    0,  "Gravity (> 0)") \
-X(delta1Ratio, 8, "delta1Ratio", Real,    "parameter", "fixed",      "exact",      0.05,   "1",      0,    0,  "Delta_1/Delta_u (Eq. 5.1), in (0, 1)") \
-X(delta2A,     9, "delta2A",     Real,    "parameter", "fixed",      "exact",      0.92,   "1",      0,    0,  "Delta_2 = delta2A*Delta_1 + delta2B*Delta_u (Eq. 5.2)") \
-X(delta2B,    10, "delta2B",     Real,    "parameter", "fixed",      "exact",      0.21,   "1",      0,    0,  "See delta2A; must give Delta_1 < Delta_2 < Delta_u") \
-X(hingeSat,   11, "hingeSat",    Real,    "parameter", "fixed",      "exact",      2.0,    "1",      0,    0,  "2DOF semi-rigid hinge moments saturate at mid-height displacement hingeSat*Delta_1 (> 0)") \
-X(restRate,   12, "restRate",    Real,    "parameter", "fixed",      "exact",      1e-5,   "rad/s",  0,    0,  "Rigid hinges close when the relative rate after an impact/switch is below this (> 0)") \
-X(model,      13, "model",       Integer, "parameter", "fixed",      "exact",      3,      "",       0,    0,  "1 parapet, 2 simplySupported, 3 flexibleTop") \
-X(hingeLaw,   14, "hingeLaw",    Integer, "parameter", "fixed",      "exact",      3,      "",       0,    0,  "1 rigid, 2 semiRigidPaper, 3 semiRigidHinge") \
 X(ag,         20, "ag",          Real,    "input",     "continuous", "",           0,      "m/s2",   0,    0,  "Ground acceleration, positive toward +x") \
 X(u_top,      21, "u_top",       Real,    "input",     "continuous", "",           0,      "m",      0,    0,  "Displacement of the diaphragm end of the top spring relative to the ground") \
 X(s1,         30, "s1",          Real,    "output",    "continuous", "calculated", 0,      "m",      0,    0,  "Mid-height displacement q1*h/2") \
@@ -52,8 +41,10 @@ X(der_dq2,    45, "der(dq2)",    Real,    "local",     "continuous", "calculated
 
 /* value references as an enum: RW_VR_h, RW_VR_q1, ... */
 #define RW_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) RW_VR_##ID = VR,
-enum { RW_VARIABLES(RW_VR_ENUM) RW_VR_MAX_PLUS_ONE_DUMMY };
+#define RW_VR_PARAM_ENUM(ID, VR, TYPE, UNIT, DEF, LO, HI, DESC) RW_VR_##ID = VR,
+enum { RW_PARAMETERS(RW_VR_PARAM_ENUM) RW_VARIABLES(RW_VR_ENUM) RW_VR_MAX_PLUS_ONE_DUMMY };
 #undef RW_VR_ENUM
+#undef RW_VR_PARAM_ENUM
 
 /* Continuous states in the order of fmi2GetContinuousStates (x = q1, q2, dq1, dq2). */
 #define RW_STATE_VRS {RW_VR_q1, RW_VR_q2, RW_VR_dq1, RW_VR_dq2}

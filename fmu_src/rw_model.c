@@ -35,10 +35,12 @@ typedef struct {
 #define FMU_Real FMU_REAL
 #define FMU_Integer FMU_INTEGER
 #define FMU_Boolean FMU_BOOLEAN
+#define RW_PARAM_VAR(ID, VR, TYPE, UNIT, DEF, LO, HI, DESC) {VR, FMU_##TYPE, #ID, "parameter", "exact"},
 #define RW_VAR(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
     {VR, FMU_##TYPE, NAME, CAUS, INIT},
-static const fmu_var VARS[] = {RW_VARIABLES(RW_VAR)};
+static const fmu_var VARS[] = {RW_PARAMETERS(RW_PARAM_VAR) RW_VARIABLES(RW_VAR)};
 #undef RW_VAR
+#undef RW_PARAM_VAR
 
 static void physics_log(void *ctx, const char *message)
 {
@@ -67,25 +69,6 @@ static void view(rw_data *S, int initializing, rw_mode *m, double x[RW_NX])
     if (initializing) rw_init_modes(&S->P, &S->D, &S->in, x, m, NULL, NULL);
 }
 
-static double *real_param(rw_params *P, unsigned vr)
-{
-    switch (vr) {
-    case RW_VR_h: return &P->h;
-    case RW_VR_b: return &P->b;
-    case RW_VR_W: return &P->W;
-    case RW_VR_psi: return &P->psi;
-    case RW_VR_Kd: return &P->Kd;
-    case RW_VR_er: return &P->er;
-    case RW_VR_g: return &P->g;
-    case RW_VR_delta1Ratio: return &P->delta1Ratio;
-    case RW_VR_delta2A: return &P->delta2A;
-    case RW_VR_delta2B: return &P->delta2B;
-    case RW_VR_hingeSat: return &P->hingeSat;
-    case RW_VR_restRate: return &P->restRate;
-    default: return NULL;
-    }
-}
-
 static int state_index(unsigned vr)
 {
     switch (vr) {
@@ -107,9 +90,9 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
     view(S, initializing, &m, x);
     rw_derivatives(&S->P, &S->D, &m, &S->in, x, dx);
     for (i = 0; i < n; i++) {
-        const double *pp = real_param(&S->P, vr[i]);
+        const rw_param_info *param = rw_param_by_vr(vr[i]);
         const int k = state_index(vr[i]);
-        if (pp) { v[i] = *pp; continue; }
+        if (param) { v[i] = rw_param_get(&S->P, param); continue; }
         if (k >= 0) { v[i] = x[k]; continue; }
         switch (vr[i]) {
         case RW_VR_ag: v[i] = S->in.ag; break;
@@ -135,12 +118,10 @@ static void get_integer(void *M, int initializing, const unsigned vr[], size_t n
     size_t i;
     view(S, initializing, &m, x);
     for (i = 0; i < n; i++) {
-        switch (vr[i]) {
-        case RW_VR_model: v[i] = S->P.model; break;
-        case RW_VR_hingeLaw: v[i] = S->P.hingeLaw; break;
-        case RW_VR_impacts: v[i] = S->impacts; break;
-        default: v[i] = rw_condition(&S->P, &m); break; /* RW_VR_condition */
-        }
+        const rw_param_info *param = rw_param_by_vr(vr[i]);
+        if (param) v[i] = (int)rw_param_get(&S->P, param);
+        else if (vr[i] == RW_VR_impacts) v[i] = S->impacts;
+        else v[i] = rw_condition(&S->P, &m); /* RW_VR_condition */
     }
 }
 
@@ -154,13 +135,10 @@ static void get_boolean(void *M, const unsigned vr[], size_t n, int v[])
 static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
 {
     rw_data *S = (rw_data *)M;
-    double *pp = real_param(&S->P, vr);
+    const rw_param_info *param = rw_param_by_vr(vr);
     int k;
-    if (pp) {
-        const fmu_var *v = VARS;
-        while (v->vr != vr) v++;
-        if (rw_check_real_param(v->name, value, msg, n)) return 1;
-        *pp = value;
+    if (param) {
+        if (rw_param_set(&S->P, param, value, msg, n)) return 1;
         rw_derive(&S->P, &S->D);
     } else if ((k = state_index(vr)) >= 0) {
         S->x[k] = value;
@@ -175,10 +153,7 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
 static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
 {
     rw_data *S = (rw_data *)M;
-    const char *name = vr == RW_VR_model ? "model" : "hingeLaw";
-    if (rw_check_int_param(name, value, msg, n)) return 1;
-    if (vr == RW_VR_model) S->P.model = value;
-    else S->P.hingeLaw = value;
+    if (rw_param_set(&S->P, rw_param_by_vr(vr), value, msg, n)) return 1; /* the only settable Integers */
     rw_derive(&S->P, &S->D);
     return 0;
 }
@@ -186,14 +161,18 @@ static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
 static void check_collapse(rw_data *S)
 {
     char buf[512];
-    if (S->collapsed || !rw_is_collapsed(&S->P, &S->D, &S->mode, &S->in, S->x)) return;
+    int reason;
+    if (S->collapsed) return;
+    reason = rw_collapse_reason(&S->P, &S->D, &S->mode, &S->in, S->x);
+    if (reason == RW_STANDING) return;
     S->collapsed = 1;
     S->terminate_time = S->time + RW_TERMINATE_DELAY;
     if (!S->log || !S->log->warning) return;
     snprintf(buf, sizeof buf,
-             "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): "
-             "the wall passed its instability point; terminating the simulation",
-             S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1]);
+             "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): %s; terminating the simulation",
+             S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1],
+             reason == RW_PAST_INSTABILITY ? "the wall passed its instability point"
+                                           : "a body turned past its toppling limit 2b/h");
     S->log->warning(S->log->ctx, buf);
 }
 

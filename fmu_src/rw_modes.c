@@ -46,15 +46,15 @@ static void set_offsets(const rw_derived *d, rw_mode *m, const double x[RW_NX])
 
 static void slave(const rw_params *p, double x[RW_NX])
 {
-    if (p->model == RW_PARAPET) { x[1] = x[0]; x[3] = x[2]; }
-    else if (p->model == RW_SIMPLY_SUPPORTED) { x[1] = -x[0]; x[3] = -x[2]; }
+    if (p->support == RW_PARAPET) { x[1] = x[0]; x[3] = x[2]; }
+    else if (p->support == RW_SIMPLY_SUPPORTED) { x[1] = -x[0]; x[3] = -x[2]; }
 }
 
 static void close_base(const rw_params *p, rw_mode *m, double x[RW_NX])
 {
     m->closed_b = 1;
     x[0] = x[2] = 0.0;
-    if (p->model != RW_FLEXIBLE_TOP || m->closed_m) x[1] = x[3] = 0.0;
+    if (p->support != RW_FLEXIBLE_TOP || m->closed_m) x[1] = x[3] = 0.0;
 }
 
 static void close_mid(rw_mode *m, double x[RW_NX])
@@ -133,7 +133,7 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
     else if (rigid) m->closed_b = 1;
     else need_acc = 1;
     /* mid hinge (flexibleTop): rotation x = q2 - q1 */
-    if (p->model == RW_FLEXIBLE_TOP) {
+    if (p->support == RW_FLEXIBLE_TOP) {
         const double xr = x[1] - x[0], dxr = x[3] - x[2];
         if (xr != 0.0) m->side_m = sgni(xr);
         else if (dxr != 0.0) m->side_m = sgni(dxr);
@@ -181,7 +181,7 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
     }
 
     /* mid hinge (flexibleTop): x = q2 - q1 crossing 0 = switch of condition, no energy loss */
-    if (p->model == RW_FLEXIBLE_TOP && !(rigid && m->closed_m)) {
+    if (p->support == RW_FLEXIBLE_TOP && !(rigid && m->closed_m)) {
         const double xr = x[1] - x[0], dxr = x[3] - x[2];
         if (crossed(m->side_m, xr, dxr, d)) {
             const int eff = -m->side_m;

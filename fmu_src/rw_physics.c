@@ -1,5 +1,5 @@
 /* RockingWall physics: parameters, derived quantities and the equations of motion.
- * Equation numbers "Eq. 3.x" are the paper's (shared/paper.md); the contract is docs/model.md.
+ * Equation numbers "Eq. 3.x" are the paper's; the contract is docs/model.md.
  * Discrete mode logic (impacts, switches, rigid rest / closed-hinge states) is in rw_modes.c. */
 #include "rw_physics.h"
 
@@ -8,75 +8,15 @@
 #include <string.h>
 
 static double sgn(double v) { return (v > 0.0) - (v < 0.0); }
-static double sat1(double z) { return z > 1.0 ? 1.0 : (z < -1.0 ? -1.0 : z); }
 
 /* ---- parameters ---------------------------------------------------------------------------- */
 
-void rw_params_default(rw_params *p)
-{
-    p->model = RW_FLEXIBLE_TOP;
-    p->hingeLaw = RW_SEMI_RIGID_HINGE;
-    p->h = 2.5;
-    p->b = 0.15;
-    p->W = 6622.0;
-    p->psi = 0.0;
-    p->Kd = 1e6;
-    p->er = 0.86;
-    p->g = 9.81;
-    p->delta1Ratio = 0.05;
-    p->delta2A = 0.92;
-    p->delta2B = 0.21;
-    p->hingeSat = 2.0;
-    p->restRate = 1e-5;
-}
-
-int rw_check_real_param(const char *name, double v, char *msg, size_t n)
-{
-    const char *rule = NULL;
-    if (!isfinite(v)) {
-        rule = "must be a finite number";
-    } else if (!strcmp(name, "h") || !strcmp(name, "b") || !strcmp(name, "W") || !strcmp(name, "g") ||
-               !strcmp(name, "hingeSat") || !strcmp(name, "restRate")) {
-        if (!(v > 0.0)) rule = "must be > 0";
-    } else if (!strcmp(name, "psi") || !strcmp(name, "Kd")) {
-        if (!(v >= 0.0)) rule = "must be >= 0";
-    } else if (!strcmp(name, "er")) {
-        if (!(v >= 0.0 && v <= 1.0)) rule = "must be in [0, 1]";
-    } else if (!strcmp(name, "delta1Ratio")) {
-        if (!(v > 0.0 && v < 1.0)) rule = "must be in (0, 1)";
-    }
-    if (rule) {
-        snprintf(msg, n, "invalid parameter %s = %g: %s", name, v, rule);
-        return 1;
-    }
-    return 0;
-}
-
-int rw_check_int_param(const char *name, int v, char *msg, size_t n)
-{
-    if (!strcmp(name, "model") && (v < RW_PARAPET || v > RW_FLEXIBLE_TOP)) {
-        snprintf(msg, n, "invalid parameter model = %d: must be 1 (parapet), 2 (simplySupported) or 3 (flexibleTop)", v);
-        return 1;
-    }
-    if (!strcmp(name, "hingeLaw") && (v < RW_RIGID || v > RW_SEMI_RIGID_HINGE)) {
-        snprintf(msg, n, "invalid parameter hingeLaw = %d: must be 1 (rigid), 2 (semiRigidPaper) or 3 (semiRigidHinge)", v);
-        return 1;
-    }
-    return 0;
-}
-
 int rw_params_validate(const rw_params *p, char *msg, size_t n)
 {
-    const struct { const char *name; double v; } reals[] = {
-        {"h", p->h}, {"b", p->b}, {"W", p->W}, {"psi", p->psi}, {"Kd", p->Kd}, {"er", p->er},
-        {"g", p->g}, {"delta1Ratio", p->delta1Ratio}, {"delta2A", p->delta2A},
-        {"delta2B", p->delta2B}, {"hingeSat", p->hingeSat}, {"restRate", p->restRate}};
     size_t i;
     rw_derived d;
-    for (i = 0; i < sizeof reals / sizeof reals[0]; i++)
-        if (rw_check_real_param(reals[i].name, reals[i].v, msg, n)) return 1;
-    if (rw_check_int_param("model", p->model, msg, n)) return 1;
-    if (rw_check_int_param("hingeLaw", p->hingeLaw, msg, n)) return 1;
+    for (i = 0; i < RW_NUMBER_OF_PARAMETERS; i++)
+        if (rw_param_check(&RW_PARAM_INFO[i], rw_param_get(p, &RW_PARAM_INFO[i]), msg, n)) return 1;
     if (!(p->b < p->h)) {
         snprintf(msg, n, "invalid parameter b = %g: must be < h = %g", p->b, p->h);
         return 1;
@@ -89,6 +29,13 @@ int rw_params_validate(const rw_params *p, char *msg, size_t n)
                  p->delta1Ratio, p->delta2A, p->delta2B, d.D1, d.D2, d.Du);
         return 1;
     }
+    if (!(p->hingeSat * d.D1 < d.Du)) {
+        snprintf(msg, n,
+                 "invalid parameters hingeSat = %g, delta1Ratio = %g: the hinges would saturate at hingeSat*Delta_1 = %g m, "
+                 "beyond Delta_u = %g m (need hingeSat*delta1Ratio < 1)",
+                 p->hingeSat, p->delta1Ratio, p->hingeSat * d.D1, d.Du);
+        return 1;
+    }
     return 0;
 }
 
@@ -97,6 +44,7 @@ void rw_derive(const rw_params *p, rw_derived *d)
     const double h = p->h, b = p->b, g = p->g, Kd = p->Kd;
     const double hg = h * h / g;
     memset(d, 0, sizeof *d);
+    d->h = h;
     d->W1 = p->W / 2.0;
     d->Wd = p->psi * d->W1;
     /* Table 5.1 (Doherty) */
@@ -130,43 +78,27 @@ void rw_derive(const rw_params *p, rw_derived *d)
     d->alpha = atan2(d->Bp, d->Hp);
     d->p2 = 3.0 * g / (4.0 * d->R);
     d->zscale = p->W * h;
+    d->q_topple = 2.0 * b / h;
     d->tiny = 1e-10 * b / h;
+}
+
+static const rw_hinge_law *law(const rw_params *p)
+{
+    return rw_hinge_law_of(p->hingeLaw);
 }
 
 int rw_is_rigid(const rw_params *p)
 {
-    return p->model == RW_PARAPET || p->hingeLaw == RW_RIGID;
+    return p->support == RW_PARAPET || law(p)->set_valued;
 }
 
 /* ---- forces -------------------------------------------------------------------------------- */
 
-/* Q = (-cap_b*mu_b + cap_m*mu_m, -cap_m*mu_m): generalised hinge moments (A_i, B_i of Eq. 3.5-3.8
- * corrected per MODEL.md) for open hinges. */
-void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double q[2], double Q[2])
+/* Q(q) of the open hinges, from the law (docs/model.md "Hinge laws"). */
+void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2])
 {
-    const double x = q[1] - q[0], ty = d->theta_y;
-    double mu_b, mu_m;
-    switch (p->hingeLaw) {
-    case RW_RIGID: /* mu = sign, taken from the discrete sides (set-valued at 0) */
-        mu_b = m->side_b;
-        mu_m = m->side_m;
-        break;
-    case RW_SEMI_RIGID_PAPER: {
-        /* Fig. 4.1/4.2: Q1 = A_c*min(1,|q1|/ty), Q2 = B_c*min(1,|q2|/ty), A_c, B_c of the current
-         * condition. A_c = -cap_b*s_b + cap_m*s_m; since min(1,|q1|/ty)*sign(q1) = sat(q1/ty) the
-         * base part is written with sat() (identical for s_b = sign(q1), continuous at q1 = 0). */
-        const double r1 = fmin(1.0, fabs(q[0]) / ty), r2 = fmin(1.0, fabs(q[1]) / ty);
-        Q[0] = -d->cap_b * sat1(q[0] / ty) + d->cap_m * m->side_m * r1;
-        Q[1] = -d->cap_m * m->side_m * r2;
-        return;
-    }
-    default: /* semiRigidHinge: each hinge saturates on its own rotation */
-        mu_b = sat1(q[0] / ty);
-        mu_m = sat1(x / ty);
-        break;
-    }
-    Q[0] = -d->cap_b * mu_b + d->cap_m * mu_m;
-    Q[1] = -d->cap_m * mu_m;
+    double J[2][2];
+    law(p)->moments(d, m->side_b, m->side_m, x, x + 2, Q, J);
 }
 
 /* Doherty's 1DOF resisting force F(D) (Fig. 5.2). */
@@ -174,7 +106,7 @@ double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, 
 {
     const double a = fabs(D);
     double f;
-    if (p->hingeLaw == RW_RIGID) /* rigid line, sign from the active side (linear through 0) */
+    if (law(p)->set_valued) /* rigid line, sign from the active side (linear through 0) */
         return -d->Fr * m->side_b + d->Fr * D / d->Du;
     if (a <= d->D1) f = d->Fi * a / d->D1;
     else if (a <= d->D2) f = d->Fi;
@@ -216,7 +148,7 @@ void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, c
     dx[0] = x[2];
     dx[1] = x[3];
     dx[2] = dx[3] = 0.0;
-    switch (p->model) {
+    switch (p->support) {
     case RW_PARAPET: { /* Housner: theta'' = -p^2 [sin(s a - theta) + (ag/g) cos(s a - theta)] */
         const double th = x[0], s = m->side_b;
         double a;
@@ -270,8 +202,8 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 {
     double F[2];
     *f_b = *f_m = 0.0;
-    if (p->model == RW_PARAPET) { *f_b = -in->ag; return; }
-    if (p->model == RW_SIMPLY_SUPPORTED) { *f_b = -p->W * in->ag / (2.0 * p->g); return; }
+    if (p->support == RW_PARAPET) { *f_b = -in->ag; return; }
+    if (p->support == RW_SIMPLY_SUPPORTED) { *f_b = -p->W * in->ag / (2.0 * p->g); return; }
     load(d, in, F);
     if (m->closed_b && m->closed_m) {
         *f_b = F[0] + F[1];
@@ -288,9 +220,16 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 /* capacities matching rw_closed_forces */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cb, double *cm)
 {
-    if (p->model == RW_PARAPET) { *cb = p->g * tan(d->alpha); *cm = 1.0; }
-    else if (p->model == RW_SIMPLY_SUPPORTED) { *cb = d->Fr; *cm = 1.0; }
+    if (p->support == RW_PARAPET) { *cb = p->g * tan(d->alpha); *cm = 1.0; }
+    else if (p->support == RW_SIMPLY_SUPPORTED) { *cb = d->Fr; *cm = 1.0; }
     else { *cb = d->cap_b; *cm = d->cap_m; }
+}
+
+/* Sides from the signs of the rotations themselves (the tracked side where a rotation is 0), so
+ * that for the rigid law -q.Q = cap_b|q1| + cap_m|x| >= 0 (docs/model.md "Collapse"). */
+static int side_of(double z, int tracked)
+{
+    return z > 0.0 ? 1 : (z < 0.0 ? -1 : tracked);
 }
 
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
@@ -298,26 +237,10 @@ double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, 
 {
     const double q1 = x[0], q2 = x[1];
     const double Kq1 = d->K[0][0] * q1 + d->K[0][1] * q2, Kq2 = d->K[1][0] * q1 + d->K[1][1] * q2;
-    double qQ;
+    double Q[2], J[2][2];
     (void)in; /* the spring counts as if the diaphragm held still (docs/model.md "Collapse") */
-    if (p->hingeLaw == RW_RIGID) { /* q.Q = -cap_b|q1| - cap_m|x| for mu = sign (continuous form) */
-        qQ = -d->cap_b * fabs(q1) - d->cap_m * fabs(q2 - q1);
-    } else {
-        double Q[2];
-        rw_hinge_Q(p, d, m, x, Q);
-        qQ = q1 * Q[0] + q2 * Q[1];
-    }
-    return q1 * Kq1 + q2 * Kq2 - qQ;
-}
-
-static int outside_elastic_range(const rw_params *p, const rw_derived *d, const double x[RW_NX])
-{
-    const double q1 = fabs(x[0]), q2 = fabs(x[1]), xr = fabs(x[1] - x[0]);
-    switch (p->hingeLaw) {
-    case RW_RIGID: return q1 > d->tiny || q2 > d->tiny;
-    case RW_SEMI_RIGID_PAPER: return fmax(q1, q2) > d->theta_y;
-    default: return fmax(q1, xr) > d->theta_y;
-    }
+    law(p)->moments(d, side_of(q1, m->side_b), side_of(q2 - q1, m->side_m), x, x + 2, Q, J);
+    return q1 * Kq1 + q2 * Kq2 - (q1 * Q[0] + q2 * Q[1]);
 }
 
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
@@ -336,21 +259,21 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
     {
         const double eps_q = RW_EPS_Q(d), eps_f = RW_EPS_F;
         z[RW_Z_BASE] = (rigid && m->closed_b) ? 1.0 - fabs(f_b) / cb + eps_f : m->side_b * x[0] + fmax(eps_q, m->zoff_b);
-        if (p->model == RW_FLEXIBLE_TOP)
+        if (p->support == RW_FLEXIBLE_TOP)
             z[RW_Z_MID] = (rigid && m->closed_m) ? 1.0 - fabs(f_m) / cm + eps_f : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
     }
     /* breakpoints of the hinge laws */
-    if (p->model == RW_SIMPLY_SUPPORTED && !rigid) {
-        z[RW_Z_BREAK1] = fabs(x[0]) - 2.0 * d->D1 / p->h;
-        z[RW_Z_BREAK2] = fabs(x[0]) - 2.0 * d->D2 / p->h;
-    } else if (p->model == RW_FLEXIBLE_TOP && !rigid) {
-        z[RW_Z_BREAK1] = fabs(x[0]) - d->theta_y;
-        z[RW_Z_BREAK2] = (p->hingeLaw == RW_SEMI_RIGID_PAPER ? fabs(x[1]) : fabs(x[1] - x[0])) - d->theta_y;
+    if (p->support == RW_SIMPLY_SUPPORTED && !rigid) {
+        z[RW_Z_BREAK] = fabs(x[0]) - 2.0 * d->D1 / p->h;
+        z[RW_Z_BREAK + 1] = fabs(x[0]) - 2.0 * d->D2 / p->h;
+    } else if (p->support == RW_FLEXIBLE_TOP) {
+        law(p)->breakpoints(d, x, z + RW_Z_BREAK);
+        z[RW_Z_TOPPLE] = 1.0 - fmax(fabs(x[0]), fabs(x[1])) / d->q_topple;
     }
     /* collapse */
-    if (p->model == RW_PARAPET) {
+    if (p->support == RW_PARAPET) {
         z[RW_Z_COLLAPSE] = 1.0 - fabs(x[0]) / d->alpha;
-    } else if (p->model == RW_SIMPLY_SUPPORTED) {
+    } else if (p->support == RW_SIMPLY_SUPPORTED) {
         z[RW_Z_COLLAPSE] = 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
     } else {
         /* G(q)/|q|^2 (clipped): scale-free, +large near q = 0 for rigid hinges, root where G = 0 */
@@ -364,26 +287,25 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
     }
 }
 
-int rw_is_collapsed(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
-                    const double x[RW_NX])
+int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                       const double x[RW_NX])
 {
-    if (p->model == RW_PARAPET) return fabs(x[0]) >= d->alpha;
-    if (p->model == RW_SIMPLY_SUPPORTED) return fabs(x[0] * p->h / 2.0) >= d->Du;
-    return outside_elastic_range(p, d, x) && rw_collapse_G(p, d, m, in, x) <= 0.0;
-}
-
-/* phi(z) = ty*Phi(z/ty), Phi(u) = u^2/2 (|u| <= 1), |u| - 1/2 otherwise */
-static double phi_sat(double z, double ty)
-{
-    const double u = fabs(z) / ty;
-    return ty * (u <= 1.0 ? 0.5 * u * u : u - 0.5);
+    int past;
+    if (p->support == RW_PARAPET) return fabs(x[0]) >= d->alpha ? RW_PAST_INSTABILITY : RW_STANDING;
+    if (p->support == RW_SIMPLY_SUPPORTED)
+        return fabs(x[0] * p->h / 2.0) >= d->Du ? RW_PAST_INSTABILITY : RW_STANDING;
+    past = !law(p)->elastic(d, x) && rw_collapse_G(p, d, m, in, x) <= 0.0;
+    if (past) return RW_PAST_INSTABILITY;
+    /* a guard on states the linearised model cannot describe (an importer's unstable integrator
+     * may reach them): no body turns past the point where its weight passes over its pivot */
+    return fmax(fabs(x[0]), fabs(x[1])) >= d->q_topple ? RW_PAST_TOPPLING_LIMIT : RW_STANDING;
 }
 
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                  const double x[RW_NX])
 {
     const double q1 = x[0], q2 = x[1], v1 = x[2], v2 = x[3];
-    switch (p->model) {
+    switch (p->support) {
     case RW_PARAPET: {
         const double s = m->closed_b ? 1.0 : m->side_b;
         return 0.5 * (4.0 / 3.0) * (p->W / p->g) * d->R * d->R * v1 * v1 +
@@ -392,7 +314,7 @@ double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
     case RW_SIMPLY_SUPPORTED: {
         const double D = fabs(q1 * p->h / 2.0), dD = v1 * p->h / 2.0;
         double V;
-        if (p->hingeLaw == RW_RIGID) V = d->Fr * (D - D * D / (2.0 * d->Du));
+        if (law(p)->set_valued) V = d->Fr * (D - D * D / (2.0 * d->Du));
         else if (D <= d->D1) V = d->Fi * D * D / (2.0 * d->D1);
         else if (D <= d->D2) V = d->Fi * d->D1 / 2.0 + d->Fi * (D - d->D1);
         else V = d->Fi * d->D1 / 2.0 + d->Fi * (d->D2 - d->D1) +
@@ -403,10 +325,7 @@ double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
         const double T = 0.5 * (d->M[0][0] * v1 * v1 + 2.0 * d->M[0][1] * v1 * v2 + d->M[1][1] * v2 * v2);
         const double U = 0.5 * (d->K[0][0] * q1 * q1 + 2.0 * d->K[0][1] * q1 * q2 + d->K[1][1] * q2 * q2) -
                          d->fu * in->u_top * (q1 + q2) + 0.5 * p->Kd * in->u_top * in->u_top;
-        double Vh;
-        if (p->hingeLaw == RW_RIGID) Vh = d->cap_b * fabs(q1) + d->cap_m * fabs(q2 - q1);
-        else Vh = d->cap_b * phi_sat(q1, d->theta_y) + d->cap_m * phi_sat(q2 - q1, d->theta_y);
-        return T + U + Vh;
+        return T + U + law(p)->potential(d, x);
     }
     }
 }
@@ -417,7 +336,7 @@ double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m
                        const double x[RW_NX])
 {
     if (m->closed_b) return 0.0; /* at rest on the base: nothing moves */
-    switch (p->model) {
+    switch (p->support) {
     case RW_PARAPET: /* generalised force -(W/g) ag R cos(s alpha - theta) (Housner) */
         return -(p->W / p->g) * d->R * in->ag * cos(m->side_b * d->alpha - x[0]) * x[2];
     case RW_SIMPLY_SUPPORTED: /* force -(W/2g) ag on the mid-height displacement D = q1 h/2 */
@@ -434,21 +353,21 @@ double rw_s1(const rw_params *p, const double x[RW_NX])
 
 double rw_s2(const rw_params *p, const double x[RW_NX])
 {
-    if (p->model == RW_PARAPET) return x[0] * p->h;
-    if (p->model == RW_SIMPLY_SUPPORTED) return 0.0;
+    if (p->support == RW_PARAPET) return x[0] * p->h;
+    if (p->support == RW_SIMPLY_SUPPORTED) return 0.0;
     return (x[0] + x[1]) * p->h / 2.0;
 }
 
 double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX])
 {
-    if (p->model != RW_FLEXIBLE_TOP) return 0.0;
+    if (p->support != RW_FLEXIBLE_TOP) return 0.0;
     return p->Kd * (rw_s2(p, x) - in->u_top);
 }
 
 int rw_condition(const rw_params *p, const rw_mode *m)
 {
     if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) return 0;
-    if (p->model != RW_FLEXIBLE_TOP) return m->side_b > 0 ? 1 : 2;
+    if (p->support != RW_FLEXIBLE_TOP) return m->side_b > 0 ? 1 : 2;
     if (m->side_b > 0) return m->side_m < 0 ? 1 : 3;
     return m->side_m > 0 ? 2 : 4;
 }

@@ -11,29 +11,31 @@
 
 #include <stddef.h>
 
-enum { RW_PARAPET = 1, RW_SIMPLY_SUPPORTED = 2, RW_FLEXIBLE_TOP = 3 };
-enum { RW_RIGID = 1, RW_SEMI_RIGID_PAPER = 2, RW_SEMI_RIGID_HINGE = 3 };
+#include "rw_parameters.h"
 
-#define RW_NX 4 /* q1, q2, dq1, dq2 */
+/* values of the parameter `support` (rw_parameters.h) */
+enum { RW_PARAPET = 1, RW_SIMPLY_SUPPORTED = 2, RW_FLEXIBLE_TOP = 3 };
+/* values of the parameter `hingeLaw`; each law is one entry of rw_hinge_laws.c */
+enum { RW_RIGID = 1, RW_SEMI_RIGID_PAPER = 2, RW_SEMI_RIGID_HINGE = 3, RW_DOHERTY_HINGE = 4 };
+
+#define RW_NX 4     /* q1, q2, dq1, dq2 */
+#define RW_NBREAK 4 /* breakpoint indicators of a hinge law: base 1, base 2, mid 1, mid 2 */
 
 /* Event indicator layout (continuous functions in continuous-time mode; values 1 = unused). */
 enum {
     RW_Z_BASE = 0,     /* base hinge open: side_b*q1 + eps (impact); closed: 1 - |f_b|/cap + eps (opening) */
     RW_Z_MID = 1,      /* flexibleTop mid open: side_m*(q2-q1) + eps (switch); closed: 1 - |f_m|/cap_m + eps */
-    RW_Z_BREAK1 = 2,   /* breakpoint: 2DOF semi-rigid |q1|-theta_y; 1DOF trilinear |q1|-2*Delta_1/h */
-    RW_Z_BREAK2 = 3,   /* breakpoint: hinge |x|-theta_y; paper |q2|-theta_y; 1DOF |q1|-2*Delta_2/h */
-    RW_Z_COLLAPSE = 4, /* > 0 while stable: parapet 1-|theta|/alpha, 1DOF 1-|D|/Delta_u, 2DOF G(q)/|q|^2 */
-    RW_NZ = 5
+    RW_Z_BREAK = 2,    /* RW_NBREAK breakpoints of the hinge law (kinks of Q(q)), see rw_hinge_law */
+    RW_Z_COLLAPSE = RW_Z_BREAK + RW_NBREAK, /* > 0 while stable: parapet 1-|theta|/alpha, 1DOF 1-|D|/Delta_u, 2DOF G(q)/|q|^2 */
+    RW_Z_TOPPLE,       /* 2DOF: 1 - max(|q1|, |q2|)/(2b/h), the geometric toppling limit of a body */
+    RW_NZ
 };
 
-typedef struct {
-    int model;    /* RW_PARAPET .. RW_FLEXIBLE_TOP */
-    int hingeLaw; /* RW_RIGID .. RW_SEMI_RIGID_HINGE */
-    double h, b, W, psi, Kd, er, g;
-    double delta1Ratio, delta2A, delta2B, hingeSat, restRate;
-} rw_params;
+/* why a wall is taken as collapsed (rw_collapse_reason) */
+enum { RW_STANDING = 0, RW_PAST_INSTABILITY = 1, RW_PAST_TOPPLING_LIMIT = 2 };
 
 typedef struct {
+    double h;                  /* wall height (for the laws written in mid-height displacements) */
     double W1, Wd;             /* W1 = W2 = W/2, Wd = psi*W1 */
     double Du, Fr, F0, Rel;    /* Delta_u, F_r, F0, R_el (Table 5.1) */
     double D1, D2, Fi;         /* Delta_1, Delta_2 (Eq. 5.1, 5.2), plateau F_i */
@@ -44,8 +46,32 @@ typedef struct {
     double fu;                 /* f_u = fu*u_top*(1,1), fu = Kd*h/2 */
     double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
     double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
+    double q_topple;           /* 2b/h: rotation at which a body's centre of gravity passes over its pivot */
     double tiny;               /* rotation below which the direction of motion decides a side */
 } rw_derived;
+
+/* A 2DOF hinge law: everything that differs between laws, in one place (rw_hinge_laws.c).
+ * Generalised hinge moments Q = (-cap_b*mu_b + cap_m*mu_m, -cap_m*mu_m) for the laws that come
+ * from a potential; every law's Q(q) is piecewise affine between its breakpoints. */
+typedef struct {
+    int id;
+    const char *name;
+    int set_valued; /* mu = sign at zero rotation: rigid hinges, with rest and closed-hinge states */
+    /* Q(q) and its Jacobian J = dQ/dq (constant between breakpoints). side_b, side_m: the active
+     * sides (they decide the set-valued laws and the paper's conditions); dq decides the region
+     * when q sits on a breakpoint (the one the motion goes into). */
+    void (*moments)(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
+                    double Q[2], double J[2][2]);
+    /* V_h(q) with Q = -grad V_h (semiRigidPaper has none: its value is a measure, not conserved) */
+    double (*potential)(const rw_derived *d, const double q[2]);
+    /* RW_NBREAK continuous functions crossing zero where Q(q) has a kink (1 = unused) */
+    void (*breakpoints)(const rw_derived *d, const double q[2], double z[RW_NBREAK]);
+    /* 1 inside the first linear range of every hinge (collapse is not tested there) */
+    int (*elastic)(const rw_derived *d, const double q[2]);
+} rw_hinge_law;
+
+/* The law of a hingeLaw value, NULL if none. */
+const rw_hinge_law *rw_hinge_law_of(int id);
 
 /* offsets of the hinge event indicators (rotation, relative force margin) */
 #define RW_EPS_Q(d) (0.1 * (d)->tiny)
@@ -63,12 +89,8 @@ typedef struct {
     double u_top; /* diaphragm displacement [m] */
 } rw_input;
 
-/* Parameters --------------------------------------------------------------------------------- */
-void rw_params_default(rw_params *p);
-/* Range check of one Real parameter by name (NaN/inf rejected). 0 = ok, else msg filled. */
-int rw_check_real_param(const char *name, double value, char *msg, size_t n);
-int rw_check_int_param(const char *name, int value, char *msg, size_t n);
-/* Full check including cross-parameter rules. 0 = ok, else msg filled. */
+/* Parameters (the table, defaults and per-value checks: rw_parameters.h) ----------------------- */
+/* Every range, then the rules that tie parameters together. 0 = ok, else msg filled. */
 int rw_params_validate(const rw_params *p, char *msg, size_t n);
 void rw_derive(const rw_params *p, rw_derived *d);
 
@@ -76,8 +98,8 @@ void rw_derive(const rw_params *p, rw_derived *d);
 int rw_is_rigid(const rw_params *p);
 
 /* Physics ------------------------------------------------------------------------------------ */
-/* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides). */
-void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double q[2], double Q[2]);
+/* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides), from the law. */
+void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2]);
 /* Trilinear / rigid resisting force F(D) of the 1DOF (Doherty), rigid uses side for sign(D). */
 double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, double D);
 void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
@@ -92,8 +114,8 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
 /* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                      const double x[RW_NX]);
-/* 1 when x is past the instability point (spec "Collapse"). */
-int rw_is_collapsed(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+/* RW_STANDING, or why x is taken as collapsed (spec "Collapse"). */
+int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                     const double x[RW_NX]);
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                  const double x[RW_NX]);

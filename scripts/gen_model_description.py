@@ -3,7 +3,9 @@
 for its variables: RockingWall (fmu_src/model_variables.h -> modelDescription.xml at the top level)
 and Diaphragm (fmu_src/diaphragm/diaphragm_variables.h -> fmu_src/diaphragm/modelDescription.xml).
 
-    scripts/gen_model_description.py                    # (re)write both
+The parameter table of docs/model.md comes from fmu_src/rw_parameters.h too.
+
+    scripts/gen_model_description.py                    # (re)write both and the docs table
     scripts/gen_model_description.py --check            # exit 1 if a committed file differs
     scripts/gen_model_description.py --stdout Diaphragm # print one
 """
@@ -21,9 +23,10 @@ SHARED_SOURCES = ["fmi2Functions.c", "cs_none.c"]
 MODELS = {
     "RockingWall": dict(
         header=REPO / "fmu_src" / "model_variables.h", output=REPO / "modelDescription.xml", prefix="RW",
+        parameters=REPO / "fmu_src" / "rw_parameters.h",
         description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
                     "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
-        sources=["rw_physics.c", "rw_modes.c", "rw_model.c"] + SHARED_SOURCES,
+        sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_physics.c", "rw_modes.c", "rw_model.c"] + SHARED_SOURCES,
         log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
     "Diaphragm": dict(
         header=REPO / "fmu_src" / "diaphragm" / "diaphragm_variables.h",
@@ -39,6 +42,7 @@ OUTPUT = MODELS["RockingWall"]["output"]
 
 FIELDS = ["id", "vr", "name", "type", "causality", "variability", "initial", "start", "unit",
           "nominal", "derivative_of", "description"]
+PARAM_FIELDS = ["id", "vr", "type", "unit", "start", "min", "max", "description"]
 TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[^,\s]+')
 
 # SI base-unit exponents of the units used in the table
@@ -68,21 +72,38 @@ def _unquote(tok):
     return tok[1:-1].replace('\\"', '"') if tok.startswith('"') else tok
 
 
-def parse_header(path=HEADER, prefix="RW"):
-    """Variables (list of dicts, table order), dependencies {id: [names]} and #defines (with the
-    model's prefix replaced by RW_, so RW_GUID etc. for every model)."""
-    text = path.read_text()
-    defines = dict(re.findall(rf'#define\s+({prefix}_\w+)\s+("[^"]*"|\d+)\s*$', text, re.M))
-    defines = {"RW_" + k[len(prefix) + 1:]: _unquote(v) for k, v in defines.items()}
-    variables = []
+def _macro_rows(text, letter, fields, path):
+    rows = []
     for line in text.splitlines():
-        m = re.match(r'\s*X\((.*)\)\s*\\?\s*$', line)
+        m = re.match(rf'\s*{letter}\((.*)\)\s*\\?\s*$', line)
         if not m:
             continue
         toks = [_unquote(t) for t in TOKEN.findall(m.group(1))]
-        if len(toks) != len(FIELDS):
-            raise SystemExit(f"{path}: cannot parse variable line: {line}")
-        v = dict(zip(FIELDS, toks))
+        if len(toks) != len(fields):
+            raise SystemExit(f"{path}: cannot parse line: {line}")
+        rows.append(dict(zip(fields, toks)))
+    return rows
+
+
+def parse_parameters(path=REPO / "fmu_src" / "rw_parameters.h"):
+    """The parameter table P(ID, VR, TYPE, UNIT, DEFAULT, MIN, MAX, DESCRIPTION) as variable dicts."""
+    params = []
+    for p in _macro_rows(path.read_text(), "P", PARAM_FIELDS, path):
+        p.update(name=p["id"], vr=int(p["vr"]), causality="parameter", variability="fixed", initial="exact",
+                 nominal=0.0, derivative_of=0, min=float(p["min"]), max=float(p["max"]))
+        params.append(p)
+    return params
+
+
+def parse_header(path=HEADER, prefix="RW", parameters=None):
+    """Variables (list of dicts, table order: the parameter table first, if any), dependencies
+    {id: [names]} and #defines (with the model's prefix replaced by RW_, so RW_GUID etc. for every
+    model)."""
+    text = path.read_text()
+    defines = dict(re.findall(rf'#define\s+({prefix}_\w+)\s+("[^"]*"|\d+)\s*$', text, re.M))
+    defines = {"RW_" + k[len(prefix) + 1:]: _unquote(v) for k, v in defines.items()}
+    variables = parse_parameters(parameters) if parameters else []
+    for v in _macro_rows(text, "X", FIELDS, path):
         v["vr"] = int(v["vr"])
         v["nominal"] = float(v["nominal"])
         v["derivative_of"] = int(v["derivative_of"])
@@ -93,6 +114,15 @@ def parse_header(path=HEADER, prefix="RW"):
         if m:
             deps[m.group(1)] = m.group(2).split()
     return variables, deps, defines
+
+
+def parse_model(name):
+    model = MODELS[name]
+    return parse_header(model["header"], model["prefix"], model.get("parameters"))
+
+
+def _fmt_number(value, typ):
+    return repr(float(value)) if typ == "Real" else str(int(float(value)))
 
 
 def _fmt_start(v):
@@ -106,7 +136,7 @@ def _fmt_start(v):
 
 def generate(name="RockingWall"):
     model = MODELS[name]
-    variables, deps, defines = parse_header(model["header"], model["prefix"])
+    variables, deps, defines = parse_model(name)
     index = {v["id"]: i + 1 for i, v in enumerate(variables)}  # 1-based ScalarVariable index
     by_vr = {v["vr"]: v for v in variables}
     by_name = {v["name"]: v for v in variables}
@@ -164,6 +194,8 @@ def generate(name="RockingWall"):
                 t.append(f'nominal="{v["nominal"]!r}"')
             if v["derivative_of"]:
                 t.append(f'derivative="{index[by_vr[v["derivative_of"]]["id"]]}"')
+        if "min" in v:
+            t += [f'min="{_fmt_number(v["min"], v["type"])}"', f'max="{_fmt_number(v["max"], v["type"])}"']
         if v["initial"] != "calculated":
             t.append(f'start="{_fmt_start(v)}"')
         w(f'      <{v["type"]}{"" if not t else " " + " ".join(t)}/>')
@@ -198,6 +230,44 @@ def generate(name="RockingWall"):
     return "\n".join(out) + "\n"
 
 
+DOCS = REPO / "docs" / "model.md"
+DOCS_BEGIN, DOCS_END = "<!-- BEGIN parameters (generated from fmu_src/rw_parameters.h) -->", "<!-- END parameters -->"
+
+
+def _fmt_doc_number(value, typ):
+    return str(int(value)) if typ == "Integer" else f"{float(value):g}"
+
+
+def parameter_table():
+    """The Markdown table of the parameters, from the C table."""
+    rows = ["| name | default | range | unit | meaning |", "|---|---|---|---|---|"]
+    for v in parse_parameters():
+        unit = {"N/m2": "N/m per m", "1": "-", "": "-"}.get(v["unit"], v["unit"])
+        rng = f'[{_fmt_doc_number(v["min"], v["type"])}, {_fmt_doc_number(v["max"], v["type"])}]'
+        rows.append(f'| `{v["name"]}` | {_fmt_doc_number(v["start"], v["type"])} | {rng} | {unit} | {v["description"]} |')
+    return "\n".join(rows)
+
+
+def docs_with_parameter_table(text):
+    start, end = text.index(DOCS_BEGIN) + len(DOCS_BEGIN), text.index(DOCS_END)
+    return text[:start] + "\n" + parameter_table() + "\n" + text[end:]
+
+
+def _write_or_check(path, content, args):
+    """Returns 1 if --check finds path stale."""
+    if args.stdout:
+        sys.stdout.write(content)
+    elif args.check:
+        if (path.read_text() if path.exists() else "") != content:
+            print(f"{path} is out of date: run scripts/gen_model_description.py", file=sys.stderr)
+            return 1
+        print(f"{path} is up to date")
+    else:
+        path.write_text(content)
+        print(f"wrote {path}")
+    return 0
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--check", action="store_true", help="exit 1 if modelDescription.xml is out of date")
@@ -209,19 +279,9 @@ def main(argv=None):
             ap.error(f"unknown model {name!r}: choose from {', '.join(MODELS)}")
     stale = 0
     for name in args.models or list(MODELS):
-        xml, output = generate(name), MODELS[name]["output"]
-        if args.stdout:
-            sys.stdout.write(xml)
-        elif args.check:
-            current = output.read_text() if output.exists() else ""
-            if current != xml:
-                print(f"{output} is out of date: run scripts/gen_model_description.py", file=sys.stderr)
-                stale = 1
-            else:
-                print(f"{output} is up to date")
-        else:
-            output.write_text(xml)
-            print(f"wrote {output}")
+        stale |= _write_or_check(MODELS[name]["output"], generate(name), args)
+    if not args.models and not args.stdout:
+        stale |= _write_or_check(DOCS, docs_with_parameter_table(DOCS.read_text()), args)
     return stale
 
 

@@ -14,10 +14,10 @@
 static fmi2Component cs_instance(int model, double q1_start, double tol)
 {
     fmi2Component c = fmi2Instantiate("cs", fmi2CoSimulation, RW_GUID, "", &CB, fmi2False, fmi2False);
-    fmi2ValueReference vr_model = RW_VR_model, vr_q1 = RW_VR_q1;
+    fmi2ValueReference vr_support = RW_VR_support, vr_q1 = RW_VR_q1;
     fmi2Integer m = model;
     if (!c) return NULL;
-    fmi2SetInteger(c, &vr_model, 1, &m);
+    fmi2SetInteger(c, &vr_support, 1, &m);
     fmi2SetReal(c, &vr_q1, 1, &q1_start);
     fmi2SetupExperiment(c, fmi2True, tol, 0.0, fmi2False, 0.0);
     fmi2EnterInitializationMode(c);

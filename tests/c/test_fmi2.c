@@ -9,6 +9,7 @@
 #include "fmi2Functions.h"
 #include "fmi2_test_logger.h"
 #include "model_variables.h"
+#include "rw_physics.h"
 
 static fmi2Component inst(const char *name)
 {
@@ -26,27 +27,27 @@ static fmi2Status init_inst(fmi2Component c)
 static void test_two_instances(void)
 {
     fmi2Component a = inst("a"), b = inst("b");
-    fmi2ValueReference vr_model = RW_VR_model, vr_q1 = RW_VR_q1, vr_h = RW_VR_h;
+    fmi2ValueReference vr_support = RW_VR_support, vr_q1 = RW_VR_q1, vr_h = RW_VR_h;
     fmi2Integer one = 1, got = 0;
     double q = 0.01, h = 3.0;
     fmi2EventInfo ei;
     CHECK(a && b && a != b, "two instances");
-    CHECK(fmi2SetInteger(a, &vr_model, 1, &one) == fmi2OK, "set model");
+    CHECK(fmi2SetInteger(a, &vr_support, 1, &one) == fmi2OK, "set support");
     CHECK(fmi2SetReal(a, &vr_q1, 1, &q) == fmi2OK, "set q1 start");
     CHECK(fmi2SetReal(b, &vr_h, 1, &h) == fmi2OK, "set h");
     CHECK(init_inst(a) == fmi2OK && init_inst(b) == fmi2OK, "init");
     CHECK(fmi2NewDiscreteStates(a, &ei) == fmi2OK && fmi2NewDiscreteStates(b, &ei) == fmi2OK, "event iteration");
-    fmi2GetInteger(b, &vr_model, 1, &got);
-    CHECK(got == 3, "instance b model = %d (must not see a's value)", got);
+    fmi2GetInteger(b, &vr_support, 1, &got);
+    CHECK(got == 3, "instance b support = %d (must not see a's value)", got);
     CHECK(get_real(a, RW_VR_q2) == 0.01, "parapet slaves q2 = q1: %g", get_real(a, RW_VR_q2));
     CHECK(get_real(b, RW_VR_h) == 3.0 && get_real(a, RW_VR_h) == 2.5, "h differs per instance");
     CHECK(fabs(get_real(a, RW_VR_s2) - 0.01 * 2.5) < 1e-15, "parapet s2 = theta*h");
     CHECK(fmi2EnterContinuousTimeMode(a) == fmi2OK, "enter CT");
     {
-        double x[4], dx[4], z[5], nom[4];
+        double x[4], dx[4], z[RW_NZ], nom[4];
         CHECK(fmi2GetContinuousStates(a, x, 4) == fmi2OK && x[0] == 0.01, "get states");
         CHECK(fmi2GetDerivatives(a, dx, 4) == fmi2OK && dx[2] < 0, "free rocking decelerates back: %g", dx[2]);
-        CHECK(fmi2GetEventIndicators(a, z, 5) == fmi2OK && z[0] > 0 && z[4] > 0, "indicators");
+        CHECK(fmi2GetEventIndicators(a, z, RW_NZ) == fmi2OK && z[RW_Z_BASE] > 0 && z[RW_Z_COLLAPSE] > 0, "indicators");
         CHECK(fmi2GetNominalsOfContinuousStates(a, nom, 4) == fmi2OK && nom[0] == 0.01 && nom[2] == 0.1, "nominals");
         CHECK(fmi2GetDerivatives(a, dx, 3) == fmi2Error, "wrong nx accepted");
     }
@@ -137,20 +138,20 @@ static void test_call_sequence(void)
 static void test_simulation(void)
 {
     fmi2Component c = inst("sim");
-    fmi2ValueReference vr_model = RW_VR_model, vr_q1 = RW_VR_q1, vr_imp = RW_VR_impacts, vr_col = RW_VR_collapsed;
+    fmi2ValueReference vr_support = RW_VR_support, vr_q1 = RW_VR_q1, vr_imp = RW_VR_impacts, vr_col = RW_VR_collapsed;
     fmi2Integer model = 1, impacts = 0;
     fmi2Boolean collapsed = fmi2True;
-    double q = 0.04, x[4], dx[4], y[4], z[5], zn[5], t = 0, h = 1e-4, E0, E1;
+    double q = 0.04, x[4], dx[4], y[4], z[RW_NZ], zn[RW_NZ], t = 0, h = 1e-4, E0, E1;
     fmi2EventInfo ei;
     int k, i;
-    fmi2SetInteger(c, &vr_model, 1, &model);
+    fmi2SetInteger(c, &vr_support, 1, &model);
     fmi2SetReal(c, &vr_q1, 1, &q);
     CHECK(init_inst(c) == fmi2OK, "init");
     do { fmi2NewDiscreteStates(c, &ei); } while (ei.newDiscreteStatesNeeded);
     fmi2EnterContinuousTimeMode(c);
     E0 = get_real(c, RW_VR_energy);
     fmi2GetContinuousStates(c, x, 4);
-    fmi2GetEventIndicators(c, z, 5);
+    fmi2GetEventIndicators(c, z, RW_NZ);
     for (k = 0; k < 30000; k++) {
         fmi2GetDerivatives(c, dx, 4);
         for (i = 0; i < 4; i++) y[i] = x[i] + 0.5 * h * dx[i];
@@ -161,16 +162,16 @@ static void test_simulation(void)
         t += h;
         fmi2SetTime(c, t);
         fmi2SetContinuousStates(c, x, 4);
-        fmi2GetEventIndicators(c, zn, 5);
-        for (i = 0; i < 5; i++)
+        fmi2GetEventIndicators(c, zn, RW_NZ);
+        for (i = 0; i < RW_NZ; i++)
             if ((z[i] > 0) != (zn[i] > 0)) break;
-        if (i < 5) {
+        if (i < RW_NZ) {
             fmi2EnterEventMode(c);
             do { CHECK(fmi2NewDiscreteStates(c, &ei) == fmi2OK, "nds"); } while (ei.newDiscreteStatesNeeded && !ei.terminateSimulation);
             if (ei.terminateSimulation) break;
             fmi2EnterContinuousTimeMode(c);
             fmi2GetContinuousStates(c, x, 4);
-            fmi2GetEventIndicators(c, zn, 5);
+            fmi2GetEventIndicators(c, zn, RW_NZ);
         }
         memcpy(z, zn, sizeof z);
     }

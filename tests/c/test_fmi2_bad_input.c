@@ -40,16 +40,16 @@ static fmi2Component in_state(int s)
 }
 
 /* ---- each ME function with valid arguments, and the states the standard allows it in ----- */
-static fmi2ValueReference VR_H = RW_VR_h, VR_MODEL = RW_VR_model, VR_COLLAPSED = RW_VR_collapsed;
+static fmi2ValueReference VR_H = RW_VR_h, VR_SUPPORT = RW_VR_support, VR_COLLAPSED = RW_VR_collapsed;
 static fmi2Status c_setup(fmi2Component c) { return fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0); }
 static fmi2Status c_enter_init(fmi2Component c) { return fmi2EnterInitializationMode(c); }
 static fmi2Status c_exit_init(fmi2Component c) { return fmi2ExitInitializationMode(c); }
 static fmi2Status c_terminate(fmi2Component c) { return fmi2Terminate(c); }
 static fmi2Status c_get_real(fmi2Component c) { double v; return fmi2GetReal(c, &VR_H, 1, &v); }
-static fmi2Status c_get_int(fmi2Component c) { fmi2Integer v; return fmi2GetInteger(c, &VR_MODEL, 1, &v); }
+static fmi2Status c_get_int(fmi2Component c) { fmi2Integer v; return fmi2GetInteger(c, &VR_SUPPORT, 1, &v); }
 static fmi2Status c_get_bool(fmi2Component c) { fmi2Boolean v; return fmi2GetBoolean(c, &VR_COLLAPSED, 1, &v); }
 static fmi2Status c_set_real(fmi2Component c) { fmi2ValueReference vr = RW_VR_ag; double v = 0.1; return fmi2SetReal(c, &vr, 1, &v); }
-static fmi2Status c_set_int(fmi2Component c) { fmi2Integer v = 3; return fmi2SetInteger(c, &VR_MODEL, 1, &v); }
+static fmi2Status c_set_int(fmi2Component c) { fmi2Integer v = 3; return fmi2SetInteger(c, &VR_SUPPORT, 1, &v); }
 static fmi2Status c_enter_event(fmi2Component c) { return fmi2EnterEventMode(c); }
 static fmi2Status c_nds(fmi2Component c) { fmi2EventInfo ei; return fmi2NewDiscreteStates(c, &ei); }
 static fmi2Status c_enter_cont(fmi2Component c) { return fmi2EnterContinuousTimeMode(c); }
@@ -175,9 +175,9 @@ static void test_null_pointers(void)
         case 2: st = fmi2SetReal(c, NULL, 1, v); break;
         case 3: st = fmi2SetReal(c, &vr, 1, NULL); break;
         case 4: st = fmi2GetInteger(c, NULL, 1, &iv); break;
-        case 5: st = fmi2GetInteger(c, &VR_MODEL, 1, NULL); break;
+        case 5: st = fmi2GetInteger(c, &VR_SUPPORT, 1, NULL); break;
         case 6: st = fmi2SetInteger(c, NULL, 1, &iv); break;
-        case 7: st = fmi2SetInteger(c, &VR_MODEL, 1, NULL); break;
+        case 7: st = fmi2SetInteger(c, &VR_SUPPORT, 1, NULL); break;
         case 8: st = fmi2GetBoolean(c, &VR_COLLAPSED, 1, NULL); break;
         case 9: st = fmi2GetString(c, NULL, 1, &sv); break;
         case 10: st = fmi2NewDiscreteStates(c, NULL); break;
@@ -262,7 +262,7 @@ static void test_invalid_parameters_and_inputs(void)
         {RW_VR_g, 0, "g"}, {RW_VR_delta1Ratio, 1.0, "delta1Ratio"}, {RW_VR_delta1Ratio, 0, "delta1Ratio"},
         {RW_VR_hingeSat, 0, "hingeSat"}, {RW_VR_restRate, 0, "restRate"},
     };
-    const fmi2Integer bad_ints[] = {0, 4, -1, 2147483647};
+    const fmi2Integer bad_ints[] = {0, 5, -1, 2147483647};
     for (size_t i = 0; i < sizeof reals / sizeof reals[0]; i++)
         for (size_t k = 0; k < 3; k++) {
             bad_real(S_INST, reals[i], nonfinite[k], "not a finite number");
@@ -278,11 +278,11 @@ static void test_invalid_parameters_and_inputs(void)
     bad_real(S_CONT, RW_VR_q1, 0.01, "fmi2SetContinuousStates");    /* state start value after init */
     bad_real(S_EVENT, RW_VR_s1, 0.01, "cannot be set");             /* an output */
     for (size_t k = 0; k < sizeof bad_ints / sizeof bad_ints[0]; k++) {
-        fmi2ValueReference vrs[2] = {RW_VR_model, RW_VR_hingeLaw};
+        fmi2ValueReference vrs[2] = {RW_VR_support, RW_VR_hingeLaw};
         for (int j = 0; j < 2; j++) {
             fmi2Component c = in_state(S_INST);
             n_logs = 0;
-            expect_error(c, fmi2SetInteger(c, &vrs[j], 1, &bad_ints[k]), "bad integer parameter", j ? "hingeLaw" : "model");
+            expect_error(c, fmi2SetInteger(c, &vrs[j], 1, &bad_ints[k]), "bad integer parameter", j ? "hingeLaw" : "support");
             fmi2FreeInstance(c);
         }
     }

@@ -70,50 +70,56 @@ static rw_params paper_params(void)
 
 /* ---- tests ---------------------------------------------------------------------------------- */
 
-static void test_defaults_match_table(void)
+static void test_defaults_valid(void)
 {
     rw_params p;
     char msg[256];
     rw_params_default(&p);
-#define CHECK_START(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
-    if (!strcmp(CAUS, "parameter")) {                                                   \
-        double v = !strcmp(NAME, "model") ? p.model : !strcmp(NAME, "hingeLaw") ? p.hingeLaw : 0; \
-        if (!strcmp(NAME, "h")) v = p.h;                                                \
-        if (!strcmp(NAME, "b")) v = p.b;                                                \
-        if (!strcmp(NAME, "W")) v = p.W;                                                \
-        if (!strcmp(NAME, "psi")) v = p.psi;                                            \
-        if (!strcmp(NAME, "Kd")) v = p.Kd;                                              \
-        if (!strcmp(NAME, "er")) v = p.er;                                              \
-        if (!strcmp(NAME, "g")) v = p.g;                                                \
-        if (!strcmp(NAME, "delta1Ratio")) v = p.delta1Ratio;                            \
-        if (!strcmp(NAME, "delta2A")) v = p.delta2A;                                    \
-        if (!strcmp(NAME, "delta2B")) v = p.delta2B;                                    \
-        if (!strcmp(NAME, "hingeSat")) v = p.hingeSat;                                  \
-        if (!strcmp(NAME, "restRate")) v = p.restRate;                                  \
-        CHECK(v == (double)(START), "default of %s = %g, table start %g", NAME, v, (double)(START)); \
-    }
-    RW_VARIABLES(CHECK_START)
-#undef CHECK_START
     CHECK(rw_params_validate(&p, msg, sizeof msg) == 0, "defaults invalid: %s", msg);
+    CHECK(p.support == RW_FLEXIBLE_TOP && p.h == 2.5 && p.W == 6622.0, "defaults not from the table");
+}
+
+/* every parameter's range: both bounds accepted, just beyond each refused with the range named */
+static void test_ranges(void)
+{
+    size_t i;
+    char msg[512];
+    for (i = 0; i < RW_NUMBER_OF_PARAMETERS; i++) {
+        const rw_param_info *q = &RW_PARAM_INFO[i];
+        const double step = q->is_integer ? 1.0 : 1e-6 * fmax(fabs(q->hi), 1e-300);
+        CHECK(rw_param_check(q, q->lo, msg, sizeof msg) == 0, "%s: lower bound refused: %s", q->name, msg);
+        CHECK(rw_param_check(q, q->hi, msg, sizeof msg) == 0, "%s: upper bound refused: %s", q->name, msg);
+        CHECK(rw_param_check(q, q->hi + step, msg, sizeof msg) && strstr(msg, q->name) && strstr(msg, "allowed ["),
+              "%s: above range accepted: %s", q->name, msg);
+        CHECK(rw_param_check(q, q->lo - (q->is_integer ? 1.0 : fmax(1e-6 * fabs(q->lo), 1e-300)), msg, sizeof msg),
+              "%s: below range accepted", q->name);
+        CHECK(rw_param_check(q, NAN, msg, sizeof msg), "%s: NaN accepted", q->name);
+        CHECK(rw_param_by_vr(q->vr) == q && rw_param_by_name(q->name) == q, "%s: lookup", q->name);
+    }
 }
 
 static void test_validation(void)
 {
     rw_params p;
     char msg[256];
-    CHECK(rw_check_real_param("h", -1.0, msg, sizeof msg) && strstr(msg, "h = -1"), "h=-1 accepted: %s", msg);
-    CHECK(rw_check_real_param("W", NAN, msg, sizeof msg), "W=NaN accepted");
-    CHECK(rw_check_real_param("er", 1.5, msg, sizeof msg), "er=1.5 accepted");
-    CHECK(rw_check_real_param("psi", -0.1, msg, sizeof msg), "psi<0 accepted");
-    CHECK(rw_check_real_param("Kd", 0.0, msg, sizeof msg) == 0, "Kd=0 rejected");
-    CHECK(rw_check_int_param("model", 4, msg, sizeof msg), "model=4 accepted");
-    CHECK(rw_check_int_param("hingeLaw", 0, msg, sizeof msg), "hingeLaw=0 accepted");
+    CHECK(rw_param_check(rw_param_by_name("h"), -1.0, msg, sizeof msg) && strstr(msg, "h = -1"), "h=-1 accepted: %s", msg);
+    CHECK(rw_param_check(rw_param_by_name("er"), 1.5, msg, sizeof msg), "er=1.5 accepted");
+    CHECK(rw_param_check(rw_param_by_name("Kd"), 0.0, msg, sizeof msg) == 0, "Kd=0 rejected");
+    CHECK(rw_param_check(rw_param_by_name("support"), 4, msg, sizeof msg), "support=4 accepted");
+    CHECK(rw_param_check(rw_param_by_name("hingeLaw"), 2.5, msg, sizeof msg), "hingeLaw=2.5 accepted");
+    CHECK(rw_param_check(rw_param_by_name("hingeSat"), 1e300, msg, sizeof msg), "hingeSat=1e300 accepted");
+    CHECK(rw_param_by_name("model") == NULL, "a parameter called model remains");
     rw_params_default(&p);
-    p.b = 3.0;
-    CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "b = 3"), "b >= h accepted: %s", msg);
+    p.b = 2.9;
+    p.h = 2.5;
+    CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "b = 2.9"), "b >= h accepted: %s", msg);
     rw_params_default(&p);
-    p.delta2B = 2.0;
+    p.delta2B = 0.99;
     CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "delta"), "Delta_2 > Delta_u accepted");
+    rw_params_default(&p);
+    p.hingeSat = 19.0;
+    p.delta1Ratio = 0.1;
+    CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "hingeSat"), "saturation past Delta_u accepted");
 }
 
 static void test_against_sympy(const char *json_path)
@@ -165,7 +171,7 @@ static void test_against_sympy(const char *json_path)
         char cond[2] = {(char)('0' + i), 0};
         const char *ka[] = {"conditions", cond, "A", NULL}, *kb[] = {"conditions", cond, "B", NULL};
         rw_mode m = {0, 0, sides[i][0], sides[i][1], 0, 0};
-        double q[2] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1]}, Q[2], a, b;
+        double q[RW_NX] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1], 0, 0}, Q[2], a, b;
         rw_hinge_Q(&p, &d, &m, q, Q);
         CHECK(json_numbers(json, ka, &a, 1) == 1 && json_numbers(json, kb, &b, 1) == 1, "condition %d missing", i);
         check_close("A_c", Q[0], a, 1e-12);
@@ -196,7 +202,7 @@ static void test_trilinear(void)
     rw_params p = paper_params();
     rw_derived d;
     rw_mode m = {0, 0, 1, 1, 0, 0};
-    p.model = RW_SIMPLY_SUPPORTED;
+    p.support = RW_SIMPLY_SUPPORTED;
     rw_derive(&p, &d);
     check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, d.D1 / 2), -d.Fi / 2, 1e-12);
     check_close("F(D1)", rw_force_1dof(&p, &d, &m, d.D1), -d.Fi, 1e-12);
@@ -279,7 +285,7 @@ static void test_indicators(void)
             rw_event_indicators(&p, &d, &m, &in, y, z1);
             y[0] = d.theta_y * 1.001;
             rw_event_indicators(&p, &d, &m, &in, y, z2);
-            CHECK(z1[RW_Z_BREAK1] < 0 && z2[RW_Z_BREAK1] > 0, "law %d: breakpoint indicator", law);
+            CHECK(z1[RW_Z_BREAK] < 0 && z2[RW_Z_BREAK] > 0, "law %d: breakpoint indicator", law);
         }
     }
 }
@@ -319,7 +325,7 @@ static void test_rigid_open_close(void)
     rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
     CHECK(m.closed_b && m.closed_m && x[0] == 0 && x[1] == 0 && x[2] == 0 && x[3] == 0, "did not come to rest");
     /* parapet uplift threshold |ag| > g tan(alpha) */
-    p.model = RW_PARAPET;
+    p.support = RW_PARAPET;
     rw_derive(&p, &d);
     memset(x, 0, sizeof x);
     in.ag = 0.99 * p.g * tan(d.alpha);
@@ -329,7 +335,7 @@ static void test_rigid_open_close(void)
     init(&p, &d, &m, &in, x);
     CHECK(!m.closed_b && m.side_b == 1, "parapet: closed %d side %d above the threshold", m.closed_b, m.side_b);
     /* simply supported rigid: uplift at |ag| > (4b/h)(1 + 0.75 psi) g */
-    p.model = RW_SIMPLY_SUPPORTED;
+    p.support = RW_SIMPLY_SUPPORTED;
     {
         const double thr = 4 * p.b / p.h * (1 + 0.75 * p.psi) * p.g;
         in.ag = 0.999 * thr;
@@ -359,22 +365,22 @@ static void test_collapse(void)
         x[0] = 0.999 * th; x[1] = -x[0]; x[2] = x[3] = 0;
         init(&p, &d, &m, &in, x);
         if (law != RW_SEMI_RIGID_PAPER) /* the paper law's Q is not a potential: its root differs */
-            CHECK(!rw_is_collapsed(&p, &d, &m, &in, x), "law %d collapsed before Delta_u", law);
+            CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "law %d collapsed before Delta_u", law);
         x[0] = 1.001 * th; x[1] = -x[0];
         init(&p, &d, &m, &in, x);
         if (law != RW_SEMI_RIGID_PAPER)
-            CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "law %d not collapsed past Delta_u", law);
+            CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "law %d not collapsed past Delta_u", law);
     }
-    p.model = RW_SIMPLY_SUPPORTED;
+    p.support = RW_SIMPLY_SUPPORTED;
     rw_derive(&p, &d);
     x[0] = 2 * d.Du / p.h * 1.0001;
-    CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "1DOF not collapsed past Delta_u");
-    p.model = RW_PARAPET;
+    CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "1DOF not collapsed past Delta_u");
+    p.support = RW_PARAPET;
     rw_derive(&p, &d);
     x[0] = d.alpha * 0.999;
-    CHECK(!rw_is_collapsed(&p, &d, &m, &in, x), "parapet collapsed before alpha");
+    CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "parapet collapsed before alpha");
     x[0] = -d.alpha * 1.001;
-    CHECK(rw_is_collapsed(&p, &d, &m, &in, x), "parapet not collapsed past alpha");
+    CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "parapet not collapsed past alpha");
 }
 
 /* free rocking with er = 1: RK4 between impacts keeps the energy */
@@ -412,9 +418,71 @@ static void test_energy(void)
     }
 }
 
+/* every law: J = dQ/dq by central differences inside a region, and Q = -grad V_h where the law
+ * has a potential; at points in each region of each hinge */
+static void test_hinge_laws_jacobian_and_potential(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    const double fr[] = {0.3, 1.5, 3.0, 8.0}; /* fractions of the first breakpoint rotation */
+    int law, i, j, k;
+    rw_derive(&p, &d);
+    for (law = 1; law <= 4; law++) {
+        const rw_hinge_law *L = rw_hinge_law_of(law);
+        const double r1 = law == RW_DOHERTY_HINGE ? 2 * d.D1 / p.h : d.theta_y;
+        CHECK(L && L->id == law, "law %d missing", law);
+        for (i = 0; i < 4; i++)
+            for (j = 0; j < 4; j++) {
+                double q[2] = {fr[i] * r1, -fr[j] * r1 * (law == RW_DOHERTY_HINGE ? 2.0 : 1.0) + fr[i] * r1 * 0.37}; /* off every kink */
+                const double dq[2] = {0.1, -0.1}, e = 1e-7 * r1;
+                double Q[2], J[2][2], Qp[2], Qm[2], Jx[2][2];
+                L->moments(&d, 1, -1, q, dq, Q, J);
+                for (k = 0; k < 2; k++) {
+                    double qp[2] = {q[0], q[1]}, qm[2] = {q[0], q[1]};
+                    qp[k] += e;
+                    qm[k] -= e;
+                    L->moments(&d, 1, -1, qp, dq, Qp, Jx);
+                    L->moments(&d, 1, -1, qm, dq, Qm, Jx);
+                    check_close("dQ0/dq", J[0][k], (Qp[0] - Qm[0]) / (2 * e), 1e-5);
+                    check_close("dQ1/dq", J[1][k], (Qp[1] - Qm[1]) / (2 * e), 1e-5);
+                    if (law != RW_SEMI_RIGID_PAPER) /* the paper's law has no potential */
+                        check_close("-dV/dq", -(L->potential(&d, qp) - L->potential(&d, qm)) / (2 * e), Q[k], 1e-5);
+                }
+            }
+    }
+}
+
+/* dohertyHinge along the simply supported shape q2 = -q1: the generalised force on D of the hinges
+ * plus gravity equals Doherty's trilinear F(D) of the 1DOF, in every branch */
+static void test_doherty_hinge_reduces_to_trilinear(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    rw_mode m = {0, 0, 1, -1, 0, 0};
+    const double Ds[] = {0.2, 0.9, 1.5, 3.0, 5.0, 15.0, 19.0}; /* in units of Delta_1 */
+    int i;
+    p.hingeLaw = RW_DOHERTY_HINGE;
+    p.Kd = 0.0; /* the spring does no work along q2 = -q1 */
+    rw_derive(&p, &d);
+    for (i = 0; i < 7; i++) {
+        const double D = Ds[i] * d.D1, q1 = 2 * D / p.h;
+        double x[RW_NX] = {q1, -q1, 0, 0}, Q[2];
+        /* generalised force on D: (dq/dD).(Q - K q), dq/dD = (2/h)(1, -1) */
+        const double Kq0 = d.K[0][0] * x[0] + d.K[0][1] * x[1], Kq1 = d.K[1][0] * x[0] + d.K[1][1] * x[1];
+        double F2dof;
+        if (D >= d.Du) break;
+        rw_hinge_Q(&p, &d, &m, x, Q);
+        F2dof = 2.0 / p.h * ((Q[0] - Kq0) - (Q[1] - Kq1));
+        p.support = RW_SIMPLY_SUPPORTED;
+        check_close("F(D) 2DOF dohertyHinge vs 1DOF trilinear", F2dof / d.Fr, rw_force_1dof(&p, &d, &m, D) / d.Fr, 1e-12);
+        p.support = RW_FLEXIBLE_TOP;
+    }
+}
+
 int main(int argc, char **argv)
 {
-    test_defaults_match_table();
+    test_defaults_valid();
+    test_ranges();
     test_validation();
     test_against_sympy(argc > 1 ? argv[1] : NULL);
     test_table_5_1();
@@ -424,6 +492,8 @@ int main(int argc, char **argv)
     test_rigid_open_close();
     test_collapse();
     test_energy();
+    test_hinge_laws_jacobian_and_potential();
+    test_doherty_hinge_reduces_to_trilinear();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }

@@ -43,7 +43,7 @@ def test_model_exchange_and_co_simulation_declared(build_dir, name):
 
 
 def test_variables_match_the_c_table(rockingwall_fmu):
-    table, _, defines = gen.parse_header()
+    table, _, defines = gen.parse_model("RockingWall")
     md = read_model_description(str(rockingwall_fmu))
     assert md.guid == defines["RW_GUID"]
     assert md.numberOfEventIndicators == int(defines["RW_NUMBER_OF_EVENT_INDICATORS"])
@@ -62,9 +62,10 @@ def test_variables_match_the_c_table(rockingwall_fmu):
     assert states == ["dq1", "dq2", "der(dq1)", "der(dq2)"]
     assert [d.variable.derivative.name for d in md.derivatives] == ["q1", "q2", "dq1", "dq2"]
     expected_names = {"h", "b", "W", "psi", "Kd", "er", "g", "delta1Ratio", "delta2A", "delta2B", "hingeSat",
-                      "restRate", "model", "hingeLaw", "ag", "u_top", "s1", "s2", "F_top", "collapsed", "impacts",
+                      "restRate", "support", "hingeLaw", "ag", "u_top", "s1", "s2", "F_top", "collapsed", "impacts",
                       "q1", "q2", "dq1", "dq2"}
     assert expected_names <= set(xml)
+    assert "model" not in xml  # renamed to support: "model" is a Modelica keyword and broke an importer
     assert xml["Kd"].unit == "N/m2" and xml["W"].unit == "N/m" and xml["F_top"].unit == "N/m"
     assert xml["q1"].nominal == "0.01" or float(xml["q1"].nominal) == 0.01
     assert float(xml["dq1"].nominal) == 0.1
@@ -73,9 +74,21 @@ def test_variables_match_the_c_table(rockingwall_fmu):
 
 def test_diaphragm_variables_match_its_c_table(build_dir):
     model = gen.MODELS["Diaphragm"]
-    table, _, defines = gen.parse_header(model["header"], model["prefix"])
+    table, _, defines = gen.parse_model("Diaphragm")
     md = read_model_description(str(build_dir / "Diaphragm.fmu"))
     assert md.guid == defines["RW_GUID"] and md.numberOfEventIndicators == 0
     assert [(v.name, v.valueReference, v.causality) for v in md.modelVariables] == \
         [(v["name"], v["vr"], v["causality"]) for v in table]
     assert [d.variable.derivative.name for d in md.derivatives] == ["u", "v"]
+
+
+def test_parameter_ranges_in_the_xml(rockingwall_fmu):
+    """Every parameter carries the C table's range as min/max, and its default lies inside."""
+    md = read_model_description(str(rockingwall_fmu))
+    xml = {v.name: v for v in md.modelVariables}
+    params = gen.parse_parameters()
+    assert {p["name"] for p in params} == {v.name for v in md.modelVariables if v.causality == "parameter"}
+    for p in params:
+        v = xml[p["name"]]
+        assert float(v.min) == p["min"] and float(v.max) == p["max"], p["name"]
+        assert p["min"] <= float(v.start) <= p["max"], p["name"]
