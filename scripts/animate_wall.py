@@ -35,7 +35,7 @@ BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
 
 def simulate(args, rec, geometry, t_end):
     scale = args.pga / rec.pga_g if args.pga else args.scale
-    sets = dict(geometry, Kd=args.kd * 1e3, model=3, hingeLaw=3, er=0.86)
+    sets = dict(geometry, Kd=args.kd * 1e3, support=3, hingeLaw=4, er=0.86)
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp) / "run.csv"
         cmd = [args.fmi2sim, args.fmu, "--ag", rec.path, "--ag-scale", repr(scale), "--stop-time", repr(t_end),

@@ -152,6 +152,8 @@ LADDER = [  # (label, model, hinge law, K_d in N/m per m or None)
     ("2DOF semiRigidPaper, Kd=50 kN/m", "flexibleTop", "semiRigidPaper", 5e4),
     ("2DOF semiRigidHinge, Kd=50 kN/m", "flexibleTop", "semiRigidHinge", 5e4),
     ("2DOF semiRigidHinge, Kd=50000 kN/m", "flexibleTop", "semiRigidHinge", 5e7),
+    ("2DOF dohertyHinge, Kd=50 kN/m", "flexibleTop", "dohertyHinge", 5e4),
+    ("2DOF dohertyHinge, Kd=50000 kN/m", "flexibleTop", "dohertyHinge", 5e7),
 ]
 KD_SWEEP = np.logspace(3, 9, 13)  # N/m per m: 1 kN/m .. 1e6 kN/m
 
@@ -164,7 +166,7 @@ def model_ladder(sim, cases, out):
     for scene, signal in cases:
         print(f"  {scene}")
         for label, model, law, kd in LADDER:
-            params = dict(WALL_1, model=model, hinge_law=law, **({"Kd": kd} if kd else {}))
+            params = dict(WALL_1, support=model, hinge_law=law, **({"Kd": kd} if kd else {}))
             best = float("inf")
             for _ in range(3):  # best of 3: the runs are milliseconds long
                 t, s1, s2, cpu = sim.run(signal, params, "bdf", 1e-6)
@@ -180,15 +182,16 @@ def model_ladder(sim, cases, out):
     print("\nK_d above which the simply supported wall gives the 2DOF peak s1 within 5 %")
     sweep_rows = []
     for scene, signal in cases:
-        for law_2dof, law_1dof in (("rigid", "rigid"), ("semiRigidHinge", "semiRigidHinge")):
-            one = sim.run(signal, dict(WALL_1, model="simplySupported", hinge_law=law_1dof), "bdf", 1e-6)
+        for law_2dof, law_1dof in (("rigid", "rigid"), ("semiRigidHinge", "semiRigidHinge"),
+                                   ("dohertyHinge", "dohertyHinge")):
+            one = sim.run(signal, dict(WALL_1, support="simplySupported", hinge_law=law_1dof), "bdf", 1e-6)
             s1_1dof, cpu_1dof = np.max(np.abs(one[1])), one[3]
             if s1_1dof == 0.0:
                 print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: the 1DOF does not rock here")
                 continue
             within, cpus = [], []
             for kd in KD_SWEEP:
-                two = sim.run(signal, dict(WALL_1, model="flexibleTop", hinge_law=law_2dof, Kd=kd), "bdf", 1e-6)
+                two = sim.run(signal, dict(WALL_1, support="flexibleTop", hinge_law=law_2dof, Kd=kd), "bdf", 1e-6)
                 err = abs(np.max(np.abs(two[1])) - s1_1dof) / s1_1dof
                 within.append(err <= 0.05)
                 cpus.append(two[3])
@@ -247,7 +250,7 @@ def main():
     cases = scenes(args.quick)
     with tqdm(total=len(cases) * (len(contenders) + 1), desc="bench") as bar:
         for label, signal, kd in cases:
-            params = dict(WALL_1, model="flexibleTop", hinge_law="semiRigidHinge", Kd=kd)
+            params = dict(WALL_1, support="flexibleTop", hinge_law="dohertyHinge", Kd=kd)
             grid = np.arange(0.0, signal.t[-1] + DT_OUT / 2, DT_OUT)
             converged = sim.run(signal, params, "bdf", 1e-12)
             bar.update()

@@ -37,17 +37,17 @@ from rwref.params import WALLS  # noqa: E402
 WALL_OUT = ["s1", "s2", "F_top", "energy", "P_ground", "dissipated"]
 DIA_OUT = ["u", "v", "energy", "P_ground", "P_damping"]
 MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3}
+LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
 
 
 def vrs(md):
     return {v.name: v.valueReference for v in md.modelVariables}
 
 
-def wall_start_values(wall=1, Kd=1e5, hinge_law="semiRigidHinge", er=0.86):
+def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86):
     """Real and Integer start values of RockingWall for one of the paper's walls."""
     real = dict(WALLS[wall], Kd=Kd, er=er)
-    return real, {"model": MODELS["flexibleTop"], "hingeLaw": LAWS[hinge_law]}
+    return real, {"support": MODELS["flexibleTop"], "hingeLaw": LAWS[hinge_law]}
 
 
 def ground_motion(record="elcentro", scale=0.5):
@@ -240,7 +240,7 @@ def main(argv=None):
     ap.add_argument("--scale", type=float, default=0.5)
     ap.add_argument("--wall", type=int, default=1, choices=sorted(WALLS))
     ap.add_argument("--Kd", type=float, default=1e5, help="wall-to-diaphragm spring, N/m per m")
-    ap.add_argument("--hinge-law", default="semiRigidHinge", choices=list(LAWS))
+    ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(LAWS))
     ap.add_argument("--m", type=float, default=2000.0, help="diaphragm mass, kg per m of wall")
     ap.add_argument("--k", type=float, default=7e5, help="diaphragm stiffness, N/m per m of wall")
     ap.add_argument("--zeta", type=float, default=0.05)

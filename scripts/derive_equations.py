@@ -114,6 +114,43 @@ def derive():
     return out
 
 
+def doherty_hinge_reduction(d):
+    """dohertyHinge along the simply supported shape q2 = -q1 (docs/model.md "Hinge laws").
+
+    Each hinge's normalised moment is mu(D) = c(D)/F_r of its own mid-height displacement
+    (D = h q1/2 at the base, h|x|/4 at mid-height, equal along q2 = -q1), with
+    c(D) = Doherty's trilinear force less the gravity slope F_r/Delta_u. Along the shape the 2DOF
+    must be Doherty's 1DOF (W/3g) D'' = -(W/2g) ag + F(D): the mass, the load and the gravity
+    stiffness from the Lagrange matrices, and the hinges' generalised force on D, in every branch
+    of the trilinear law. Returns {name: sympy expression that must be 0}."""
+    D, c = sp.symbols("D c", positive=True)                   # mid-height displacement, hinge force
+    Du = b * (1 + sp.Rational(3, 4) * psi) / (1 + psi)           # Table 5.1
+    Fr = 2 * b / h * W * (1 + sp.Rational(3, 4) * psi)
+    shape = sp.Matrix([2 / h, -2 / h])                           # dq/dD along q2 = -q1
+    M, K, p = d["M"], d["K"], d["p_per_ag"]
+    grav = K.subs(Kd, 0)                                          # the spring does no work along the shape
+    checks = {
+        "mass W/(3g)": sp.simplify((shape.T * M * shape)[0] - W / (3 * g)),
+        "load -(W/(2g)) ag": sp.simplify((shape.T * p)[0] + W / (2 * g)),
+        "spring does no work": sp.simplify((shape.T * (K - grav) * shape)[0]),
+        # gravity stiffness along the shape is -F_r/Delta_u (the line F_r(1 - D/Delta_u) of the law)
+        "gravity slope -F_r/Delta_u": sp.simplify((shape.T * grav * shape)[0] + Fr / Du),
+    }
+    # hinges: Q = -grad V, V = cap_b*Phi_b(q1) + cap_m*Phi_m(x) with dPhi/dz = mu = c/F_r; along the
+    # shape mu_b = mu, mu_m = -mu (x = -2 q1), so the force on D is shape . Q with Q from mu
+    mu = c / Fr
+    Q = sp.Matrix([-d["cap_b"] * mu + d["cap_m"] * (-mu), -d["cap_m"] * (-mu)])
+    checks["hinge force on D = -c(D)"] = sp.simplify((shape.T * Q)[0] + c)
+    # with the gravity line, -c(D) + (F_r/Delta_u) D is Doherty's trilinear -F(D) in each branch
+    D1, D2, Fi = sp.symbols("Delta_1 Delta_2 F_i", positive=True)
+    branches = {"D <= Delta_1": ((Fi / D1 + Fr / Du) * D, Fi * D / D1),
+                "Delta_1 < D <= Delta_2": (Fi + Fr / Du * D, Fi),
+                "D > Delta_2": (Fr, Fr * (1 - D / Du))}
+    for name, (c_branch, trilinear) in branches.items():
+        checks[f"branch {name}"] = sp.simplify(c_branch - Fr / Du * D - trilinear)
+    return checks
+
+
 def numbers(d, vals):
     subs = {h: vals["h"], b: vals["b"], W: vals["W"], psi: vals["psi"], Kd: vals["Kd"], g: vals["g"]}
     f = lambda e: float(sp.N(e.subs(subs)))
@@ -156,6 +193,15 @@ def main(argv=None):
             sb, sm = CONDITIONS[c]
             print(f"  condition {c} (q1 {'>' if sb > 0 else '<'} 0, q2 {'>' if sm > 0 else '<'} q1):  A = {A},  B = {B}")
         print(f"\ncap_b = {d['cap_b']},  cap_m = {d['cap_m']}")
+    reduction = doherty_hinge_reduction(d)
+    if not a.quiet:
+        print("\ndohertyHinge along q2 = -q1 reduces to Doherty's 1DOF (each residual must be 0):")
+        for name, residual in reduction.items():
+            print(f"  {name}: {residual}")
+    bad = {k: v for k, v in reduction.items() if v != 0}
+    if bad:
+        print(f"dohertyHinge does not reduce to Doherty's 1DOF: {bad}", file=sys.stderr)
+        return 1
     if a.json:
         vals = dict(h=a.h, b=a.b, W=a.W, psi=a.psi, Kd=a.Kd, g=a.g)
         with open(a.json, "w") as fh:

@@ -128,7 +128,7 @@ def main(argv=None):
     p.add_argument("--out", default="results")
     p.add_argument("--wall", type=int, default=1)
     p.add_argument("--model", default="flexibleTop")
-    p.add_argument("--hinge-law", default="semiRigidHinge")
+    p.add_argument("--hinge-law", default="dohertyHinge")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
     args = p.parse_args(argv)
     d = load(args.results, args.wall, args.model, args.hinge_law)

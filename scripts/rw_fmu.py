@@ -30,8 +30,8 @@ def fmpy_input_in_rhs(enabled=True):
 
 fmpy_input_in_rhs(True)
 
-MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3}
+SUPPORTS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
+HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
 
 # reference-solver (Python) name -> FMU variable name
 PARAMETER_NAMES = {
@@ -70,9 +70,9 @@ def on_grid(t, x, grid, right=None):
     return np.interp(grid, t_unique, np.asarray(x)[idx], right=right)
 
 
-def start_values(model="flexibleTop", hinge_law="semiRigidHinge", q0=None, dq0=None, **params):
+def start_values(support="flexibleTop", hinge_law="dohertyHinge", q0=None, dq0=None, **params):
     """FMU start values from reference-solver style keyword arguments."""
-    values = {"model": MODELS[model], "hingeLaw": HINGE_LAWS[hinge_law]}
+    values = {"support": SUPPORTS[support], "hingeLaw": HINGE_LAWS[hinge_law]}
     for name, value in params.items():
         values[PARAMETER_NAMES[name]] = float(value)
     if q0 is not None:

@@ -32,7 +32,7 @@ def cheaper_model(o, exe, fmu):
     """Peak s1 of the simply supported wall on the same input, vs the 2DOF's: (rel. diff, cost ratio)."""
     c = o.case
     law = "rigid" if c.law == "rigid" else "semiRigidHinge"
-    cheap = dataclasses.replace(c, name=c.name + " as simplySupported", model="simplySupported", law=law)
+    cheap = dataclasses.replace(c, name=c.name + " as simplySupported", support="simplySupported", law=law)
     with tempfile.TemporaryDirectory() as wd:
         d, _, _, wall = sc.run_fmi2sim(exe, fmu, cheap, sc.signal(cheap), wd)
     peak = float(np.max(np.abs(d["s1"])))
@@ -58,7 +58,7 @@ def notes(o, exe, fmu):
 
 def row(o, bad, note):
     c = o.case
-    return {"case": c.name, "model": c.model, "hinge_law": c.law, "Kd": c.Kd, "er": c.er, "psi": c.psi,
+    return {"case": c.name, "support": c.support, "hinge_law": c.law, "Kd": c.Kd, "er": c.er, "psi": c.psi,
             "h_over_b": round(c.hb, 2), "record": c.record, "amp": c.amp_g, "dt": c.dt,
             "duration": c.duration, "rtol": c.rtol, "steps": o.steps, "events": o.events,
             "fmi2sim_s": round(o.sim_wall, 3), "fmpy_s": round(o.fmpy_wall, 3),

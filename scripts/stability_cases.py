@@ -71,7 +71,7 @@ SLOW_WALL_S = 2.0        # fmi2sim wall time above which a case is reported "slo
 @dataclasses.dataclass(frozen=True)
 class Case:
     name: str
-    model: str = "flexibleTop"
+    support: str = "flexibleTop"
     law: str = "semiRigidHinge"
     Kd: float = 5e4          # N/m per m (50 kN/m)
     er: float = 0.86
@@ -91,11 +91,11 @@ class Case:
 
     @property
     def rigid(self):
-        return self.law == "rigid" or self.model == "parapet"
+        return self.law == "rigid" or self.support == "parapet"
 
     @property
     def stiff(self):
-        return self.model == "flexibleTop" and self.Kd >= STIFF_KD
+        return self.support == "flexibleTop" and self.Kd >= STIFF_KD
 
     @property
     def chaotic(self):
@@ -124,7 +124,8 @@ def signal(case):
 
 # ---- the matrix ---------------------------------------------------------------------------------
 PAIRS = [("parapet", "rigid"), ("simplySupported", "rigid"), ("simplySupported", "semiRigidHinge"),
-         ("flexibleTop", "rigid"), ("flexibleTop", "semiRigidPaper"), ("flexibleTop", "semiRigidHinge")]
+         ("flexibleTop", "rigid"), ("flexibleTop", "semiRigidPaper"), ("flexibleTop", "semiRigidHinge"),
+         ("flexibleTop", "dohertyHinge")]
 EQUIVALENT_PAIRS = [("parapet", "semiRigidPaper"), ("parapet", "semiRigidHinge"),
                     ("simplySupported", "semiRigidPaper")]
 AXES = {
@@ -210,7 +211,7 @@ def run_fmi2sim(exe, fmu, case, sig, workdir):
     inp, out = Path(workdir) / "in.csv", Path(workdir) / "out.csv"
     np.savetxt(inp, np.column_stack([sig.t, sig.a]), delimiter=",", header="time,ag", comments="",
                fmt="%.17g")
-    sets = rw_fmu.start_values(model=case.model, hinge_law=case.law, **case.params)
+    sets = rw_fmu.start_values(support=case.support, hinge_law=case.law, **case.params)
     args = [str(exe), str(fmu), "--input", str(inp), "--rtol", repr(case.rtol), "--stop-time",
             repr(case.duration), "--output-interval", repr(case.output_interval), "--output", str(out),
             "--stats"]
@@ -229,12 +230,12 @@ def run_fmi2sim(exe, fmu, case, sig, workdir):
 
 def phi(case, t, s1, s2):
     """Phi(q) with P_ground = ag dPhi/dt (module docstring), from the outputs s1, s2."""
-    p = Params(model=case.model, hinge_law=case.law, **case.params)
+    p = Params(support=case.support, hinge_law=case.law, **case.params)
     q1 = 2 * s1 / p.h
-    if case.model == "parapet":
+    if case.support == "parapet":
         return -(p.W / p.g) * p.R * (np.sin(q1) * math.cos(p.alpha)
                                      + np.sign(q1) * math.sin(p.alpha) * (1 - np.cos(q1)))
-    if case.model == "simplySupported":
+    if case.support == "simplySupported":
         return -(p.W / (2 * p.g)) * s1
     q2 = 2 * s2 / p.h - q1
     pa = p.p_per_ag
@@ -279,7 +280,7 @@ def run_case(case, exe, fmu, with_fmpy=True):
     t0 = time.perf_counter()
     try:
         fm = rw_fmu.simulate(fmu, case.duration, sig.t, sig.a, rtol=case.rtol,
-                             output_interval=case.fmpy_interval, model=case.model,
+                             output_interval=case.fmpy_interval, support=case.support,
                              hinge_law=case.law, **case.params)
     except Exception as exc:  # fmpy raises plain Exceptions for solver failures
         o.fmpy_error = f"fmpy failed: {str(exc).split(':')[-1].strip()}"
@@ -299,7 +300,7 @@ def run_case(case, exe, fmu, with_fmpy=True):
 # ---- the checks ---------------------------------------------------------------------------------
 def bounds(case):
     n_samples = int(round(case.duration / case.dt)) if case.record == "gauss" else int(case.duration / 0.02)
-    if case.model == "flexibleTop" and case.law == "rigid":
+    if case.support == "flexibleTop" and case.law == "rigid":
         events = EVENTS_PER_S_RIGID_2DOF * case.duration + EVENTS_FIXED_RIGID_2DOF
     else:
         events = EVENTS_PER_S * case.duration + EVENTS_FIXED

@@ -1,7 +1,7 @@
 """rwref: independent Python reference solver of the RockingWall model (docs/model.md).
 
     from rwref import Params, simulate, inputs
-    res = simulate(Params(model="flexibleTop", hinge_law="semiRigidHinge", Kd=1e5),
+    res = simulate(Params(support="flexibleTop", hinge_law="dohertyHinge", Kd=1e5),
                    inputs.gaussian(0.04, 1.0), 10.0)
 """
 from . import inputs

@@ -16,13 +16,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .hinge_laws import make_law, toppling_limit
+
 
 def _sign(x):
     return 1.0 if x > 0 else (-1.0 if x < 0 else 0.0)
-
-
-def _sat(z):
-    return 1.0 if z > 1.0 else (-1.0 if z < -1.0 else z)
 
 
 @dataclass
@@ -70,7 +68,7 @@ class _Base:
 
 # ---------------------------------------------------------------------------------------------
 class Parapet(_Base):
-    """Housner's rigid block (docs/model.md "Model 1"): theta'' = -p^2 [sin(s a - th) + (ag/g) cos(s a - th)]."""
+    """Housner's rigid block (docs/model.md "Support 1"): theta'' = -p^2 [sin(s a - th) + (ag/g) cos(s a - th)]."""
     one_dof = True
     rigid = True
 
@@ -143,7 +141,7 @@ class Parapet(_Base):
 
 # ---------------------------------------------------------------------------------------------
 class SimplySupported(_Base):
-    """Doherty's 1DOF (docs/model.md "Model 2"): (W/3g) D'' = -(W/2g) ag + F(D), D = q1 h/2, q2 = -q1."""
+    """Doherty's 1DOF (docs/model.md "Support 2"): (W/3g) D'' = -(W/2g) ag + F(D), D = q1 h/2, q2 = -q1."""
     one_dof = True
 
     def __init__(self, p, ag, u):
@@ -255,19 +253,20 @@ class SimplySupported(_Base):
 
 # ---------------------------------------------------------------------------------------------
 class FlexibleTop(_Base):
-    """The paper's 2DOF (docs/model.md "Model 3"): M q'' + K q = p(ag) + f_u(u_top) + Q(q) (Eq. 3.1-3.8)."""
+    """The paper's 2DOF (docs/model.md "Support 3"): M q'' + K q = p(ag) + f_u(u_top) + Q(q) (Eq. 3.1-3.8)."""
     one_dof = False
 
     def __init__(self, p, ag, u):
         super().__init__(p, ag, u)
-        self.law = p.hinge_law
-        self.rigid = self.law == "rigid"
+        self.law = make_law(p)
+        self.rigid = self.law.set_valued
+        self.q_topple = toppling_limit(p)
         (self.m11, self.m12), (_, self.m22) = p.M
         (self.k11, self.k12), (_, self.k22) = p.K
         self.det = self.m11 * self.m22 - self.m12**2
         self.pa1, self.pa2 = p.p_per_ag
         self.fu = p.fu_per_u[0]
-        self.cb, self.cm, self.ty = p.cap_b, p.cap_m, p.theta_y
+        self.cb, self.cm = p.cap_b, p.cap_m
         self.ks = self.k11 + 2 * self.k12 + self.k22
         self.ms = self.m11 + 2 * self.m12 + self.m22
 
@@ -294,16 +293,7 @@ class FlexibleTop(_Base):
 
     def Q(self, q1, q2, st):
         """Hinge terms (A_i, B_i of Eq. 3.5-3.8 corrected, with the law's finite stiffness)."""
-        x = q2 - q1
-        if self.law == "rigid":
-            mb, mm = st.side_b, st.side_m
-        elif self.law == "semiRigidHinge":
-            mb, mm = _sat(q1 / self.ty), _sat(x / self.ty)
-        else:  # semiRigidPaper: A_c min(1,|q1|/ty), B_c min(1,|q2|/ty)
-            A = -self.cb * st.side_b + self.cm * st.side_m
-            B = -self.cm * st.side_m
-            return A * min(1.0, abs(q1) / self.ty), B * min(1.0, abs(q2) / self.ty)
-        return -self.cb * mb + self.cm * mm, -self.cm * mm
+        return self.law.moments(q1, q2, st.side_b, st.side_m)
 
     def rhs(self, t, y, st):
         q1, q2, v1, v2 = y
@@ -340,47 +330,38 @@ class FlexibleTop(_Base):
         """Collapse indicator G(q) = q . (K q - Q(q)) (docs/model.md "Collapse"); the spring counts as
         if the diaphragm held still, so a pushed-but-stable wall (u_top != 0) is not flagged.
 
-        Q(q) is the hinge law as a function of q: for the rigid (and paper) law the signs of q1 and
-        x = q2 - q1 themselves (mu = sign), not the tracked sides, so -q.Q = cap_b|q1| + cap_m|x| >= 0."""
+        Q(q) is the hinge law as a function of q: sides from the signs of q1 and x = q2 - q1 themselves
+        (not the tracked sides), so for the rigid law -q.Q = cap_b|q1| + cap_m|x| >= 0."""
         q1, q2 = y[0], y[1]
-        if self.law == "semiRigidHinge":
-            Q1, Q2 = self.Q(q1, q2, st)
-        else:
-            Q1, Q2 = self.Q(q1, q2, Mode(side_b=_sign(q1), side_m=_sign(q2 - q1)))
+        sb = _sign(q1) or st.side_b
+        sm = _sign(q2 - q1) or st.side_m
+        Q1, Q2 = self.law.moments(q1, q2, sb, sm)
         return (q1 * (self.k11 * q1 + self.k12 * q2 - Q1)
                 + q2 * (self.k12 * q1 + self.k22 * q2 - Q2))
 
     def elastic(self, y):
-        q1, q2 = y[0], y[1]
-        if self.law == "rigid":
-            return q1 == 0 and q2 == 0
-        if self.law == "semiRigidHinge":
-            return abs(q1) <= self.ty and abs(q2 - q1) <= self.ty
-        return abs(q1) <= self.ty and abs(q2) <= self.ty
+        return self.law.elastic(y[0], y[1])
+
+    def toppled(self, y):
+        """Past the toppling limit of a body (docs/model.md "Collapse"): a guard."""
+        return max(abs(y[0]), abs(y[1])) >= self.q_topple
 
     def collapse_now(self, y, st, t=0.0):
-        return (not self.elastic(y)) and self.G_t(t, y, st) <= 0
+        return ((not self.elastic(y)) and self.G_t(t, y, st) <= 0) or self.toppled(y)
 
     def events(self, st):
-        ty = self.ty
         base = Event("base", "base", lambda t, y: y[0], lambda y, dy: dy[0], lambda y, dy: dy[2])
         mid = Event("mid", "mid", lambda t, y: y[1] - y[0], lambda y, dy: dy[1] - dy[0], lambda y, dy: dy[3] - dy[2])
-        col = Event("collapse", "collapse", lambda t, y: self.G_t(t, y, st))
+        col = [Event("collapse", "collapse", lambda t, y: self.G_t(t, y, st)),
+               Event("topple", "collapse", lambda t, y: self.q_topple - max(abs(y[0]), abs(y[1])), fixed=1.0)]
         if self.rigid:
             if st.base_closed:  # mid open
-                return [mid, Event("open_b", "open_b", lambda t, y: self.cb - abs(self.f_b_baseclosed(t, y, st)), fixed=1.0), col]
+                return [mid, Event("open_b", "open_b", lambda t, y: self.cb - abs(self.f_b_baseclosed(t, y, st)), fixed=1.0)] + col
             if st.mid_closed:
-                return [base, Event("open_m", "open_m", lambda t, y: self.cm - abs(self.f_m_midclosed(t, y, st)), fixed=1.0), col]
-            return [base, mid, col]
-        ev = [base, mid,
-              Event("bp_b", "breakpoint", lambda t, y: abs(y[0]) - ty, lambda y, dy: _sign(y[0]) * dy[0])]
-        if self.law == "semiRigidHinge":
-            ev.append(Event("bp_m", "breakpoint", lambda t, y: abs(y[1] - y[0]) - ty,
-                            lambda y, dy: _sign(y[1] - y[0]) * (dy[1] - dy[0])))
-        else:
-            ev.append(Event("bp_2", "breakpoint", lambda t, y: abs(y[1]) - ty, lambda y, dy: _sign(y[1]) * dy[1]))
-        ev.append(col)
-        return ev
+                return [base, Event("open_m", "open_m", lambda t, y: self.cm - abs(self.f_m_midclosed(t, y, st)), fixed=1.0)] + col
+            return [base, mid] + col
+        bps = [Event(name, "breakpoint", lambda t, y, f=raw: f(y), rate) for name, raw, rate in self.law.breakpoints()]
+        return [base, mid] + bps + col
 
     def rest_margin(self, t, st):
         F1, F2 = self.F(t)
@@ -484,13 +465,7 @@ class FlexibleTop(_Base):
         return s1, s2, self.p.Kd * (s2 - self.u(t))
 
     def hinge_potential(self, q1, x):
-        cb, cm, ty = self.cb, self.cm, self.ty
-        if self.law == "semiRigidHinge":
-            def phi(z):
-                u = abs(z) / ty
-                return ty * (0.5 * u * u if u <= 1 else u - 0.5)
-            return cb * phi(q1) + cm * phi(x)
-        return cb * abs(q1) + cm * abs(x)  # rigid (also used, as a non-conserved measure, for semiRigidPaper)
+        return self.law.potential(q1, x)
 
     def energy(self, t, y):
         """E = 1/2 dq'M dq + 1/2 q'K_grav q + 1/2 Kd (s2 - u_top)^2 + V_h(q)  (spec's E when u_top = 0)."""
@@ -505,4 +480,4 @@ class FlexibleTop(_Base):
 
 
 def make_model(p, ag, u):
-    return {"parapet": Parapet, "simplySupported": SimplySupported, "flexibleTop": FlexibleTop}[p.model](p, ag, u)
+    return {"parapet": Parapet, "simplySupported": SimplySupported, "flexibleTop": FlexibleTop}[p.support](p, ag, u)

@@ -38,7 +38,7 @@ class Result:
     nfev, params."""
 
     def __repr__(self):
-        return (f"Result(model={self.params.model}, law={self.params.hinge_law}, n={self.t.size}, "
+        return (f"Result(support={self.params.support}, law={self.params.hinge_law}, n={self.t.size}, "
                 f"peak_s1={self.peak_s1:.5g}, peak_s2={self.peak_s2:.5g}, impacts={self.impacts}, "
                 f"collapsed={self.collapsed}, t_collapse={self.t_collapse})")
 
@@ -134,7 +134,7 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
             recent.append(tt)
             if len(recent) == zeno_count and recent[-1] - recent[0] < zeno_window:
                 raise ZenoError(f"{zeno_count} events within {recent[-1] - recent[0]:.3g} s around t = {tt:.9g} s "
-                                f"(model {p.model}, law {p.hinge_law}): accumulating events; "
+                                f"(support {p.support}, law {p.hinge_law}): accumulating events; "
                                 "increase rest_rate or check the inputs")
             if len(events) > max_events:
                 raise ZenoError(f"more than {max_events} events by t = {tt:.9g} s")
@@ -154,7 +154,7 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
         stalled = stalled + 1 if t == t_last else 0
         t_last = t
         if stalled > 1000:
-            raise ZenoError(f"no progress at t = {t:.9g} s after 1000 restarts (model {p.model}, law {p.hinge_law})")
+            raise ZenoError(f"no progress at t = {t:.9g} s after 1000 restarts (support {p.support}, law {p.hinge_law})")
         if model.all_closed(st):  # rigid rest: nothing moves until the opening test fails
             t_open = _scan_rest(model, st, t, t_end, agf, uf, rest_dt)
             t_stop = t_end if t_open is None else t_open

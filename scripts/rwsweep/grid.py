@@ -9,10 +9,10 @@ import tomllib
 
 
 MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3}
+HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
 
 # The defaults of a grid; a TOML file's [grid] table and the flags replace them key by key.
-DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["semiRigidHinge"], kd_kN=[50.0],
+DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], kd_kN=[50.0],
                 scales=[1.0], pga_g=[], er=0.86, tail=5.0, rtol=1e-6, suite="fema", records_dir="",
                 records=[])
 
@@ -91,7 +91,7 @@ def expand(grid, suite):
                 tag = "x"
             for scale, pga in pairs:
                 sets = dict(h=geometry["h"], b=geometry["b"], W=geometry["W"], psi=geometry["psi"],
-                            er=grid["er"], model=MODELS[model], hingeLaw=HINGE_LAWS[law])
+                            er=grid["er"], support=MODELS[model], hingeLaw=HINGE_LAWS[law])
                 if not math.isnan(kd):
                     sets["Kd"] = kd * 1e3  # kN/m per m -> N/m per m
                 level = pga if tag == "pga" else scale

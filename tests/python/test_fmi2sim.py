@@ -106,23 +106,23 @@ def gaussian_signal(t_end=8.0):
 
 
 @pytest.mark.parametrize("model,law", [("simplySupported", "semiRigidHinge"), ("flexibleTop", "semiRigidHinge"),
-                                       ("flexibleTop", "semiRigidPaper")])
+                                       ("flexibleTop", "semiRigidPaper"), ("flexibleTop", "dohertyHinge")])
 def test_rockingwall_agrees_with_fmpy_and_reference(fmi2sim_exe, rockingwall_fmu, tmp_path, model, law):
     sig = gaussian_signal()
     out = tmp_path / "wall.csv"
-    sets = rw_fmu.start_values(model=model, hinge_law=law, Kd=1e5)
+    sets = rw_fmu.start_values(support=model, hinge_law=law, Kd=1e5)
     args = [a for name, v in sets.items() for a in ("--set", f"{name}={v}")]
     run(fmi2sim_exe, rockingwall_fmu, "--input", write_input(tmp_path / "in.csv", sig.t, sig.a),
         "--rtol", "1e-8", "--stop-time", sig.t[-1], "--output-interval", 0.01, "--output", out, *args)
     data = read_csv(out)
-    ref = simulate(Params(model=model, hinge_law=law, Kd=1e5), sig, float(sig.t[-1]),
+    ref = simulate(Params(support=model, hinge_law=law, Kd=1e5), sig, float(sig.t[-1]),
                    method="DOP853", rtol=1e-9, atol=1e-12)
     peak1, peak2 = np.max(np.abs(data["s1"])), np.max(np.abs(data["s2"]))
     assert peak1 == pytest.approx(ref.peak_s1, rel=0.01)
     assert peak2 == pytest.approx(ref.peak_s2, rel=0.01, abs=1e-6)
     assert int(data["impacts"][-1]) == ref.impacts
     if not ASAN_BUILD:
-        fm = rw_fmu.simulate(rockingwall_fmu, float(sig.t[-1]), sig.t, sig.a, rtol=1e-8, model=model,
+        fm = rw_fmu.simulate(rockingwall_fmu, float(sig.t[-1]), sig.t, sig.a, rtol=1e-8, support=model,
                              hinge_law=law, Kd=1e5)
         assert peak1 == pytest.approx(fm.peak_s1, rel=0.01)
         assert int(data["impacts"][-1]) == fm.impacts
@@ -140,13 +140,13 @@ def write_at2(path, acc_g, dt):
 def test_el_centro_csv_and_at2_agree_with_reference(fmi2sim_exe, rockingwall_fmu, tmp_path):
     rec = inputs.el_centro(0.5)
     t_end = float(rec.t[-1])
-    common = ["--set", "model=2", "--rtol", "1e-8", "--stop-time", t_end, "--output-interval", 0.01]
+    common = ["--set", "support=2", "--rtol", "1e-8", "--stop-time", t_end, "--output-interval", 0.01]
     run(fmi2sim_exe, rockingwall_fmu, "--input", write_input(tmp_path / "in.csv", rec.t, rec.a),
         "--output", tmp_path / "csv.csv", *common)
     at2 = write_at2(tmp_path / "elce.AT2", rec.a / 9.81 / 0.5, 0.02)
     run(fmi2sim_exe, rockingwall_fmu, "--ag", at2, "--ag-scale", 0.5, "--output", tmp_path / "at2.csv", *common)
     a, b = read_csv(tmp_path / "csv.csv"), read_csv(tmp_path / "at2.csv")
-    ref = simulate(Params(model="simplySupported"), rec, t_end, method="DOP853", rtol=1e-9, atol=1e-12)
+    ref = simulate(Params(support="simplySupported"), rec, t_end, method="DOP853", rtol=1e-9, atol=1e-12)
     assert np.max(np.abs(a["s1"])) == pytest.approx(ref.peak_s1, rel=0.01)
     assert np.max(np.abs(b["s1"])) == pytest.approx(np.max(np.abs(a["s1"])), rel=1e-5)
 
@@ -310,7 +310,7 @@ def test_fmu_and_option_errors(fmi2sim_exe, ball_fmu, tmp_path):
 
 
 def test_integer_type_is_checked(fmi2sim_exe, rockingwall_fmu):
-    proc = run(fmi2sim_exe, rockingwall_fmu, "--set", "model=1.5", check=False)
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--set", "support=1.5", check=False)
     assert proc.returncode != 0 and "'1.5' is not an Integer" in proc.stderr
 
 

@@ -12,14 +12,14 @@ from rwref import Params, simulate, inputs
 
 def test_fmpy_rhs_ignores_inputs_and_the_workaround_fixes_it(rockingwall_fmu):
     signal = inputs.sampled(inputs.gaussian(0.04, 1.0), 6.0, 0.002)  # Table 5.2's impulse, rigid 1DOF
-    kw = dict(model="simplySupported", hinge_law="rigid", rtol=1e-6, output_interval=0.01)
+    kw = dict(support="simplySupported", hinge_law="rigid", rtol=1e-6, output_interval=0.01)
     try:
         rw_fmu.fmpy_input_in_rhs(False)
         plain = rw_fmu.simulate(rockingwall_fmu, 6.0, signal.t, signal.a, **kw)
     finally:
         rw_fmu.fmpy_input_in_rhs(True)
     fixed = rw_fmu.simulate(rockingwall_fmu, 6.0, signal.t, signal.a, **kw)
-    ref = simulate(Params(model="simplySupported", hinge_law="rigid"), signal, 6.0,
+    ref = simulate(Params(support="simplySupported", hinge_law="rigid"), signal, 6.0,
                    method="DOP853", rtol=1e-9, atol=1e-12)
     err_fixed = abs(fixed.peak_s1 - ref.peak_s1) / ref.peak_s1
     err_plain = abs(plain.peak_s1 - ref.peak_s1) / ref.peak_s1

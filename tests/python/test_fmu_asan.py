@@ -37,7 +37,7 @@ fmu = {fmu!r}
 sig = inputs.sampled(inputs.gaussian(0.04, 1.0), 4.0, 0.002)
 for model, law in [("flexibleTop", "semiRigidHinge"), ("flexibleTop", "rigid"), ("parapet", "rigid"),
                    ("simplySupported", "semiRigidHinge")]:
-    r = rw_fmu.simulate(fmu, 4.0, sig.t, sig.a, rtol=1e-6, model=model, hinge_law=law, Kd=5e4)
+    r = rw_fmu.simulate(fmu, 4.0, sig.t, sig.a, rtol=1e-6, support=model, hinge_law=law, Kd=5e4)
     assert np.all(np.isfinite(r.s1)) and r.peak_s1 > 0, (model, law)
     print("RUN", model, law, r.peak_s1, r.impacts, r.collapsed)
 # Co-Simulation: CVODE inside the FMU, events located inside the steps

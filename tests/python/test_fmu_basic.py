@@ -45,7 +45,7 @@ def run(fmu, stop_time=10.0, start_values=None, inp=None, logger=None, fmi_type=
 @pytest.mark.parametrize("model,law", [(1, 1), (2, 1), (2, 3), (3, 1), (3, 2), (3, 3)])
 def test_runs_for_every_model_and_law(rockingwall_fmu, model, law):
     # the parapet uplifts at g*tan(alpha) = 0.59 m/s2 and collapses under the 40 mm pulse
-    r = run(rockingwall_fmu, start_values={"model": model, "hingeLaw": law, "Kd": 1e5},
+    r = run(rockingwall_fmu, start_values={"support": model, "hingeLaw": law, "Kd": 1e5},
             inp=gaussian(0.012 if model == 1 else 0.04))
     assert np.all(np.isfinite(r["s1"])) and np.all(np.isfinite(r["s2"]))
     assert r["time"][-1] == pytest.approx(10.0)
@@ -55,15 +55,15 @@ def test_runs_for_every_model_and_law(rockingwall_fmu, model, law):
 
 def test_paper_wall1_semi_rigid(rockingwall_fmu):
     """Table 5.2, wall 1, D = 40 mm, T = 1 s: 1DOF 0.064; 2DOF (semiRigidHinge) near 0.063/0.069/0.073."""
-    r = run(rockingwall_fmu, start_values={"model": 2}, inp=gaussian())
+    r = run(rockingwall_fmu, start_values={"support": 2}, inp=gaussian())
     assert np.max(np.abs(r["s1"])) == pytest.approx(0.064, abs=0.001)
     for Kd, s1 in [(1e6, 0.063), (1e5, 0.069), (5e4, 0.073)]:
-        r = run(rockingwall_fmu, start_values={"model": 3, "Kd": Kd}, inp=gaussian())
+        r = run(rockingwall_fmu, start_values={"support": 3, "Kd": Kd}, inp=gaussian())
         assert np.max(np.abs(r["s1"])) == pytest.approx(s1, abs=0.0015)
 
 
 def test_parapet_free_rocking_er1_keeps_energy(rockingwall_fmu):
-    r = run(rockingwall_fmu, start_values={"model": 1, "q1": 0.02, "er": 1.0})
+    r = run(rockingwall_fmu, start_values={"support": 1, "q1": 0.02, "er": 1.0})
     assert r["impacts"][-1] >= 5
     E = r["energy"]
     assert np.max(np.abs(E - E[0])) < 1e-3 * E[0]
@@ -72,7 +72,7 @@ def test_parapet_free_rocking_er1_keeps_energy(rockingwall_fmu):
 
 
 def test_parapet_free_rocking_decays_with_restitution(rockingwall_fmu):
-    r = run(rockingwall_fmu, start_values={"model": 1, "q1": 0.02, "er": 0.9})
+    r = run(rockingwall_fmu, start_values={"support": 1, "q1": 0.02, "er": 0.9})
     E = r["energy"]
     assert np.all(np.diff(E) <= 1e-6 * E[0])  # never grows (beyond integration error)
     assert E[-1] < 0.05 * E[0]
@@ -82,14 +82,14 @@ def test_parapet_free_rocking_decays_with_restitution(rockingwall_fmu):
 def test_rigid_wall_at_rest_under_small_ag_stays_at_rest(rockingwall_fmu, model):
     t = np.arange(0, 5.001, 0.01)
     inp = table(t, 0.5 * np.sin(2 * np.pi * 2 * t))  # 0.5 m/s2, below every uplift threshold
-    r = run(rockingwall_fmu, stop_time=5.0, start_values={"model": model, "hingeLaw": 1}, inp=inp)
+    r = run(rockingwall_fmu, stop_time=5.0, start_values={"support": model, "hingeLaw": 1}, inp=inp)
     assert np.all(r["s1"] == 0) and np.all(r["s2"] == 0)
     assert r["impacts"][-1] == 0
 
 
 def test_collapse_terminates_with_reason(rockingwall_fmu):
     log = Log()
-    r = run(rockingwall_fmu, start_values={"model": 2, "hingeLaw": 1}, inp=gaussian(0.2), logger=log)
+    r = run(rockingwall_fmu, start_values={"support": 2, "hingeLaw": 1}, inp=gaussian(0.2), logger=log)
     assert r["collapsed"][-1]
     assert r["time"][-1] < 10.0
     assert np.max(np.abs(r["s1"])) >= 0.15 - 1e-9
@@ -147,6 +147,6 @@ def test_fmu_rebuilds_from_its_sources(rockingwall_fmu, tmp_path):
     (tmp_path / "build").mkdir()
     build_platform_binary(unzipdir, build_dir=tmp_path / "build")
     assert (unzipdir / "binaries" / "linux64" / "RockingWall.so").exists()
-    a = run(rockingwall_fmu, start_values={"model": 3}, inp=gaussian())
-    b = run(unzipdir, start_values={"model": 3}, inp=gaussian())
+    a = run(rockingwall_fmu, start_values={"support": 3}, inp=gaussian())
+    b = run(unzipdir, start_values={"support": 3}, inp=gaussian())
     assert np.max(np.abs(b["s1"])) == pytest.approx(np.max(np.abs(a["s1"])), rel=1e-6)

@@ -19,6 +19,7 @@ MODEL_LAWS = [
     ("flexibleTop", "rigid"),
     ("flexibleTop", "semiRigidPaper"),
     ("flexibleTop", "semiRigidHinge"),
+    ("flexibleTop", "dohertyHinge"),
 ]
 # Table 5.2's walls and Gaussian amplitudes (T = 1 s); K_d = 100 kN/m for the 2DOF.
 WALLS = {1: (0.0, 0.040), 2: (0.5, 0.040), 3: (1.0, 0.050)}
@@ -33,10 +34,10 @@ PART_TOL = 0.05        # "parted": difference above 5 % of the peak
 def _run_both(fmu, model, law, psi, signal, t_end, Kd):
     params = dict(h=2.5, b=0.15, W=6622.0, psi=psi, Kd=Kd, er=0.86)
     grid = np.arange(0.0, t_end + DT_OUT / 2, DT_OUT)
-    ref = simulate(Params(model=model, hinge_law=law, **params), signal, t_end,
+    ref = simulate(Params(support=model, hinge_law=law, **params), signal, t_end,
                    method="DOP853", rtol=1e-9, atol=1e-12, t_out=grid)
     fmu_run = rw_fmu.simulate(fmu, t_end, signal.t, signal.a, rtol=1e-8, output_interval=DT_OUT,
-                              model=model, hinge_law=law, **params)
+                              support=model, hinge_law=law, **params)
     return ref, fmu_run, grid
 
 

@@ -10,11 +10,12 @@ import numpy as np
 import pytest
 
 CASES = {  # name: --set arguments (free rocking from an initial tilt, no input)
-    "parapet": ["model=1", "q1=0.03"],
-    "simplySupported rigid": ["model=2", "hingeLaw=1", "q1=0.03"],
-    "simplySupported trilinear": ["model=2", "hingeLaw=3", "q1=0.03"],
-    "flexibleTop rigid": ["model=3", "hingeLaw=1", "q1=0.02", "Kd=5e4"],
-    "flexibleTop semiRigidHinge": ["model=3", "hingeLaw=3", "q1=0.02", "Kd=5e4"],
+    "parapet": ["support=1", "q1=0.03"],
+    "simplySupported rigid": ["support=2", "hingeLaw=1", "q1=0.03"],
+    "simplySupported trilinear": ["support=2", "hingeLaw=3", "q1=0.03"],
+    "flexibleTop rigid": ["support=3", "hingeLaw=1", "q1=0.02", "Kd=5e4"],
+    "flexibleTop semiRigidHinge": ["support=3", "hingeLaw=3", "q1=0.02", "Kd=5e4"],
+    "flexibleTop dohertyHinge": ["support=3", "hingeLaw=4", "q1=0.02", "Kd=5e4"],
 }
 
 
@@ -50,7 +51,7 @@ def test_er_0_stops_a_one_hinge_wall_at_its_first_impact(fmi2sim_exe, rockingwal
 def test_er_0_two_body_wall_comes_to_rest_like_the_reference(fmi2sim_exe, rockingwall_fmu, tmp_path):
     from rwref import Params, simulate
     d = free_rocking(fmi2sim_exe, rockingwall_fmu, tmp_path, CASES["flexibleTop rigid"], 0.0, 10)
-    ref = simulate(Params(model="flexibleTop", hinge_law="rigid", Kd=5e4, er=0.0), None, 10.0,
+    ref = simulate(Params(support="flexibleTop", hinge_law="rigid", Kd=5e4, er=0.0), None, 10.0,
                    q0=(0.02, 0.0), method="DOP853", rtol=1e-9, atol=1e-12)
     assert int(d["impacts"][-1]) == ref.impacts > 1
     late = d["time"] > 5.0

@@ -15,7 +15,7 @@ def _housner_T(p, th0):
 
 @pytest.mark.parametrize("er", [1.0, 0.9])
 def test_parapet_free_rocking(er):
-    p = Params(model="parapet", er=er)
+    p = Params(support="parapet", er=er)
     th0 = p.alpha / 2
     T = _housner_T(p, th0)
     t_out = np.arange(0, 3 * T, 2e-5)
@@ -43,12 +43,14 @@ CONSERVATIVE = [
     ("flexibleTop", "rigid", (0.02, -0.01), (0.0, 0.0)),
     ("flexibleTop", "semiRigidHinge", (0.02, -0.01), (0.0, 0.0)),
     ("flexibleTop", "semiRigidHinge", (0.0, 0.0), (0.1, -0.3)),
+    ("flexibleTop", "dohertyHinge", (0.02, -0.01), (0.0, 0.0)),
+    ("flexibleTop", "dohertyHinge", (0.0, 0.0), (0.1, -0.3)),
 ]
 
 
 @pytest.mark.parametrize("model,law,q0,dq0", CONSERVATIVE)
 def test_energy_conserved_er1(model, law, q0, dq0):
-    p = Params(model=model, hinge_law=law, er=1.0, Kd=1e5)
+    p = Params(support=model, hinge_law=law, er=1.0, Kd=1e5)
     r = simulate(p, None, 3.0, q0=q0, dq0=dq0, **TIGHT)
     assert not r.collapsed
     assert r.impacts >= 2
@@ -58,23 +60,23 @@ def test_energy_conserved_er1(model, law, q0, dq0):
 
 @pytest.mark.parametrize("model,law,q0,dq0", CONSERVATIVE)
 def test_energy_never_increases(model, law, q0, dq0):
-    p = Params(model=model, hinge_law=law, er=0.8, Kd=1e5)
+    p = Params(support=model, hinge_law=law, er=0.8, Kd=1e5)
     r = simulate(p, None, 3.0, q0=q0, dq0=dq0, **TIGHT)
     E = r.energy
     assert r.impacts >= 2
     # The spec's closing maps (mid: dq2 := dq1; base: dq1 := 0, applied when the relative rate is
     # below restRate) are not projections in the kinetic-energy metric: they can change the kinetic
     # energy by up to about |M| * restRate * |dq|.  Allow exactly that much at each step.
-    Mn = np.abs(Params(model="flexibleTop", Kd=1e5).M).sum()
+    Mn = np.abs(Params(support="flexibleTop", Kd=1e5).M).sum()
     allow = 1e-7 * E[0] + 2 * Mn * p.rest_rate * (np.abs(r.dq1[:-1]) + np.abs(r.dq2[:-1]) + p.rest_rate)
     assert np.all(np.diff(E) <= allow)
     assert E[-1] < 0.9 * E[0]
 
 
 def _thresholds(p):
-    if p.model == "parapet":
+    if p.support == "parapet":
         return p.g * math.tan(p.alpha)
-    if p.model == "simplySupported":
+    if p.support == "simplySupported":
         return (4 * p.b / p.h) * (1 + 0.75 * p.psi) * p.g
     W1, Wd = p.W1, p.Wd
     return p.g * p.b * (2 * W1 + Wd) / (2 * p.h * (W1 + Wd))
@@ -83,7 +85,7 @@ def _thresholds(p):
 @pytest.mark.parametrize("model", ["parapet", "simplySupported", "flexibleTop"])
 @pytest.mark.parametrize("psi", [0.0, 0.5])
 def test_uplift_threshold(model, psi):
-    p = Params(model=model, hinge_law="rigid", psi=psi)
+    p = Params(support=model, hinge_law="rigid", psi=psi)
     thr = _thresholds(p)
     below = simulate(p, inputs.constant(-0.999 * thr), 0.5)
     assert below.events == [] and np.all(below.q1 == 0) and np.all(below.q2 == 0)
@@ -98,15 +100,15 @@ def test_stiff_spring_limit_is_simply_supported():
     simplySupported.  (The 2DOF semi-rigid laws reduce, for q2 = -q1, to hinge curves different from
     Doherty's trilinear, so the limit is checked with rigid hinges.)"""
     ag = inputs.gaussian(0.06, 1.0)
-    ss = simulate(Params(model="simplySupported", hinge_law="rigid", **WALLS[1]), ag, 4.0)
-    ft = simulate(Params(model="flexibleTop", hinge_law="rigid", Kd=1e9, **WALLS[1]), ag, 4.0)
+    ss = simulate(Params(support="simplySupported", hinge_law="rigid", **WALLS[1]), ag, 4.0)
+    ft = simulate(Params(support="flexibleTop", hinge_law="rigid", Kd=1e9, **WALLS[1]), ag, 4.0)
     assert ss.peak_s1 > 0.03
     assert ft.peak_s1 == pytest.approx(ss.peak_s1, rel=0.02)
     assert ft.peak_s2 < 1e-3 * ft.peak_s1
 
 
 def test_collapse_stops_the_run():
-    p = Params(model="simplySupported", hinge_law="rigid", **WALLS[1])
+    p = Params(support="simplySupported", hinge_law="rigid", **WALLS[1])
     r = simulate(p, inputs.gaussian(0.25, 1.0), 10.0)
     assert r.collapsed and r.t_collapse is not None and r.t[-1] == pytest.approx(r.t_collapse)
     assert r.events[-1][1] == "collapse"

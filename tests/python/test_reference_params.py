@@ -33,8 +33,8 @@ def test_bad_params_raise():
     with pytest.raises(ValueError):
         Params(er=1.5)
     with pytest.raises(ValueError):
-        Params(model="cantilever")
-    assert Params(model=2, hinge_law=1).model == "simplySupported"
+        Params(support="cantilever")
+    assert Params(support=2, hinge_law=1).support == "simplySupported"
 
 
 def test_derive_equations_agrees(tmp_path, repo):

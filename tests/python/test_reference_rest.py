@@ -7,7 +7,7 @@ from rwref import Params, simulate, inputs
 
 @pytest.mark.parametrize("model", ["parapet", "simplySupported", "flexibleTop"])
 def test_rigid_free_rocking_ends_at_rest(model):
-    p = Params(model=model, hinge_law="rigid", er=0.5, Kd=0.0)
+    p = Params(support=model, hinge_law="rigid", er=0.5, Kd=0.0)
     th = 0.02
     q0 = {"parapet": (th, th), "simplySupported": (th, -th), "flexibleTop": (th, -th)}[model]
     r = simulate(p, None, 5.0, q0=q0)
@@ -19,7 +19,7 @@ def test_rigid_free_rocking_ends_at_rest(model):
 
 @pytest.mark.parametrize("model", ["parapet", "simplySupported"])
 def test_er0_stops_at_first_impact(model):
-    p = Params(model=model, hinge_law="rigid", er=0.0)
+    p = Params(support=model, hinge_law="rigid", er=0.0)
     r = simulate(p, None, 5.0, q0=(0.02, 0.02 if model == "parapet" else -0.02))
     assert r.impacts == 1
     assert [k for _, k in r.events] == ["base_impact", "close"]

@@ -34,7 +34,7 @@ def test_the_matrix_covers_every_listed_value():
             if axis == "Kd" and model != "flexibleTop":
                 continue
             for v in values:
-                assert any(c.model == model and c.law == law and math.isclose(getattr(c, axis), v, rel_tol=0.02)
+                assert any(c.support == model and c.law == law and math.isclose(getattr(c, axis), v, rel_tol=0.02)
                            for c in CASES.values()), (model, law, axis, v)
     assert all(name in CASES for name in QUICK)
 

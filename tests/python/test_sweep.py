@@ -46,7 +46,7 @@ def by_hand(exe, fmu, rec, scale, stop, kd_kN, tmp_path, rtol=1e-6):
     """One fmi2sim run typed out in full, not through rwsweep."""
     out = tmp_path / "hand.json"
     args = [exe, fmu, "--ag", rec, "--ag-scale", repr(scale), "--stop-time", repr(stop), "--rtol", repr(rtol),
-            "--summary", out, "--set", "model=3", "--set", "hingeLaw=3", "--set", "er=0.86", "--set", f"Kd={kd_kN * 1e3!r}"]
+            "--summary", out, "--set", "support=3", "--set", "hingeLaw=3", "--set", "er=0.86", "--set", f"Kd={kd_kN * 1e3!r}"]
     args += [a for k, v in WALL_1.items() for a in ("--set", f"{k}={v!r}")]
     subprocess.run(list(map(str, args)), check=True, capture_output=True, timeout=60)
     return json.loads(out.read_text())["outputs"]
