@@ -81,7 +81,14 @@ static int extract_entry(fmu_archive *a, zip_int64_t i, const char *name, long l
     zip_t *zip = a->zip;
     char path[8192];
     zip_file_t *zf;
+    zip_stat_t zs;
     int fd, rc;
+    /* the declared size refuses a bomb before a byte is written; copy_entry's count catches a
+     * header that lies */
+    if (zip_stat_index(zip, (zip_uint64_t)i, 0, &zs) == 0 && (zs.valid & ZIP_STAT_SIZE) && zs.size > (zip_uint64_t)limit) {
+        snprintf(err, n, "%s: entry '%s' is larger than the limit of %ld MiB", a->path, name, limit >> 20);
+        return -1;
+    }
     snprintf(path, sizeof path, "%s/%s", a->dir, name);
     if (make_parents(a->dir, path) != 0) {
         snprintf(err, n, "%s: cannot create the folders for %s: %s", a->path, path, strerror(errno));
@@ -137,7 +144,8 @@ static int extract_resources(fmu_archive *a, char *err, size_t n)
         }
         if (extract_entry(a, i, name, FMU_RESOURCES_MAX_BYTES - bytes, &size, err, n) != 0) {
             if (strstr(err, "larger than the limit"))
-                snprintf(err, n, "%s: resources/ is larger than the limit of %ld MiB", a->path, FMU_RESOURCES_MAX_BYTES >> 20);
+                snprintf(err, n, "%s: resources/ is larger than the limit of %ld MiB (at entry '%s')", a->path,
+                         FMU_RESOURCES_MAX_BYTES >> 20, name);
             return -1;
         }
         bytes += size;
