@@ -18,15 +18,19 @@ SO = "binaries/linux64/RockingWall.so"
 MD = "modelDescription.xml"
 
 
-def run(exe, *args, limits=None, env=None, timeout=120, **kw):
-    """fmi2sim with optional resource limits; SIGXFSZ ignored so that a write over the file-size
-    limit fails with EFBIG (what a full disk does) instead of killing the process."""
+def limited(limits):
+    """A preexec_fn setting resource limits, with SIGXFSZ ignored so that a write over the
+    file-size limit fails with EFBIG (what a full disk does) instead of killing the process."""
     def preexec():
         signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
         for what, value in (limits or {}).items():
             resource.setrlimit(what, (value, value))
+    return preexec
+
+
+def run(exe, *args, limits=None, env=None, timeout=120, **kw):
     return subprocess.run([str(exe), *map(str, args)], capture_output=True, text=True, timeout=timeout,
-                          preexec_fn=preexec, env=env, **kw)
+                          preexec_fn=limited(limits), env=env, **kw)
 
 
 def memory_cap():
@@ -152,7 +156,8 @@ OPTION_CASES = {
 def test_finding06_options_out_of_range_are_refused(fmi2sim_exe, rockingwall_fmu, tmp_path, case):
     """The old fmi2sim ran these with wrong answers and exit 0, hung, or wrote without bound."""
     args, message = OPTION_CASES[case]
-    proc = run(fmi2sim_exe, rockingwall_fmu, *args, "--output", tmp_path / "o.csv", timeout=30)
+    proc = run(fmi2sim_exe, rockingwall_fmu, *args, "--output", tmp_path / "o.csv", timeout=30,
+               limits={resource.RLIMIT_FSIZE: 64 << 20})
     assert_one_clear_error(proc, message)
     assert not (tmp_path / "o.csv").exists()
 
@@ -294,7 +299,8 @@ def test_finding11_only_needed_entries_are_extracted(fmi2sim_exe, rockingwall_fm
                       entries={"sources/bomb.c": zeros(300 << 20), "documentation/index.html": b"<html/>",
                                "resources/table.txt": b"1 2 3\n"})
     proc = subprocess.Popen([str(fmi2sim_exe), str(fmu), "--stop-time", "100", "--output-interval", "1e-4"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env,
+                            preexec_fn=limited({resource.RLIMIT_FSIZE: 64 << 20}))
     try:
         assert proc.stdout.readline().startswith(b"time,")
         (unpacked,) = tdir.iterdir()
