@@ -285,6 +285,34 @@ static int read_derivatives(const char *path, xmlNode *root, model_description *
     return 0;
 }
 
+/* ModelStructure/Outputs: the 1-based indices of exactly the variables with causality "output"
+ * (fmi2sim writes those; a description that disagrees with itself is corrupt). */
+static int read_outputs(const char *path, xmlNode *root, const model_description *md, char *err, size_t n)
+{
+    xmlNode *outs = child(child(root, "ModelStructure"), "Outputs");
+    size_t declared = 0, listed = 0;
+    for (size_t i = 0; i < md->n_vars; i++) declared += strcmp(md->vars[i].causality, "output") == 0;
+    for (xmlNode *c = outs ? outs->children : NULL; c; c = c->next) {
+        char *ix;
+        unsigned long long k = 0;
+        if (c->type != XML_ELEMENT_NODE || strcmp((const char *)c->name, "Unknown") != 0) continue;
+        ix = attr(c, "index");
+        if (parse_count(ix, md->n_vars, &k) != 0 || k == 0 || strcmp(md->vars[k - 1].causality, "output") != 0) {
+            snprintf(err, n, "%s:%d: Outputs Unknown index '%s' is not the index (1 to %zu) of a variable with "
+                     "causality output", path, c->line, ix ? ix : "(missing)", md->n_vars);
+            free(ix);
+            return -1;
+        }
+        free(ix);
+        listed++;
+    }
+    if (listed != declared) {
+        snprintf(err, n, "%s: ModelStructure lists %zu Outputs, but %zu variables have causality output", path, listed, declared);
+        return -1;
+    }
+    return 0;
+}
+
 static int read_model_exchange(const char *path, xmlNode *root, model_description *md, char *err, size_t n)
 {
     xmlNode *me = child(root, "ModelExchange");
@@ -326,7 +354,7 @@ int md_parse(const char *path, model_description *md, char *err, size_t n)
     if (!md->guid) { snprintf(err, n, "%s: no guid attribute", path); goto fail; }
     if (read_model_exchange(path, root, md, err, n) != 0 || read_event_indicators(path, root, md, err, n) != 0 ||
         read_default_experiment(path, root, md, err, n) != 0 || read_variables(path, root, md, err, n) != 0 ||
-        read_derivatives(path, root, md, err, n) != 0)
+        read_derivatives(path, root, md, err, n) != 0 || read_outputs(path, root, md, err, n) != 0)
         goto fail;
     xmlFreeDoc(doc);
     return 0;

@@ -14,20 +14,24 @@
 #include "cleanup.h"
 
 /* The file the output replaces: a symlink is followed, so the link stays and its target is
- * written, as a plain fopen would. 1: write in place (not a regular file), 0: temp + rename. */
+ * written, as a plain fopen would. 1: write in place (a device, a FIFO, /dev/stdout), 0: temp
+ * file + rename, -1: error. */
 static int resolve_target(output_file *o, const char *path, char *err, size_t n)
 {
-    struct stat st;
+    struct stat st, lst;
+    char real[PATH_MAX];
     snprintf(o->path, sizeof o->path, "%s", path);
-    if (lstat(path, &st) != 0) return 0; /* a new file */
-    if (S_ISLNK(st.st_mode)) {
-        char real[PATH_MAX];
-        if (!realpath(path, real)) { snprintf(err, n, "%s: %s (a symbolic link to nothing)", path, strerror(errno)); return -1; }
-        snprintf(o->path, sizeof o->path, "%s", real);
-        if (stat(real, &st) != 0) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    if (stat(path, &st) != 0) {
+        if (lstat(path, &lst) == 0) { snprintf(err, n, "%s: a symbolic link to nothing", path); return -1; }
+        return 0; /* a new file */
     }
     if (S_ISDIR(st.st_mode)) { snprintf(err, n, "%s: is a folder, not a file", path); return -1; }
-    return S_ISREG(st.st_mode) ? 0 : 1;
+    if (!S_ISREG(st.st_mode)) return 1;
+    if (lstat(path, &lst) == 0 && S_ISLNK(lst.st_mode)) {
+        if (!realpath(path, real)) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+        snprintf(o->path, sizeof o->path, "%s", real);
+    }
+    return 0;
 }
 
 static int open_temp(output_file *o, char *err, size_t n)

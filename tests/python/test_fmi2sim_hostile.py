@@ -81,8 +81,10 @@ def test_finding01_full_disk_exits_nonzero(fmi2sim_exe, rockingwall_fmu, tmp_pat
 
     out = tmp_path / "out.csv"
     out.write_text("precious\n")
+    with zipfile.ZipFile(rockingwall_fmu) as z:
+        room = z.getinfo(SO).file_size + (1 << 20)  # the binary is unpacked, the CSV (~5 MB) is not
     proc = run(fmi2sim_exe, rockingwall_fmu, "--stop-time", 10, "--output-interval", 1e-4, "--output", out,
-               limits={resource.RLIMIT_FSIZE: 1 << 20})
+               limits={resource.RLIMIT_FSIZE: room})
     assert_one_clear_error(proc, out, "write failed", "File too large")
     assert out.read_text() == "precious\n"
     assert leftovers(tmp_path) == ["out.csv"]
@@ -115,6 +117,10 @@ MD_CASES = {
                        ["ModelStructure lists 0 Derivatives, but 4 variables have a derivative attribute"]),
     "derivative_index": (sub('<Unknown index="28" dependencies="28"/>', '<Unknown index="999" dependencies="28"/>'),
                          ["Derivatives Unknown index '999'"]),
+    "output_not_listed": (lambda t: re.sub(r"<Outputs>\s*<Unknown[^>]*/>", "<Outputs>", t, count=1),
+                          ["ModelStructure lists 8 Outputs, but 9 variables have causality output"]),
+    "output_index": (lambda t: re.sub(r'(<Outputs>\s*<Unknown index=")\d+', r"\g<1>1", t, count=1),
+                     ["Outputs Unknown index '1' is not the index"]),
     "value_reference_wraps": (sub('name="s1" valueReference="30"', 'name="s1" valueReference="4294967326"'),
                               ["variable 's1' has valueReference '4294967326'", "[0, 4294967295]"]),
     "value_reference_negative": (sub('name="s1" valueReference="30"', 'name="s1" valueReference="-2"'),
