@@ -194,27 +194,32 @@ static int inside_folder(const char *path, const char *folder)
     return strncmp(dir, root, len) == 0 && (dir[len] == '/' || dir[len] == '\0');
 }
 
-/* Refuse an output that is (device and inode, symlinks followed) one of the inputs or the other
- * output, or lies inside a folder FMU: writing it would destroy the input. */
+/* Are a and b the same existing regular file (device and inode, symlinks followed)? */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+/* Refuse an output that is one of the inputs, lies inside a folder FMU, or is the other output:
+ * writing it would destroy what the run reads (or the other result). */
 static int check_outputs(const named_path *outs, size_t nout, const named_path *ins, size_t nin)
 {
     for (size_t i = 0; i < nout; i++) {
-        struct stat so, si;
         if (!outs[i].path) continue;
         for (size_t j = 0; j < nin; j++) {
-            if (!ins[j].path || stat(ins[j].path, &si) != 0) continue;
-            if (S_ISDIR(si.st_mode) && inside_folder(outs[i].path, ins[j].path))
+            struct stat st;
+            if (!ins[j].path || stat(ins[j].path, &st) != 0) continue;
+            if (S_ISDIR(st.st_mode) && inside_folder(outs[i].path, ins[j].path))
                 return die("%s %s lies inside the FMU folder %s: refusing to write into an input", outs[i].what,
                            outs[i].path, ins[j].path);
-            if (stat(outs[i].path, &so) == 0 && S_ISREG(so.st_mode) && so.st_dev == si.st_dev && so.st_ino == si.st_ino)
+            if (same_file(outs[i].path, ins[j].path))
                 return die("%s %s is the same file as %s %s: refusing to overwrite an input", outs[i].what,
                            outs[i].path, ins[j].what, ins[j].path);
         }
         for (size_t j = 0; j < i; j++)
-            if (outs[j].path && stat(outs[i].path, &so) == 0 && stat(outs[j].path, &si) == 0 && S_ISREG(so.st_mode) &&
-                so.st_dev == si.st_dev && so.st_ino == si.st_ino)
-                return die("%s %s is the same file as %s %s", outs[i].what, outs[i].path, outs[j].what, outs[j].path);
-            else if (outs[j].path && strcmp(outs[i].path, outs[j].path) == 0)
+            if (outs[j].path && (strcmp(outs[i].path, outs[j].path) == 0 || same_file(outs[i].path, outs[j].path)))
                 return die("%s and %s are both %s", outs[j].what, outs[i].what, outs[i].path);
     }
     return 0;
