@@ -81,8 +81,15 @@ static void on_signal(int sig)
     raise(sig); /* delivered when the handler returns: the exit status says which signal */
 }
 
+/* an FMU that calls exit() skips main's cleanup */
+static void at_exit(void)
+{
+    remove_entries();
+}
+
 void cleanup_install_signal_handlers(void)
 {
+    atexit(at_exit);
     for (size_t i = 0; i < sizeof caught / sizeof caught[0]; i++) {
         struct sigaction sa, old;
         memset(&sa, 0, sizeof sa);

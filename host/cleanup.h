@@ -10,8 +10,9 @@ int cleanup_push(const char *path, int is_dir);
 void cleanup_forget(const char *path);
 /* Remove everything remembered, newest first (folders must be empty by then). */
 void cleanup_all(void);
-/* Catch SIGINT, SIGTERM, SIGHUP, SIGPIPE (unless ignored by the parent); ignore SIGXFSZ so that a
- * write over the file-size limit fails with EFBIG and is reported like any failed write. */
+/* Catch SIGINT, SIGTERM, SIGHUP, SIGPIPE (unless ignored by the parent) and exit() called from
+ * inside the FMU; ignore SIGXFSZ so that a write over the file-size limit fails with EFBIG and is
+ * reported like any failed write. */
 void cleanup_install_signal_handlers(void);
 
 #endif

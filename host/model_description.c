@@ -167,9 +167,11 @@ static char *read_md_file(const char *path, long *len, char *err, size_t n)
     }
     fclose(f);
     buf[*len] = '\0';
-    if (strstr(buf, "<!DOCTYPE") || strstr(buf, "<!ENTITY")) {
+    /* memmem, not strstr: a NUL byte must not hide what follows it */
+    const char *at = memmem(buf, (size_t)*len, "<!DOCTYPE", 9);
+    if (!at) at = memmem(buf, (size_t)*len, "<!ENTITY", 8);
+    if (at) {
         long line = 1;
-        const char *at = strstr(buf, "<!DOCTYPE") ? strstr(buf, "<!DOCTYPE") : strstr(buf, "<!ENTITY");
         for (const char *p = buf; p < at; p++) line += *p == '\n';
         snprintf(err, n, "%s:%ld: a DOCTYPE or entity declaration is not allowed in a model description", path, line);
         free(buf);
