@@ -209,7 +209,7 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
         snprintf(err, n, "%s:4: expected 'NPTS= N, DT= dt SEC' in the header, found '%s'", path, trim(line));
         goto done;
     }
-    if (npts > 100000000L) { snprintf(err, n, "%s:4: NPTS = %ld is too large", path, npts); goto done; }
+    if (npts > 100000000L) { snprintf(err, n, "%s:4: NPTS = %ld is too large (the limit is 100000000)", path, npts); goto done; }
     if (!isfinite((double)npts * dt) || (double)npts * dt > INPUT_MAX_ABS) {
         snprintf(err, n, "%s:4: NPTS * DT = %ld * %g is out of range", path, npts, dt);
         goto done;

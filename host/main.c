@@ -2,16 +2,22 @@
  * This file is the command line: options, checks of names and types against the model
  * description, input files, and the report. The simulation itself is in simulate_me.c. */
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
+#include "cleanup.h"
 #include "fmu_archive.h"
 #include "fmu_binary.h"
 #include "input_table.h"
 #include "model_description.h"
+#include "output_file.h"
 #include "simulate_me.h"
 #include "summary.h"
 
@@ -22,26 +28,32 @@ static const char *usage =
     "Simulates an FMI 2.0 Model-Exchange FMU with SUNDIALS CVODE and writes a CSV of its outputs.\n"
     "\n"
     "  --solver bdf|adams       CVODE method (default bdf)\n"
-    "  --rtol R                 relative tolerance (default 1e-6)\n"
-    "  --atol A                 absolute tolerance (default rtol * nominal of each state)\n"
-    "  --max-step H             largest CVODE step (default none)\n"
-    "  --start-time T           default: DefaultExperiment startTime, else 0\n"
-    "  --stop-time T            default: DefaultExperiment stopTime, else 1\n"
-    "  --output-interval H      regular output grid (default (stop-start)/500)\n"
+    "  --rtol R                 relative tolerance in [1e-12, 0.01] (default 1e-8: free rocking\n"
+    "                           then loses < 0.2 % of its energy per 100 s; 2.6 % at 1e-6)\n"
+    "  --atol A                 absolute tolerance in [1e-16, 0.01] x the nominal of every state\n"
+    "                           (default rtol * nominal of each state)\n"
+    "  --max-step H             largest CVODE step, >= (stop - start) x 1e-8 (default none)\n"
+    "  --start-time T           in [-1e9, 1e9] s; default: DefaultExperiment startTime, else 0\n"
+    "  --stop-time T            in [-1e9, 1e9] s, stop - start >= 1e-6 x max(1, |start|, |stop|);\n"
+    "                           default: DefaultExperiment stopTime, else 1\n"
+    "  --output-interval H      regular output grid in [(stop - start) x 1e-7, stop - start]\n"
+    "                           (default (stop - start)/500)\n"
     "  --set NAME=VALUE         start value by variable name (repeatable; type-checked)\n"
     "  --input FILE.csv         inputs: header 'time,NAME,...', rows of numbers, times increasing;\n"
     "                           linearly interpolated, ends held\n"
     "  --ag FILE.AT2            PEER NGA acceleration record (in g) for the input 'ag' [m/s2]\n"
     "  --ag-scale S             factor on the record (default 1)\n"
-    "  --g G                    gravity used to convert g to m/s2 (default 9.81)\n"
+    "  --g G                    gravity used to convert g to m/s2, in [0.1, 100] (default 9.81)\n"
     "  --output FILE.csv        time and every output, plus a row before and after each event\n"
-    "                           (default: standard output)\n"
+    "                           (default: standard output); written to a temporary file beside it\n"
+    "                           and renamed into place only when the run succeeded; never an input\n"
     "  --summary FILE.json      max |value| and final value of every output (over output rows\n"
     "                           and solver steps); without --output no time history is written\n"
     "  --stats                  steps, evaluations, events and CPU time to standard error\n"
     "  --log                    switch the FMU's debug logging on\n"
     "  --help, --version\n"
-    "Errors are reported as one line 'fmi2sim: error: ...' and a non-zero exit status.\n";
+    "Errors are reported as one line 'fmi2sim: error: ...' and a non-zero exit status. On SIGINT,\n"
+    "SIGTERM, SIGHUP and SIGPIPE the unpacked FMU and temporary files are removed first.\n";
 
 static int die(const char *fmt, ...)
 {
@@ -118,6 +130,115 @@ static int check_inputs(const model_description *md, const input_table *tabs, si
     return 0;
 }
 
+/* ---- ranges of the options (stated in the usage text) ---------------------------------------- */
+#define RTOL_MIN 1e-12
+#define RTOL_MAX 1e-2
+#define TIME_MAX 1e9              /* |start|, |stop| [s]: 30 years */
+#define SPAN_MIN_REL 1e-6         /* stop - start against the times' magnitude: resolvable steps */
+#define MAX_STEP_MIN_REL 1e-8     /* --max-step forces at most 1e8 steps */
+#define INTERVAL_MIN_REL 1e-7     /* the output grid has at most 1e7 rows */
+#define G_MIN 0.1
+#define G_MAX 100.0
+
+static int in_range(const char *opt, double x, double lo, double hi)
+{
+    if (x >= lo && x <= hi) return 0;
+    die("%s %g is out of range: it must lie in [%g, %g]", opt, x, lo, hi);
+    return -1;
+}
+
+/* The options that depend on the start and stop times, once those are known. */
+static int check_times(const sim_options *o, double max_step, double interval)
+{
+    const double span = o->stop_time - o->start_time;
+    const double scale = fmax(1.0, fmax(fabs(o->start_time), fabs(o->stop_time)));
+    if (in_range("start time", o->start_time, -TIME_MAX, TIME_MAX) || in_range("stop time", o->stop_time, -TIME_MAX, TIME_MAX))
+        return -1;
+    if (!(span >= SPAN_MIN_REL * scale)) {
+        die("stop time %.17g - start time %.17g = %g is out of range: it must be >= 1e-6 x max(1, |start|, |stop|) = %g",
+            o->stop_time, o->start_time, span, SPAN_MIN_REL * scale);
+        return -1;
+    }
+    if (max_step > 0 && max_step < MAX_STEP_MIN_REL * span) {
+        die("--max-step %g is out of range: it must be >= (stop - start) x 1e-8 = %g", max_step, MAX_STEP_MIN_REL * span);
+        return -1;
+    }
+    if (!isnan(interval)) return in_range("--output-interval", interval, INTERVAL_MIN_REL * span, span);
+    return 0;
+}
+
+/* "/tmp/fmi2sim_XXXXXX/modelDescription.xml:7: ..." as "modelDescription.xml:7: ...": the
+ * temporary folder is gone when the user reads the message, the FMU's name is given with it. */
+static const char *without_temp_dir(const char *msg, const fmu_archive *a)
+{
+    size_t len = strlen(a->dir);
+    return a->is_temp && strncmp(msg, a->dir, len) == 0 && msg[len] == '/' ? msg + len + 1 : msg;
+}
+
+/* ---- outputs are never inputs -------------------------------------------------------------- */
+typedef struct {
+    const char *path, *what;
+} named_path;
+
+/* Does path lie inside folder (both resolved)? A folder FMU's files are inputs too. */
+static int inside_folder(const char *path, const char *folder)
+{
+    char dir[PATH_MAX], root[PATH_MAX], copy[PATH_MAX];
+    char *slash;
+    size_t len;
+    snprintf(copy, sizeof copy, "%s", path);
+    slash = strrchr(copy, '/');
+    if (slash) *slash = '\0'; else snprintf(copy, sizeof copy, ".");
+    if (!realpath(copy[0] ? copy : "/", dir) || !realpath(folder, root)) return 0;
+    len = strlen(root);
+    return strncmp(dir, root, len) == 0 && (dir[len] == '/' || dir[len] == '\0');
+}
+
+/* Are a and b the same existing regular file (device and inode, symlinks followed)? */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && S_ISREG(sa.st_mode) && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
+/* Refuse an output that is one of the inputs, lies inside a folder FMU, or is the other output:
+ * writing it would destroy what the run reads (or the other result). */
+static int check_outputs(const named_path *outs, size_t nout, const named_path *ins, size_t nin)
+{
+    for (size_t i = 0; i < nout; i++) {
+        if (!outs[i].path) continue;
+        for (size_t j = 0; j < nin; j++) {
+            struct stat st;
+            if (!ins[j].path || stat(ins[j].path, &st) != 0) continue;
+            if (S_ISDIR(st.st_mode) && inside_folder(outs[i].path, ins[j].path))
+                return die("%s %s lies inside the FMU folder %s: refusing to write into an input", outs[i].what,
+                           outs[i].path, ins[j].path);
+            if (same_file(outs[i].path, ins[j].path))
+                return die("%s %s is the same file as %s %s: refusing to overwrite an input", outs[i].what,
+                           outs[i].path, ins[j].what, ins[j].path);
+        }
+        for (size_t j = 0; j < i; j++)
+            if (outs[j].path && (strcmp(outs[i].path, outs[j].path) == 0 || same_file(outs[i].path, outs[j].path)))
+                return die("%s and %s are both %s", outs[j].what, outs[i].what, outs[i].path);
+    }
+    return 0;
+}
+
+/* With a standard stream closed, the next open file would take its number and the CSV would end
+ * up on stderr (or the stats inside the CSV): give each closed one /dev/null. Returns a bit per
+ * stream that was closed. */
+static int reopen_closed_std_streams(void)
+{
+    int closed = 0;
+    for (int fd = 0; fd <= 2; fd++)
+        if (fcntl(fd, F_GETFD) == -1 && errno == EBADF) {
+            closed |= 1 << fd;
+            if (open("/dev/null", fd == 0 ? O_RDONLY : O_WRONLY) != fd) return closed; /* cannot happen */
+        }
+    return closed;
+}
+
 int main(int argc, char **argv)
 {
     const char *fmu_path = NULL, *csv_path = NULL, *at2_path = NULL, *out_path = NULL;
@@ -125,6 +246,7 @@ int main(int argc, char **argv)
     sim_summary summary = {0};
     double ag_scale = 1.0, g = 9.81;
     int stats_on = 0, status = 1;
+    const int closed_streams = reopen_closed_std_streams();
     start_value *sets = calloc((size_t)argc, sizeof *sets);
     size_t nsets = 0;
     sim_options opt;
@@ -132,6 +254,7 @@ int main(int argc, char **argv)
     model_description md;
     fmu_archive archive;
     fmu_binary bin;
+    output_file csv;
     input_table tabs[2];
     const char *tab_files[2];
     size_t ntab = 0;
@@ -142,12 +265,15 @@ int main(int argc, char **argv)
     memset(&md, 0, sizeof md);
     memset(&archive, 0, sizeof archive);
     memset(&bin, 0, sizeof bin);
-    opt.rtol = 1e-6;
+    memset(&csv, 0, sizeof csv);
+    opt.rtol = 1e-8; /* free rocking loses < 0.2 % of its energy per 100 s (scripts/stability_cases.py) */
+    cleanup_install_signal_handlers();
     if (!sets) return die("out of memory");
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *val = (i + 1 < argc) ? argv[i + 1] : NULL;
 #define NEED_VALUE() do { if (!val) { status = die("%s needs a value", a); goto out; } i++; } while (0)
+#define NUMBER(target) do { NEED_VALUE(); if (parse_double(a, val, (target))) { status = 2; goto out; } } while (0)
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) { fputs(usage, stdout); status = 0; goto out; }
         else if (!strcmp(a, "--version")) { printf("fmi2sim " FMI2SIM_VERSION "\n"); status = 0; goto out; }
         else if (!strcmp(a, "--solver")) {
@@ -156,14 +282,14 @@ int main(int argc, char **argv)
             else if (!strcmp(val, "adams")) opt.adams = 1;
             else { status = die("--solver: '%s' is not bdf or adams", val); goto out; }
         }
-        else if (!strcmp(a, "--rtol")) { NEED_VALUE(); if (parse_double(a, val, &opt.rtol) || opt.rtol <= 0) { status = die("--rtol must be > 0"); goto out; } }
-        else if (!strcmp(a, "--atol")) { NEED_VALUE(); if (parse_double(a, val, &opt.atol) || opt.atol <= 0) { status = die("--atol must be > 0"); goto out; } }
-        else if (!strcmp(a, "--max-step")) { NEED_VALUE(); if (parse_double(a, val, &opt.max_step) || opt.max_step <= 0) { status = die("--max-step must be > 0"); goto out; } }
-        else if (!strcmp(a, "--start-time")) { NEED_VALUE(); if (parse_double(a, val, &start)) goto out; }
-        else if (!strcmp(a, "--stop-time")) { NEED_VALUE(); if (parse_double(a, val, &stop)) goto out; }
-        else if (!strcmp(a, "--output-interval")) { NEED_VALUE(); if (parse_double(a, val, &interval) || interval <= 0) { status = die("--output-interval must be > 0"); goto out; } }
-        else if (!strcmp(a, "--ag-scale")) { NEED_VALUE(); if (parse_double(a, val, &ag_scale)) goto out; }
-        else if (!strcmp(a, "--g")) { NEED_VALUE(); if (parse_double(a, val, &g) || g <= 0) { status = die("--g must be > 0"); goto out; } }
+        else if (!strcmp(a, "--rtol")) { NUMBER(&opt.rtol); if (in_range(a, opt.rtol, RTOL_MIN, RTOL_MAX)) { status = 2; goto out; } }
+        else if (!strcmp(a, "--atol")) { NUMBER(&opt.atol); if (opt.atol <= 0) { status = die("--atol must be > 0"); goto out; } }
+        else if (!strcmp(a, "--max-step")) { NUMBER(&opt.max_step); if (opt.max_step <= 0) { status = die("--max-step must be > 0"); goto out; } }
+        else if (!strcmp(a, "--start-time")) NUMBER(&start);
+        else if (!strcmp(a, "--stop-time")) NUMBER(&stop);
+        else if (!strcmp(a, "--output-interval")) { NUMBER(&interval); if (interval <= 0) { status = die("--output-interval must be > 0"); goto out; } }
+        else if (!strcmp(a, "--ag-scale")) NUMBER(&ag_scale);
+        else if (!strcmp(a, "--g")) { NUMBER(&g); if (in_range(a, g, G_MIN, G_MAX)) { status = 2; goto out; } }
         else if (!strcmp(a, "--input")) { NEED_VALUE(); csv_path = val; }
         else if (!strcmp(a, "--ag")) { NEED_VALUE(); at2_path = val; }
         else if (!strcmp(a, "--output")) { NEED_VALUE(); out_path = val; }
@@ -181,13 +307,24 @@ int main(int argc, char **argv)
         else if (a[0] == '-' && a[1]) { status = die("unknown option '%s' (see --help)", a); goto out; }
         else if (!fmu_path) fmu_path = a;
         else { status = die("more than one FMU given: '%s' and '%s'", fmu_path, a); goto out; }
+#undef NUMBER
 #undef NEED_VALUE
     }
     if (!fmu_path) { fputs(usage, stderr); status = 2; goto out; }
+    if (!out_path && !summary_path && (closed_streams & 2)) {
+        status = die("standard output is closed: give --output FILE.csv (or --summary FILE.json)");
+        goto out;
+    }
+    {
+        const named_path outs[] = {{out_path, "--output"}, {summary_path, "--summary"}};
+        const named_path ins[] = {{fmu_path, "the FMU"}, {csv_path, "--input"}, {at2_path, "--ag"}};
+        if ((status = check_outputs(outs, 2, ins, 3)) != 0) goto out;
+        status = 1;
+    }
 
     if (fmu_unpack(fmu_path, &archive, err, sizeof err) != 0) { status = die("%s", err); goto out; }
     snprintf(mdpath, sizeof mdpath, "%s/modelDescription.xml", archive.dir);
-    if (md_parse(mdpath, &md, err, sizeof err) != 0) { status = die("%s: %s", fmu_path, err); goto out; }
+    if (md_parse(mdpath, &md, err, sizeof err) != 0) { status = die("%s: %s", fmu_path, without_temp_dir(err, &archive)); goto out; }
     for (size_t i = 0; i < nsets; i++)
         if ((status = check_start_value(&md, sets[i].name, sets[i].value)) != 0) goto out;
     if (csv_path) {
@@ -199,11 +336,12 @@ int main(int argc, char **argv)
         tab_files[ntab++] = at2_path;
     }
     if ((status = check_inputs(&md, tabs, ntab, tab_files)) != 0) goto out;
-    status = 1;
+    status = 2;
 
     opt.start_time = !isnan(start) ? start : (md.has_start_time ? md.start_time : 0.0);
     opt.stop_time = !isnan(stop) ? stop : (md.has_stop_time ? md.stop_time : 1.0);
-    if (!(opt.stop_time > opt.start_time)) { status = die("stop time %g is not after start time %g", opt.stop_time, opt.start_time); goto out; }
+    if (!(opt.stop_time > opt.start_time)) { die("stop time %g is not after start time %g", opt.stop_time, opt.start_time); goto out; }
+    if (check_times(&opt, opt.max_step, interval) != 0) goto out;
     opt.output_interval = !isnan(interval) ? interval : (opt.stop_time - opt.start_time) / 500.0;
     opt.start_values = sets;
     opt.n_start_values = nsets;
@@ -212,13 +350,16 @@ int main(int argc, char **argv)
     snprintf(uri, sizeof uri, "file://%s/resources", archive.dir);
     opt.resource_uri = uri;
     opt.summary = summary_path ? &summary : NULL;
-    /* a summary alone skips the time history: printing it is a good part of a short run */
-    opt.output = out_path ? fopen(out_path, "w") : (summary_path ? NULL : stdout);
-    if (out_path && !opt.output) { status = die("%s: %s", out_path, strerror(errno)); goto out; }
 
-    if (fmu_binary_load(archive.dir, md.model_identifier, &bin, err, sizeof err) != 0) { status = die("%s: %s", fmu_path, err); goto out; }
+    if (fmu_extract_binary(&archive, md.model_identifier, err, sizeof err) != 0) { die("%s", err); goto out; }
+    if (fmu_binary_load(archive.dir, md.model_identifier, &bin, err, sizeof err) != 0) { die("%s: %s", fmu_path, err); goto out; }
+    /* a summary alone skips the time history: printing it is a good part of a short run */
+    if ((out_path || !summary_path) && output_open(&csv, out_path, err, sizeof err) != 0) { die("%s", err); goto out; }
+    opt.output = csv.f ? &csv : NULL;
     if (simulate_me(&md, &bin, &opt, &st, err, sizeof err) != 0) {
-        status = die("%s: %s", fmu_path, err);
+        die("%s: %s", fmu_path, err);
+    } else if (csv.f && output_commit(&csv, err, sizeof err) != 0) {
+        die("%s", err);
     } else {
         status = 0;
         if (st.terminated_by_model) fprintf(stderr, "fmi2sim: the model terminated the simulation at t = %.10g\n", st.end_time);
@@ -231,11 +372,12 @@ int main(int argc, char **argv)
                 st.step_events, st.reinits, st.cpu_seconds);
 
 out:
-    if (opt.output && opt.output != stdout) fclose(opt.output);
+    output_discard(&csv);
     summary_free(&summary);
     fmu_binary_unload(&bin);
     md_free(&md);
     fmu_cleanup(&archive);
+    cleanup_all();
     for (size_t i = 0; i < ntab; i++) input_free(&tabs[i]);
     for (size_t i = 0; i < nsets; i++) free((char *)sets[i].name);
     free(sets);

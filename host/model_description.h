@@ -14,8 +14,13 @@ typedef struct {
     char *variability; /* "constant", "fixed", "tunable", "discrete", "continuous" */
     char *initial;     /* may be NULL */
     char *start;       /* textual start value, may be NULL */
-    double nominal;    /* Real: nominal attribute or 1 */
+    double nominal;    /* Real: nominal attribute (finite, > 0) or 1 */
+    char *derivative_of; /* Real: the derivative attribute (1-based index of its state), may be NULL */
 } md_variable;
+
+/* More event indicators than this is no model but a corrupt or hostile file (CVODE allocates
+ * several arrays of this length). */
+#define MD_MAX_EVENT_INDICATORS 1000000
 
 typedef struct {
     char *fmi_version, *model_name, *guid, *model_identifier;

@@ -85,6 +85,14 @@ static void cvode_error_handler(int code, const char *module, const char *functi
     snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
 }
 
+/* CVodeGetReturnFlagName returns a string allocated with malloc (SUNDIALS 6): free it. */
+static void cvode_failed(sim *s, int flag, double t)
+{
+    char *name = CVodeGetReturnFlagName(flag);
+    fail(s, "CVODE failed at t = %.10g: %s (%s)", t, name ? name : "?", s->cvode_msg);
+    free(name);
+}
+
 /* The first input sample time after t (INFINITY when none). */
 static double next_input_time(const sim *s, double t)
 {
@@ -165,41 +173,54 @@ static int track_outputs(sim *s)
     return 0;
 }
 
+/* A write to the CSV; a failed one (full disk, closed pipe) ends the run with the file's name. */
+#define PUT(s, ...) \
+    do { if (output_printf((s)->opt->output, __VA_ARGS__) != 0) return write_failed(s); } while (0)
+
+static int write_failed(sim *s)
+{
+    return fail(s, "%s: write failed: %s", s->opt->output->name, strerror(s->opt->output->write_errno));
+}
+
+/* One output value of the FMU as it stands, as CSV text. */
+static int put_value(sim *s, const md_variable *v)
+{
+    fmi2Real r;
+    fmi2Integer k;
+    fmi2Boolean b;
+    fmi2String str;
+    switch (v->type) {
+    case MD_REAL:
+        FMI(s, s->fmu->getReal(s->c, &v->vr, 1, &r), "fmi2GetReal");
+        PUT(s, ",%.12g", r);
+        break;
+    case MD_INTEGER:
+    case MD_ENUMERATION:
+        FMI(s, s->fmu->getInteger(s->c, &v->vr, 1, &k), "fmi2GetInteger");
+        PUT(s, ",%d", k);
+        break;
+    case MD_BOOLEAN:
+        FMI(s, s->fmu->getBoolean(s->c, &v->vr, 1, &b), "fmi2GetBoolean");
+        PUT(s, ",%d", b ? 1 : 0);
+        break;
+    case MD_STRING:
+        FMI(s, s->fmu->getString(s->c, &v->vr, 1, &str), "fmi2GetString");
+        PUT(s, ",\"%s\"", str ? str : "");
+        break;
+    }
+    return 0;
+}
+
 /* One CSV row: time and every output, read from the FMU as it stands; with --summary also folded
  * into the peaks. Without a CSV file only the summary is kept. */
 static int write_row(sim *s, double t)
 {
-    FILE *f = s->opt->output;
     if (track_outputs(s) != 0) return -1;
-    if (!f) return 0;
-    fprintf(f, "%.15g", t);
-    for (size_t i = 0; i < s->n_out; i++) {
-        const md_variable *v = s->out[i];
-        fmi2Real r;
-        fmi2Integer k;
-        fmi2Boolean b;
-        fmi2String str;
-        switch (v->type) {
-        case MD_REAL:
-            FMI(s, s->fmu->getReal(s->c, &v->vr, 1, &r), "fmi2GetReal");
-            fprintf(f, ",%.12g", r);
-            break;
-        case MD_INTEGER:
-        case MD_ENUMERATION:
-            FMI(s, s->fmu->getInteger(s->c, &v->vr, 1, &k), "fmi2GetInteger");
-            fprintf(f, ",%d", k);
-            break;
-        case MD_BOOLEAN:
-            FMI(s, s->fmu->getBoolean(s->c, &v->vr, 1, &b), "fmi2GetBoolean");
-            fprintf(f, ",%d", b ? 1 : 0);
-            break;
-        case MD_STRING:
-            FMI(s, s->fmu->getString(s->c, &v->vr, 1, &str), "fmi2GetString");
-            fprintf(f, ",\"%s\"", str ? str : "");
-            break;
-        }
-    }
-    fputc('\n', f);
+    if (!s->opt->output) return 0;
+    PUT(s, "%.15g", t);
+    for (size_t i = 0; i < s->n_out; i++)
+        if (put_value(s, s->out[i]) != 0) return -1;
+    PUT(s, "\n");
     return 0;
 }
 
@@ -243,16 +264,47 @@ static int event_iteration(sim *s, fmi2EventInfo *info, int *values_changed, int
     return 0;
 }
 
-static void set_tolerances(sim *s, void *mem, N_Vector abstol)
+/* --atol must lie in [ATOL_MIN, ATOL_MAX] x the nominal of every state: far below, CVODE
+ * chases round-off near zero; above, an error of 1 % of a state's scale passes unnoticed (at
+ * --atol 1e300 a wall that collapses stands). */
+#define ATOL_MIN 1e-16
+#define ATOL_MAX 1e-2
+
+static int set_tolerances(sim *s, void *mem, N_Vector abstol)
 {
     double *a = N_VGetArrayPointer(abstol);
-    if (s->opt->atol > 0) {
-        for (size_t i = 0; i < s->nx; i++) a[i] = s->opt->atol;
-    } else {
-        s->fmu->getNominalsOfContinuousStates(s->c, a, s->nx);
-        for (size_t i = 0; i < s->nx; i++) a[i] = s->opt->rtol * (a[i] > 0 ? a[i] : 1.0);
+    FMI(s, s->fmu->getNominalsOfContinuousStates(s->c, a, s->nx), "fmi2GetNominalsOfContinuousStates");
+    for (size_t i = 0; i < s->nx; i++) {
+        const double nominal = a[i] > 0 && isfinite(a[i]) ? a[i] : 1.0;
+        const double atol = s->opt->atol > 0 ? s->opt->atol : s->opt->rtol * nominal;
+        if (!(atol >= ATOL_MIN * nominal && atol <= ATOL_MAX * nominal))
+            return fail(s, "--atol %g is out of range for state %zu (nominal %g): it must lie in [%g, %g] x the "
+                        "state's nominal, here [%g, %g]", atol, i + 1, nominal, ATOL_MIN, ATOL_MAX,
+                        ATOL_MIN * nominal, ATOL_MAX * nominal);
+        a[i] = atol;
     }
     CVodeSVtolerances(mem, s->opt->rtol, abstol);
+    return 0;
+}
+
+/* The counts of the model description must be the binary's: numberOfEventIndicators="0" for a
+ * model that has indicators would switch root-finding off, and a missing state would freeze.
+ * A binary that checks its sizes, as FMI 2.0 asks, refuses a wrong count here. */
+static int check_counts(sim *s)
+{
+    double *buf = calloc((s->nx > s->nz ? s->nx : s->nz) + 1, sizeof *buf);
+    fmi2Status states, indicators;
+    if (!buf) return fail(s, "out of memory");
+    states = s->fmu->getContinuousStates(s->c, buf, s->nx);
+    indicators = s->fmu->getEventIndicators(s->c, buf, s->nz);
+    free(buf);
+    if (states > fmi2Warning)
+        return fail(s, "the binary refuses %zu continuous states, the number of Derivatives in the model "
+                    "description: they do not match (see the FMU's log above)", s->nx);
+    if (indicators > fmi2Warning)
+        return fail(s, "the binary refuses %zu event indicators, the model description's "
+                    "numberOfEventIndicators: they do not match (see the FMU's log above)", s->nz);
+    return 0;
 }
 
 static int setup_io(sim *s)
@@ -290,9 +342,9 @@ static int setup_io(sim *s)
         }
     }
     if (!s->opt->output) return 0;
-    fprintf(s->opt->output, "time");
-    for (size_t i = 0; i < s->n_out; i++) fprintf(s->opt->output, ",%s", s->out[i]->name);
-    fputc('\n', s->opt->output);
+    PUT(s, "time");
+    for (size_t i = 0; i < s->n_out; i++) PUT(s, ",%s", s->out[i]->name);
+    PUT(s, "\n");
     return 0;
 }
 
@@ -334,9 +386,10 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     if (apply_inputs(s, t0) != 0) return -1;
     FMI(s, s->fmu->exitInitializationMode(s->c), "fmi2ExitInitializationMode");
     if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) return -1;
-    if (info.terminateSimulation) { st->terminated_by_model = 1; write_row(s, t0); return 0; }
+    if (info.terminateSimulation) { st->terminated_by_model = 1; return write_row(s, t0); }
     if (info.nextEventTimeDefined) next_event = info.nextEventTime;
     FMI(s, s->fmu->enterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode");
+    if (check_counts(s) != 0) return -1;
 
     y = N_VNew_Serial((sunindextype)(s->nx ? s->nx : 1), ctx);
     ytmp = N_VClone(y);
@@ -347,7 +400,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
         CVodeSetErrHandlerFn(mem, cvode_error_handler, s);
         if (CVodeInit(mem, rhs, t0, y) != CV_SUCCESS) { fail(s, "CVodeInit: %s", s->cvode_msg); goto done; }
         CVodeSetUserData(mem, s);
-        set_tolerances(s, mem, abstol);
+        if (set_tolerances(s, mem, abstol) != 0) goto done;
         A = SUNDenseMatrix((sunindextype)s->nx, (sunindextype)s->nx, ctx);
         LS = SUNLinSol_Dense(y, A, ctx);
         CVodeSetLinearSolver(mem, LS, A);
@@ -367,7 +420,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
             CVodeSetStopTime(mem, t_stop);
             flag = CVode(mem, t_stop, y, &tret, CV_ONE_STEP);
             if (s->failed) goto done;
-            if (flag < 0) { fail(s, "CVODE failed at t = %.10g: %s (%s)", tret, CVodeGetReturnFlagName(flag), s->cvode_msg); goto done; }
+            if (flag < 0) { cvode_failed(s, flag, tret); goto done; }
             state_event = flag == CV_ROOT_RETURN;
         } else {
             tret = fmin(t_stop, t0 + (double)k_out * dt);
@@ -380,7 +433,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
         if (set_point(s, tret, N_VGetArrayPointer(y)) != 0 || track_outputs(s) != 0) goto done;
         if (s->md->needs_completed_integrator_step) {
             FMI_DONE(s, s->fmu->completedIntegratorStep(s->c, fmi2True, &enter_event, &terminate), "fmi2CompletedIntegratorStep");
-            if (terminate) { st->terminated_by_model = 1; write_row(s, tret); t = tret; break; }
+            if (terminate) { st->terminated_by_model = 1; if (write_row(s, tret) != 0) goto done; t = tret; break; }
             step_event = enter_event == fmi2True;
         }
         time_event = tret >= next_event - eps;
@@ -399,13 +452,13 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
         st->step_events += step_event;
         FMI_DONE(s, s->fmu->enterEventMode(s->c), "fmi2EnterEventMode");
         if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) goto done;
-        if (info.terminateSimulation) { st->terminated_by_model = 1; write_row(s, t); break; }
+        if (info.terminateSimulation) { st->terminated_by_model = 1; if (write_row(s, t) != 0) goto done; break; }
         next_event = info.nextEventTimeDefined ? info.nextEventTime : INFINITY;
         FMI_DONE(s, s->fmu->enterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode");
         if (s->nx) FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
         if (write_row(s, t) != 0) goto done; /* the row after the event */
         if (s->nx && (values_changed || nominals_changed || state_event)) {
-            if (nominals_changed) set_tolerances(s, mem, abstol);
+            if (nominals_changed && set_tolerances(s, mem, abstol) != 0) goto done;
             add_counters(mem, st);
             CVodeReInit(mem, t, y);
             st->reinits++;

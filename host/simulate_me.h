@@ -6,6 +6,7 @@
 #include "fmu_binary.h"
 #include "input_table.h"
 #include "model_description.h"
+#include "output_file.h"
 
 typedef struct {
     const char *name, *value;
@@ -30,7 +31,7 @@ typedef struct {
     const input_table *inputs;
     size_t n_inputs;
     int logging;            /* fmi2SetDebugLogging / logger verbosity */
-    FILE *output;           /* CSV; NULL: no time history */
+    output_file *output;    /* CSV; NULL: no time history */
     sim_summary *summary;   /* NULL: none */
     const char *resource_uri;
 } sim_options;

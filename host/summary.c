@@ -9,44 +9,45 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void put_number(FILE *f, double x)
+static void put_number(output_file *f, double x)
 {
-    if (isfinite(x)) fprintf(f, "%.17g", x);
-    else fputs("null", f);
+    if (isfinite(x)) output_printf(f, "%.17g", x);
+    else output_printf(f, "null");
 }
 
 /* Variable names are free text in FMI: escape what JSON requires. */
-static void put_string(FILE *f, const char *str)
+static void put_string(output_file *f, const char *str)
 {
-    fputc('"', f);
+    output_printf(f, "\"");
     for (const unsigned char *p = (const unsigned char *)str; *p; p++) {
-        if (*p == '"' || *p == '\\') fprintf(f, "\\%c", *p);
-        else if (*p < 0x20) fprintf(f, "\\u%04x", *p);
-        else fputc(*p, f);
+        if (*p == '"' || *p == '\\') output_printf(f, "\\%c", *p);
+        else if (*p < 0x20) output_printf(f, "\\u%04x", *p);
+        else output_printf(f, "%c", *p);
     }
-    fputc('"', f);
+    output_printf(f, "\"");
 }
 
+/* Written through output_file.h: a failed write is remembered there and reported by the commit,
+ * and the file appears only complete. */
 int summary_write_json(const char *path, const sim_summary *sum, const sim_stats *st, char *err, size_t n)
 {
-    FILE *f = fopen(path, "w");
-    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
-    fputs("{\"end_time\": ", f);
+    output_file out, *f = &out;
+    if (output_open(f, path, err, n) != 0) return -1;
+    output_printf(f, "{\"end_time\": ");
     put_number(f, st->end_time);
-    fprintf(f, ", \"terminated_by_model\": %s, \"steps\": %ld, \"events\": %ld, \"cpu_seconds\": %.6f,\n \"outputs\": {",
+    output_printf(f, ", \"terminated_by_model\": %s, \"steps\": %ld, \"events\": %ld, \"cpu_seconds\": %.6f,\n \"outputs\": {",
             st->terminated_by_model ? "true" : "false", st->steps, st->events, st->cpu_seconds);
     for (size_t i = 0; i < sum->n; i++) {
-        fputs(i ? ",\n  " : "\n  ", f);
+        output_printf(f, i ? ",\n  " : "\n  ");
         put_string(f, sum->vars[i]->name);
-        fputs(": {\"max_abs\": ", f);
+        output_printf(f, ": {\"max_abs\": ");
         put_number(f, sum->max_abs[i]);
-        fputs(", \"final\": ", f);
+        output_printf(f, ", \"final\": ");
         put_number(f, sum->final[i]);
-        fputc('}', f);
+        output_printf(f, "}");
     }
-    fputs("}}\n", f);
-    if (fclose(f) != 0) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
-    return 0;
+    output_printf(f, "}}\n");
+    return output_commit(f, err, n);
 }
 
 void summary_free(sim_summary *sum)

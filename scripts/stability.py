@@ -62,13 +62,13 @@ def row(o, bad, note):
             "h_over_b": round(c.hb, 2), "record": c.record, "amp": c.amp_g, "dt": c.dt,
             "duration": c.duration, "rtol": c.rtol, "steps": o.steps, "events": o.events,
             "fmi2sim_s": round(o.sim_wall, 3), "fmpy_s": round(o.fmpy_wall, 3),
-            "energy_gain": f"{o.energy_gain:.2e}", "finite": o.finite, "collapsed": o.collapsed,
+            "energy_gain": f"{o.energy_gain:.2e}", "energy_loss": f"{o.energy_loss:.2e}", "finite": o.finite, "collapsed": o.collapsed,
             "fmpy_collapsed": o.fmpy_collapsed, "peak_s1": f"{o.peak_s1:.5g}", "peak_s2": f"{o.peak_s2:.5g}",
             "peak_diff": f"{o.peak_diff:.2e}", "peak_tol": f"{o.peak_tol:.2e}",
             "ok": not bad, "problems": "; ".join(bad), "notes": note}
 
 
-COLUMNS = [("case", 34), ("steps", 8), ("events", 7), ("fmi2sim_s", 9), ("fmpy_s", 7), ("energy_gain", 11),
+COLUMNS = [("case", 34), ("steps", 8), ("events", 7), ("fmi2sim_s", 9), ("fmpy_s", 7), ("energy_gain", 11), ("energy_loss", 11),
            ("finite", 6), ("collapsed", 9), ("peak_diff", 9), ("peak_tol", 9), ("ok", 5)]
 
 
@@ -83,11 +83,14 @@ def text_table(rows):
 def readme_block(rows):
     n_ok = sum(r["ok"] for r in rows)
     gains = [float(r["energy_gain"]) for r in rows if r["hinge_law"] != "semiRigidPaper" and r["finite"]]
+    losses = [float(r["energy_loss"]) for r in rows if float(r["er"]) >= 1 and float(r["amp"]) == 0 and r["finite"]]
     ratio = [float(r["peak_diff"]) / float(r["peak_tol"]) for r in rows
              if float(r["peak_tol"]) > 0 and float(r["er"]) < 1]  # e_r = 1 is chaotic: not bounded
     lines = [f"{n_ok} of {len(rows)} cases meet every bound (`scripts/stability.py`, `results/stability.csv`). "
              f"Largest energy gain beyond the input work: {max(gains):.1e} (bound per case "
-             f"{sc.ENERGY_GAIN_MAX:g} + {sc.ENERGY_GAIN_PER_EVENT} rtol x events); largest fmpy-fmi2sim peak "
+             f"{sc.ENERGY_GAIN_MAX:g} + {sc.ENERGY_GAIN_PER_EVENT} rtol x events); largest energy loss in free "
+             f"rocking (e_r = 1, no input): {max(losses, default=0.0):.1e} (bound {sc.ENERGY_LOSS_PER_100S:g} "
+             f"per 100 s); largest fmpy-fmi2sim peak "
              f"difference with e_r < 1: {max(ratio):.2f} of the tolerance rtol implies; "
              f"most steps {max(r['steps'] for r in rows)}, most events {max(r['events'] for r in rows)}.", ""]
     flagged = [r for r in rows if not r["ok"] or r["notes"]]
