@@ -21,18 +21,38 @@ import numpy as np
 import pandas as pd
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rwsweep import fragility  # noqa: E402
+from rwsweep import fragility, store  # noqa: E402
+from rwsweep.runner import ERROR, OK, RETRIED  # noqa: E402
+
+_NUMBERS = ["wall", "kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_s2", "peak_F_top", "impacts",
+            "end_time", "steps", "cpu_s", "elapsed_s"]
+
+
+def report_not_ok(d, path):
+    """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the
+    fragility, so they are named, not dropped silently."""
+    unfinished = d[d.status.isin(RETRIED)]
+    if len(unfinished):
+        print(f"{path}: {len(unfinished)} runs were killed or timed out and are NOT in the plots (often the runs "
+              f"nearest collapse), e.g. {unfinished.run_id.iloc[0]}: {unfinished.message.iloc[0]}; "
+              "resume the sweep (the same sweep.py command) to run them again", file=sys.stderr)
+    failed = d[d.status == ERROR]
+    if len(failed):
+        print(f"{path}: {len(failed)} runs failed and are left out, e.g. {failed.record.iloc[0]}: "
+              f"{failed.message.iloc[0]}", file=sys.stderr)
 
 
 def load(path, wall, model, hinge_law):
-    d = pd.read_csv(path)
-    bad = d[d.status != "ok"]
-    if len(bad):
-        print(f"{len(bad)} runs failed and are left out, e.g. {bad.record.iloc[0]}: {bad.message.iloc[0]}")
-    d = d[(d.status == "ok") & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)].copy()
+    """The 'ok' runs of one wall, model and hinge law; damaged lines of the file are named and left
+    out (rwsweep.store), and a run_id written twice counts once (the last row)."""
+    d = pd.DataFrame(store.load_rows(path), columns=store.COLUMNS)
+    report_not_ok(d, path)
+    d = d[d.status == OK].copy()
+    d[_NUMBERS] = d[_NUMBERS].apply(pd.to_numeric)  # load_rows has checked every 'ok' row's numbers
+    d["collapsed"] = d.collapsed == "True"
+    d = d[(d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
-        sys.exit(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
-    d["collapsed"] = d.collapsed.astype(str).str.lower().isin(["true", "1"])
+        raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
     return d
 
 
@@ -131,7 +151,11 @@ def main(argv=None):
     p.add_argument("--hinge-law", default="semiRigidHinge")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
     args = p.parse_args(argv)
-    d = load(args.results, args.wall, args.model, args.hinge_law)
+    try:
+        d = load(args.results, args.wall, args.model, args.hinge_law)
+    except (OSError, ValueError) as exc:
+        print(f"ida.py: error: {exc}", file=sys.stderr)
+        return 2
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
