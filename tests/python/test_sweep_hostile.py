@@ -16,7 +16,6 @@ import pytest
 import ida
 import sweep
 from rwsweep import records, runner
-from rwsweep.lock import FileLock
 from test_sweep import pulse_record
 
 SCRIPTS = os.path.join(os.path.dirname(__file__), "..", "..", "scripts")
@@ -225,13 +224,29 @@ def test_finding09_killed_dask_worker_leaves_no_temporary_files(fmi2sim_exe, roc
 # ---------------------------------------------------------------- finding 16: hostile use
 
 def test_finding16_second_sweep_on_the_same_file_is_refused(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path, capsys):
+    """A second sweep on a results file a running sweep is writing is refused, naming the first."""
+    import time
+    exe = tmp_path / "fmi2sim_slow_start"
+    started = tmp_path / "STARTED"
+    fake_fmi2sim(exe, fmi2sim_exe, f'touch "{started}"; sleep 4')
     out = tmp_path / "res.csv"
-    with FileLock(out):  # a first sweep holds the file
-        assert sweep.main(sweep_args(one_record, out, fmi2sim_exe, rockingwall_fmu)) == 2
+    args = sweep_args(one_record, out, exe, rockingwall_fmu)
+    first = subprocess.Popen([sys.executable, os.path.join(SCRIPTS, "sweep.py"), *args],
+                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not started.exists() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert started.exists()
+        assert sweep.main(args) == 2
+    finally:
+        first.communicate(timeout=120)
+    assert first.returncode == 0
     err = capsys.readouterr().err
-    assert "in use by another sweep" in err and f"pid {os.getpid()}" in err
-    assert not out.exists()
-    assert sweep.main(sweep_args(one_record, out, fmi2sim_exe, rockingwall_fmu)) == 0  # lock released
+    assert "in use by another sweep" in err and f"pid {first.pid}" in err
+    assert len(rows(out)) == 1  # computed once
+    assert sweep.main(args) == 0  # the lock went with the first sweep
+    assert "nothing to do" in capsys.readouterr().out
 
 
 def test_finding16_ida_counts_a_run_once(tmp_path):
@@ -278,13 +293,15 @@ def test_finding16_huge_record_is_planned_in_bounded_memory(tmp_path, monkeypatc
     line = b"  1.0000000E-01  -2.0000000E-01  3.0000000E-02  4.0000000E-02  5.0000000E-02\n"
     n = 24 * 2**20 // len(line)
     big.write_bytes(b"t\nx\ny\nNPTS= %d, DT= 0.005 SEC\n" % (5 * n) + line * n)
-    code = ("import resource, sys; sys.path.insert(0, sys.argv[1]); from rwsweep import records; "
-            "r0 = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss; rec = records.read_at2(sys.argv[2]); "
-            "print(rec.pga_g, (resource.getrusage(resource.RUSAGE_SELF).ru_maxrss - r0) / 1024)")
-    out = subprocess.run([sys.executable, "-c", code, SCRIPTS, str(big)], capture_output=True, text=True,
-                         check=True, timeout=120).stdout.split()
-    assert float(out[0]) == 0.2
-    assert float(out[1]) < 40, f"planning a 24 MiB record took {out[1]} MiB more memory"
+    import tracemalloc
+    tracemalloc.start()
+    try:
+        rec = records.read_at2(big)
+        peak = tracemalloc.get_traced_memory()[1] / 2**20
+    finally:
+        tracemalloc.stop()
+    assert rec.pga_g == 0.2 and not rec.error
+    assert peak < 32, f"planning a 24 MiB record took {peak:.0f} MiB"
     monkeypatch.setattr(records, "MAX_RECORD_BYTES", 2**20)  # the bound, made small
     rec = records.read_at2(big)
     assert "24 MiB, more than the 1 MiB a record may have" in rec.error
