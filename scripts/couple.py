@@ -298,11 +298,16 @@ def run_libcosim(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None):
         override.slave_real_values(iw, [wv["ag"]], [ag])  # held over the step, as in run_fmpy
         override.slave_real_values(idia, [dv["ag"]], [ag])
         if not ex.step():
-            if observer.last_boolean_values(iw, [wv["collapsed"]])[0]:
-                collapsed_at = k * H  # the wall ended the run at its instability point
+            message = _libcosim_error()
+            # libcosim reports a slave's fmi2Discard as "<instance>: Step not complete" (its
+            # observer keeps the values of the last good step, so the wall's `collapsed` output
+            # cannot be read there): from the wall it is the collapse that ends its run, as in
+            # run_fmpy; anything else is a failure
+            if "wall: Step not complete" in message:
+                collapsed_at = k * H
                 break
             raise CouplingError(f"libcosim master: the step from t = {k * H:.6g} s failed before t_end = "
-                                f"{t_end:g} s: {_libcosim_error()}")
+                                f"{t_end:g} s: {message}")
         times.append((k + 1) * H)
         wall_rows.append(observer.last_real_values(iw, [wv[x] for x in WALL_OUT]))
         dia_rows.append(observer.last_real_values(idia, [dv[x] for x in DIA_OUT]))
