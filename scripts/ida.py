@@ -24,10 +24,6 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from rwsweep import fragility, store  # noqa: E402
 from rwsweep.runner import ERROR, OK, RETRIED  # noqa: E402
 
-_NUMBERS = ["wall", "kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_s2", "peak_F_top", "impacts",
-            "end_time", "steps", "cpu_s", "elapsed_s"]
-
-
 def report_not_ok(d, path):
     """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the
     fragility, so they are named, not dropped silently."""
@@ -45,12 +41,9 @@ def report_not_ok(d, path):
 def load(path, wall, model, hinge_law):
     """The 'ok' runs of one wall, model and hinge law; damaged lines of the file are named and left
     out (rwsweep.store), and a run_id written twice counts once (the last row)."""
-    d = pd.DataFrame(store.load_rows(path), columns=store.COLUMNS)
+    d = store.load_frame(path)
     report_not_ok(d, path)
-    d = d[d.status == OK].copy()
-    d[_NUMBERS] = d[_NUMBERS].apply(pd.to_numeric)  # load_rows has checked every 'ok' row's numbers
-    d["collapsed"] = d.collapsed == "True"
-    d = d[(d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
+    d = d[(d.status == OK) & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
         raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
     return d

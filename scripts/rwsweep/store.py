@@ -292,6 +292,20 @@ class ResultsFile:
                 self._f = None
 
 
+_NUMERIC = ["wall", "kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_s2", "peak_F_top", "impacts",
+            "end_time", "steps", "cpu_s", "elapsed_s"]
+
+
+def load_frame(path):
+    """load_rows as a DataFrame with numbers as numbers and `collapsed` as bool. Every 'ok' row's
+    numbers were checked; the empty ones of other rows become NaN."""
+    import pandas as pd
+    d = pd.DataFrame(load_rows(path), columns=COLUMNS)
+    d[_NUMERIC] = d[_NUMERIC].apply(pd.to_numeric, errors="coerce")
+    d["collapsed"] = d.collapsed == "True"
+    return d
+
+
 def load_rows(path):
     """The good rows of a results file for analysis (ida.py), the last one of each run_id; damaged
     lines are named with their line number and left out, the file is not changed."""
