@@ -43,6 +43,7 @@ def load(path, wall, model, hinge_law):
     out (rwsweep.store), and a run_id written twice counts once (the last row)."""
     d = store.load_frame(path)
     report_not_ok(d, path)
+    d.attrs["unfinished"] = int(d.status.isin(RETRIED).sum())
     d = d[(d.status == OK) & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
         raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
@@ -160,7 +161,9 @@ def main(argv=None):
     for kd, f in fits.items():
         print(f"{kd:10g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}")
     print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")
-    return 0
+    # the plots are made from every good row, but a file with damaged lines or unfinished runs is
+    # not a complete result: say so in the exit status too
+    return 1 if d.attrs.get("damaged_lines") or d.attrs.get("unfinished") else 0
 
 
 if __name__ == "__main__":

@@ -13,7 +13,8 @@ already in the file, computed from the same inputs (record content, FMU, fmi2sim
 not repeated; killed or timed-out runs are. A run that fails (e.g. a damaged record) becomes a row
 with status 'error' and fmi2sim's message, and the sweep goes on. One sweep at a time per results
 file (FILE.lock). Exit status: 0 when every run is finished (even with 'error' rows), 1 when some
-runs were killed or timed out (run the command again), 2 for a refused command or file.
+runs were killed or timed out (run the command again) or the file had damaged lines (set aside
+into FILE.set-aside-<time>, named line by line), 2 for a refused command or file.
 
 Example (the measured sweep of the README):
   .venv/bin/python scripts/sweep.py --config scripts/sweeps/fema_ida.toml --out results/sweep_fema.csv
@@ -124,6 +125,12 @@ def report(label, outcome):
           f"(+ {outcome.startup_s:.1f} s to start Dask)")
 
 
+def exit_status(outcome):
+    """1 when the results are not complete and clean: runs killed or timed out (run the command
+    again), or damaged lines found in the file (set aside, and their runs computed again)."""
+    return 1 if outcome.unfinished or (outcome.resume is not None and outcome.resume.bad) else 0
+
+
 def main(argv=None):
     """The command line; refused commands and files end with a message (file, line, problem)
     and exit status 2, never a traceback."""
@@ -154,7 +161,7 @@ def run(args):
         outcome = execute(specs, args.out, workers=args.workers, **common)
         report(f"{args.out}", outcome)
         print(f"total wall-clock time {time.perf_counter() - t0:.1f} s")
-        return 1 if outcome.unfinished else 0
+        return exit_status(outcome)
     base = pathlib.Path(args.out)
     times = {}
     for n in args.scan_workers:

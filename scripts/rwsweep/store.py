@@ -42,6 +42,7 @@ class Line:
     raw: bytes           # the line as it is in the file, end of line included when present
     row: dict = None     # the parsed row, when the line is good
     problem: str = ""    # why it is not, when it is not
+    cut: bool = False    # the last line, cut off by a kill: expected after an interruption, not damage
 
 
 def check_target(path):
@@ -132,7 +133,7 @@ def read(path):
                 row, problem = _parse(raw, columns)
             except csv.Error as exc:
                 row, problem = None, f"not a CSV row ({exc})"
-            lines.append(Line(number, raw, row if not problem else None, problem))
+            lines.append(Line(number, raw, row if not problem else None, problem, cut=not raw.endswith(b"\n")))
     return columns, header, lines
 
 
@@ -203,7 +204,7 @@ class Resume:
     done: set                 # run_ids whose row is reused
     stale: Counter            # reason -> rows of planned runs computed from other inputs
     retried: int              # killed or timed-out rows run again
-    bad: int                  # damaged lines set aside
+    bad: int                  # damaged lines set aside (not counting a last line cut off by a kill)
     set_aside: pathlib.Path = None
 
 
@@ -254,7 +255,7 @@ class ResultsFile:
             else:
                 keep.append(ln)
                 done.add(ln.row["run_id"])
-        res = Resume(done, stale, retried, sum(1 for ln in aside if ln.row is None))
+        res = Resume(done, stale, retried, sum(1 for ln in aside if ln.row is None and not ln.cut))
         if aside or (columns and columns != COLUMNS):
             res.set_aside = self._rewrite(header, keep, aside, legacy=columns != COLUMNS)
         return res
@@ -298,18 +299,23 @@ _NUMERIC = ["wall", "kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_
 
 def load_frame(path):
     """load_rows as a DataFrame with numbers as numbers and `collapsed` as bool. Every 'ok' row's
-    numbers were checked; the empty ones of other rows become NaN."""
+    numbers were checked; the empty ones of other rows become NaN. attrs['damaged_lines'] counts
+    the lines left out."""
     import pandas as pd
-    d = pd.DataFrame(load_rows(path), columns=COLUMNS)
+    rows, damaged = load_rows(path, count=True)
+    d = pd.DataFrame(rows, columns=COLUMNS)
+    d.attrs["damaged_lines"] = damaged
     d[_NUMERIC] = d[_NUMERIC].apply(pd.to_numeric, errors="coerce")
     d["collapsed"] = d.collapsed == "True"
     return d
 
 
-def load_rows(path):
+def load_rows(path, count=False):
     """The good rows of a results file for analysis (ida.py), the last one of each run_id; damaged
-    lines are named with their line number and left out, the file is not changed."""
+    lines are named with their line number and left out, the file is not changed. With count:
+    (rows, number of lines left out)."""
     _, _, lines = read(path)
     mark_repeats(lines)
-    report_bad(path, lines, "left out")
-    return [ln.row for ln in lines if ln.row]
+    bad = report_bad(path, lines, "left out")
+    rows = [ln.row for ln in lines if ln.row]
+    return (rows, len(bad)) if count else rows

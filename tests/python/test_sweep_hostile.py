@@ -155,7 +155,7 @@ def test_finding04_damaged_line_costs_only_that_line(fmi2sim_exe, rockingwall_fm
     damaged = lines[2].replace(",ok,", ',"ok,', 1)  # an unmatched quote on line 3
     out.write_text("".join(lines[:2]) + damaged + "".join(lines[3:]))
     capsys.readouterr()
-    assert sweep.main(args) == 0
+    assert sweep.main(args) == 1  # complete again, but the damage is not hidden from a script
     captured = capsys.readouterr()
     assert f"{out}:3: " in captured.err and "set aside" in captured.err
     assert "1 runs (" in captured.out and "7 already done" in captured.out  # only the damaged run again
@@ -323,10 +323,11 @@ def test_finding16_non_utf8_byte_in_the_results_is_named(fmi2sim_exe, rockingwal
     good = out.read_bytes()
     out.write_bytes(good + b"w1|x\xff\n")
     capsys.readouterr()
-    assert sweep.main(args) == 0
+    assert sweep.main(args) == 1
     assert f"{out}:3: byte 0xff at column 5 is not UTF-8" in capsys.readouterr().err
     assert out.read_bytes() == good
     assert next(tmp_path.glob("res.csv.set-aside-*")).read_bytes().endswith(b"w1|x\xff\n")
+    assert sweep.main(args) == 0  # nothing damaged left
 
 
 def test_finding16_non_utf8_config_and_folder_as_out_are_refused(one_record, tmp_path, capsys):
@@ -347,7 +348,7 @@ def test_finding16_garbage_in_an_ok_row_is_named_by_ida(tmp_path, capsys):
     fields[runner.COLUMNS.index("peak_s1")] = "banana"
     lines[4] = ",".join(fields)
     path.write_text("".join(lines))
-    assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 1  # plots made, damage reported
     err = capsys.readouterr().err
     assert f"{path}:5: peak_s1 = 'banana' is not a number" in err
     assert (tmp_path / "plots" / "kd_map.png").exists()
