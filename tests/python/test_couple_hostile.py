@@ -3,7 +3,6 @@ non-zero exit and the real error first, under both masters; absurd macro steps a
 their range; no extracted FMU is left in the temporary folder. The hostile FMUs are built here
 from the Diaphragm's own sources with one callback replaced, not stored as binaries. Each test is
 named after its finding and failed on the code before the fix."""
-import os
 import pathlib
 import subprocess
 import sys

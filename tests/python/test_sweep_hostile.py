@@ -2,9 +2,7 @@
 counted as finished, a damaged results line costs that line only, one sweep per results file,
 absurd options and hostile files are refused with a message, and nothing is left in the temporary
 folder. Each test is named after its finding and failed on the code before the fix."""
-import json
 import os
-import signal
 import subprocess
 import sys
 import zipfile
