@@ -76,6 +76,7 @@ class _FmuLog:
 
     def __init__(self):
         self.messages = []
+        self._keep = []
 
     def callbacks(self):
         from ctypes import byref
@@ -93,12 +94,17 @@ class _FmuLog:
         cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
         cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
         addLoggerProxy(byref(cb))  # formats the FMU's printf-style arguments
-        self._keep = cb  # the FMU holds pointers into it until freeInstance
+        self._keep.append(cb)  # each FMU holds a pointer to its callbacks until freeInstance
         return cb
 
     def last(self, instance):
         mine = [m for m in self.messages if m.startswith(instance + ":")]
         return mine[-1] if mine else f"{instance}: no message logged"
+
+
+def _status_name(status):
+    names = ["ok", "warning", "discard", "error", "fatal", "pending"]
+    return names[status] if 0 <= status < len(names) else f"status {status}"
 
 
 def _fmi_call(slave, what, fn, *args):
@@ -110,8 +116,7 @@ def _fmi_call(slave, what, fn, *args):
     except FMICallException as exc:
         slave.failed = True
         raise CouplingError(f"{slave.fmu_path} ({slave.instanceName}): {exc.function} returned "
-                            f"{['ok', 'warning', 'discard', 'error', 'fatal', 'pending'][exc.status] if 0 <= exc.status <= 5 else exc.status}"
-                            f" {what}: {slave.log.last(slave.instanceName)}") from None
+                            f"{_status_name(exc.status)} {what}: {slave.log.last(slave.instanceName)}") from None
     except Exception as exc:  # fmpy raises a bare Exception when fmi2Instantiate returns NULL
         slave.failed = True
         raise CouplingError(f"{slave.fmu_path} ({slave.instanceName}) {what}: {exc}: "
@@ -264,13 +269,14 @@ def run_libcosim(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None):
     """The libcosim master (libcosimpy) with the same Jacobi scheme: call it in a subprocess
     (run_libcosim_subprocess), libcosim aborts the process on some FMU errors."""
     from fmpy import read_model_description
-    from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimManipulator import CosimManipulator
     from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimSlave import CosimLocalSlave
 
     check_options(t_end, H, 1e-6)
+    log_output_level(CosimLogLevel.WARNING)  # its trace of every FMU event would fill the parent's pipe
     real, integer = wall or wall_start_values()
     wv, dv = vrs(read_model_description(str(wall_fmu))), vrs(read_model_description(str(dia_fmu)))
     ex = CosimExecution.from_step_size(step_size=int(round(H * 1e9)))  # nanoseconds
@@ -339,22 +345,25 @@ def run_libcosim_subprocess(args_list, out_json):
 
 
 def child_failure(master, proc, fmus):
-    """The message for a master's process that failed: its own error line when it wrote one, the
-    signal when it died of one, with the FMUs' last error messages."""
+    """The message for a master's process that failed, the real error first: its own error line
+    when it wrote one, else the last error an FMU or libcosim logged, then how the process ended
+    (a signal: an FMU crashed, or libcosim aborted on an error it threw from a thread)."""
     lines = [ln.strip() for ln in proc.stderr.splitlines() if ln.strip()]
     own = [ln for ln in lines if ln.startswith("couple.py: error:")]
     if own:
         return own[-1][len("couple.py: error: "):]
-    fmu_errors = [ln for ln in lines if "what():" in ln or "[error]" in ln or "status=error" in ln]
-    detail = f"; last error logged: {fmu_errors[-1][-500:]}" if fmu_errors else (f"; last output: {lines[-1][-500:]}"
-                                                                                 if lines else "")
+    logged = [ln for ln in lines if "what():" in ln or "[error]" in ln]
+    cause = logged[-1].split("what():")[-1].strip()[-500:] if logged else ""
     if proc.returncode < 0:
-        name = signal.Signals(-proc.returncode).name
-        return (f"the {master} master died with signal {-proc.returncode} ({name}): an FMU crashed "
-                f"(wall {fmus[0]}, diaphragm {fmus[1]}){detail}")
-    if proc.returncode == 134:  # libcosim throws from a thread: std::terminate, abort
-        return f"the {master} master aborted (exit 134, SIGABRT){detail}"
-    return f"the {master} master failed (exit {proc.returncode}){detail}"
+        sig = signal.Signals(-proc.returncode)
+        how = (f"the {master} master aborted (signal {sig.value}, {sig.name})" if sig == signal.SIGABRT and cause
+               else f"the {master} master died with signal {sig.value} ({sig.name}): an FMU crashed")
+    else:
+        how = f"the {master} master failed (exit {proc.returncode})"
+    where = f"wall {fmus[0]}, diaphragm {fmus[1]}"
+    if cause:
+        return f"{cause} ({how}; {where})"
+    return f"{how} ({where})" + (f"; last output: {lines[-1][-500:]}" if lines else "")
 
 
 def save_csv(r, path):

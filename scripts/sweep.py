@@ -137,7 +137,7 @@ def main(argv=None):
     args = parse_args(argv)
     try:
         return run(args)
-    except (ValueError, OSError, Busy) as exc:  # store.ResultsError, records.RecordError are ValueErrors
+    except (ValueError, OSError, ImportError, Busy) as exc:  # ResultsError, RecordError are ValueErrors
         print(f"sweep.py: error: {exc}", file=sys.stderr)
         return 2
     except (KeyboardInterrupt, Terminated) as exc:
