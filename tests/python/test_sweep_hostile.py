@@ -101,6 +101,27 @@ def test_finding02_resume_key_covers_fmu_and_fmi2sim(fmi2sim_exe, rockingwall_fm
     assert "nothing to do" in capsys.readouterr().out
 
 
+def test_finding02_rows_without_a_key_are_recomputed_and_kept_aside(fmi2sim_exe, rockingwall_fmu, one_record,
+                                                                     tmp_path, capsys):
+    """A results file of the sweep before keys (no provenance columns): its rows cannot be shown
+    to match, so the planned ones are run again; the others stay, with the new columns."""
+    out = tmp_path / "res.csv"
+    args = sweep_args(one_record, out, fmi2sim_exe, rockingwall_fmu)
+    assert sweep.main(args) == 0
+    old = rows(out)[runner.COLUMNS[:runner.COLUMNS.index("key")]]
+    other = old.assign(run_id="another plan's run")
+    pd.concat([old, other]).to_csv(out, index=False, lineterminator="\n")
+    capsys.readouterr()
+    assert sweep.main(args) == 0
+    assert "1 no key (written before keys were recorded)" in capsys.readouterr().err
+    d = rows(out)
+    assert list(d.columns) == runner.COLUMNS and len(d) == 2
+    by_id = d.set_index("run_id")
+    assert pd.isna(by_id.loc["another plan's run", "key"])  # not ours to judge: kept, without a key
+    assert len(by_id.drop("another plan's run").key.iloc[0]) == 16  # the planned run, computed again
+    assert len(next(tmp_path.glob("res.csv.set-aside-*")).read_text().splitlines()) == 2
+
+
 # ---------------------------------------------------------------- finding 3: killed runs
 
 def test_finding03_killed_runs_are_retried_on_resume_and_reported(fmi2sim_exe, rockingwall_fmu, one_record,
