@@ -2,6 +2,8 @@
 results file as it arrives."""
 import contextlib
 import dataclasses
+import os
+import pathlib
 import shutil
 import signal
 import tempfile
@@ -128,15 +130,17 @@ def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout):
 
 @contextlib.contextmanager
 def _client(scheduler, workers, tmp_root):
+    import dask
     from dask.distributed import Client, LocalCluster
     client = cluster = None
     try:
         if scheduler:
             client = Client(scheduler)
         else:
-            # workers keep their scratch space in the sweep's folder, removed with it
-            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                   dashboard_address=":0", local_directory=tmp_root)  # any free port
+            # the cluster keeps its scratch space in the sweep's folder, removed with it
+            with dask.config.set({"temporary-directory": tmp_root}):
+                cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0", local_directory=tmp_root)  # any free port
             client = Client(cluster)
         yield client
     finally:
@@ -144,6 +148,24 @@ def _client(scheduler, workers, tmp_root):
             client.close()
         if cluster is not None:
             cluster.close()
+
+
+def stop_orphans(tmp_root):
+    """SIGKILL the fmi2sim processes of this sweep still running after its workers are gone (a
+    worker killed in the middle of a run leaves its fmi2sim behind). Only pids recorded in this
+    sweep's own folder, and only while their command line still names that folder (a pid can be
+    reused by an unrelated process)."""
+    for pid_file in pathlib.Path(tmp_root).glob(f"*/{runner.PID_FILE}"):
+        try:
+            pid = int(pid_file.read_text())
+            cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes()
+        except (OSError, ValueError):
+            continue  # finished already
+        if str(pid_file.parent).encode() in cmdline:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass
 
 
 def _rm_tree(path):
@@ -194,4 +216,5 @@ def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
             return startup, time.perf_counter() - t0
     finally:
         bar.close()
+        stop_orphans(tmp_root)
         _rm_tree(tmp_root)

@@ -68,13 +68,32 @@ def _run_dir(tmp_root):
     return tempfile.mkdtemp(prefix="run_" if root else "rw_sweep_run_", dir=root)
 
 
+PID_FILE = "fmi2sim.pid"
+
+
+def _run_recorded(cmd, env, tmp, timeout):
+    """subprocess.run, with the child's pid written into its run folder: if this worker is killed
+    (its fmi2sim then runs on as an orphan), the sweep finds it there and stops it
+    (execute.stop_orphans)."""
+    with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace",
+                          env=env) as proc:
+        with open(os.path.join(tmp, PID_FILE), "w") as f:
+            f.write(str(proc.pid))
+        try:
+            out, err = proc.communicate(timeout=timeout)
+        except BaseException:  # a timeout, Ctrl-C, SIGTERM: never leave the child running
+            proc.kill()
+            proc.wait()
+            raise
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
+
+
 def _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0):
     summary = os.path.join(tmp, "summary.json")
     # TMPDIR: fmi2sim unpacks the FMU into this run's folder, so a run killed before it could
     # clean up leaves nothing behind once the folder is removed
     env = dict(os.environ, TMPDIR=tmp)
-    proc = subprocess.run(command(spec, fmi2sim, fmu, rtol, summary), capture_output=True, text=True,
-                          errors="replace", timeout=timeout, env=env)
+    proc = _run_recorded(command(spec, fmi2sim, fmu, rtol, summary), env, tmp, timeout)
     if proc.returncode < 0:  # a signal: the OOM killer, a timeout of the caller, ...
         return _row(spec, KILLED, f"fmi2sim killed by signal {-proc.returncode}: {_error_line(proc.stderr)}",
                     elapsed_s=time.perf_counter() - t0)

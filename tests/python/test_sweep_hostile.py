@@ -3,8 +3,10 @@ counted as finished, a damaged results line costs that line only, one sweep per 
 absurd options and hostile files are refused with a message, and nothing is left in the temporary
 folder. Each test is named after its finding and failed on the code before the fix."""
 import os
+import pathlib
 import subprocess
 import sys
+import time
 import zipfile
 
 import numpy as np
@@ -226,7 +228,11 @@ def test_finding09_killed_dask_worker_leaves_no_temporary_files(fmi2sim_exe, roc
     import dask
     import distributed  # noqa: F401  loads its config first: set() would otherwise drop it on exit
     exe = tmp_path / "fmi2sim_kills_worker"
-    marker = fake_fmi2sim(exe, fmi2sim_exe, 'mkdir "$TMPDIR/fmi2sim_unpacked"; kill -9 $PPID; exec sleep 30')
+    pid_file = tmp_path / "orphan.pid"
+    # a long run whose worker dies under it: the run (its command line kept, as fmi2sim's) is left
+    # an orphan
+    marker = fake_fmi2sim(exe, fmi2sim_exe, f'mkdir "$TMPDIR/fmi2sim_unpacked"; echo $$ > "{pid_file}"; kill -9 $PPID; '
+                                            f'exec "{sys.executable}" -c "import time; time.sleep(60)" "$@"')
     out = tmp_path / "res.csv"
     args = sweep_args(one_record, out, exe, rockingwall_fmu, "--workers", 1)
     args.remove("--scheduler"), args.remove("synchronous")
@@ -234,6 +240,12 @@ def test_finding09_killed_dask_worker_leaves_no_temporary_files(fmi2sim_exe, roc
         assert sweep.main(args) == 1
     assert rows(out).status.tolist() == ["killed"]
     assert not [p for p in private_tmp.iterdir() if p.name.startswith(("rw_sweep", "fmi2sim"))]
+    orphan = pathlib.Path(f"/proc/{int(pid_file.read_text())}")
+    for _ in range(50):  # SIGKILLed by the sweep; init reaps it
+        if not orphan.exists():
+            break
+        time.sleep(0.1)
+    assert not orphan.exists(), "the killed worker's run is still running"
     marker.unlink()
     assert sweep.main(args) == 0
     assert rows(out).status.tolist() == ["ok"]
@@ -244,7 +256,6 @@ def test_finding09_killed_dask_worker_leaves_no_temporary_files(fmi2sim_exe, roc
 
 def test_finding16_second_sweep_on_the_same_file_is_refused(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path, capsys):
     """A second sweep on a results file a running sweep is writing is refused, naming the first."""
-    import time
     exe = tmp_path / "fmi2sim_slow_start"
     started = tmp_path / "STARTED"
     fake_fmi2sim(exe, fmi2sim_exe, f'touch "{started}"; sleep 4')
