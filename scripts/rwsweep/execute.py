@@ -64,7 +64,7 @@ def describe(outcome, path):
     if r is not None and r.retried:
         lines.append(f"{r.retried} killed or timed-out rows of {path} run again")
     if r is not None and r.bad:
-        lines.append(f"{r.bad} damaged lines of {path} set aside (named above); their runs were run again")
+        lines.append(f"{r.bad} damaged lines of {path} set aside (named above); the runs of this plan among them run again")
     if r is not None and r.set_aside:
         lines.append(f"the rows not kept are in {r.set_aside}")
     if outcome.unfinished:
