@@ -122,8 +122,10 @@ def kd_map(d, path):
                              norm=matplotlib.colors.LogNorm(vmin=max(shown.min(), 0.1), vmax=shown.max()))
         ax.pcolormesh(xe, ye, np.ma.masked_where(np.isfinite(med.values), np.ones_like(med.values)),
                       cmap=matplotlib.colors.ListedColormap(["0.55"]))
-        cs = ax.contour(np.arange(len(kds)), np.arange(len(pgas)), frac.values, levels=[0.16, 0.5, 0.84], colors=["w", "c", "b"], linewidths=1.2)
-        ax.clabel(cs, fmt=lambda p: f"{p:.0%} collapse", fontsize=7)
+        if len(kds) >= 2 and len(pgas) >= 2:  # a contour needs a 2 x 2 grid at least
+            cs = ax.contour(np.arange(len(kds)), np.arange(len(pgas)), frac.values, levels=[0.16, 0.5, 0.84],
+                            colors=["w", "c", "b"], linewidths=1.2)
+            ax.clabel(cs, fmt=lambda p: f"{p:.0%} collapse", fontsize=7)
         ax.set_xticks(np.arange(len(kds)), [f"{k:g}" for k in kds], rotation=45)
         ax.set_yticks(np.arange(len(pgas)), [f"{x:g}" for x in pgas], fontsize=7)
         ax.set_xlabel("K_d [kN/m per m]")

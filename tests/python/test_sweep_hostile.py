@@ -387,6 +387,14 @@ def test_finding16_garbage_in_an_ok_row_is_named_by_ida(tmp_path, capsys):
     assert "not a results file" in capsys.readouterr().err
 
 
+def test_ida_on_a_single_kd_gives_plots_not_a_traceback(tmp_path):
+    path = synthetic_results(tmp_path)
+    d = pd.read_csv(path)
+    d[d.kd_kN == 5.0].to_csv(path, index=False, lineterminator="\n")
+    assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    assert (tmp_path / "plots" / "kd_map.png").exists()
+
+
 def synthetic_results(tmp_path):
     """A results file written as sweep.py writes it, without running fmi2sim: 2 records x 2 K_d x
     4 PGAs of wall 1, collapse above 0.3 g."""
