@@ -123,7 +123,7 @@ def read(path):
     if not path.exists() or path.stat().st_size == 0:
         return [], b"", []
     with open(path, "rb") as f:
-        header = f.readline()
+        header = f.readline(64 * 1024)  # a header is short: never read a whole odd file
         columns = _read_header(path, header)
         lines = []
         for number, raw in enumerate(f, start=2):
@@ -166,9 +166,10 @@ def _set_aside_path(path):
     return candidate
 
 
-def _write_whole(path, chunks):
+def _write_whole(path, chunks, mode_of=None):
     """Write a file as a temporary file in the same folder, then rename it into place: readers see
-    the old file or the new one, never half of one."""
+    the old file or the new one, never half of one. It gets the permissions of mode_of (default:
+    the file it replaces), not mkstemp's private 0600."""
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
     try:
         with os.fdopen(fd, "wb") as f:
@@ -176,8 +177,9 @@ def _write_whole(path, chunks):
                 f.write(chunk)
             f.flush()
             os.fsync(f.fileno())
-        if path.exists():
-            os.chmod(tmp, stat.S_IMODE(path.stat().st_mode))
+        like = pathlib.Path(mode_of or path)
+        if like.exists():
+            os.chmod(tmp, stat.S_IMODE(like.stat().st_mode))
         os.replace(tmp, path)
     except BaseException:
         os.unlink(tmp)
@@ -212,7 +214,9 @@ class ResultsFile:
     """Use as a context manager: holds the file's lock for the whole sweep."""
 
     def __init__(self, path):
-        self.path = pathlib.Path(path)
+        # the real file: a symlinked results file stays a symlink when the file is replaced
+        # whole, and two sweeps reaching one file by two names share one lock
+        self.path = pathlib.Path(os.path.realpath(path))
         self._f = None
         self._w = None
         self._lock = FileLock(self.path)
@@ -265,7 +269,8 @@ class ResultsFile:
         if aside:
             report_bad(self.path, aside, "set aside")
             backup = _set_aside_path(self.path)
-            _write_whole(backup, [header] + [ln.raw if ln.raw.endswith(b"\n") else ln.raw + b"\n" for ln in aside])
+            _write_whole(backup, [header] + [ln.raw if ln.raw.endswith(b"\n") else ln.raw + b"\n" for ln in aside],
+                         mode_of=self.path)
         if legacy:  # an older header: the rows gain the new (empty) provenance columns
             body = [_raw_row(ln.row) for ln in keep]
         else:
