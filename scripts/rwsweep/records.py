@@ -61,7 +61,8 @@ def check_regular(path):
         raise RecordError(f"{path}: not a regular file ({_kind(st.st_mode)}): a record must be a file")
     name = pathlib.Path(path).stem
     if not name.isprintable():
-        raise RecordError(f"{path!r}: the record's name has control characters (it names rows of the results)")
+        raise RecordError(f"{path!r}: the record's name has characters that cannot be printed (control characters, "
+                          "or bytes that are not UTF-8), and it names rows of the results file")
 
 
 def _kind(mode):
