@@ -123,24 +123,27 @@ def _fmi_call(slave, what, fn, *args):
                             f"{slave.log.last(slave.instanceName)}") from None
 
 
-def _open_slave(path, name, unzip_root, start, rtol, log):
-    """One Co-Simulation slave, instantiated and initialised; its FMU is unpacked under
-    unzip_root (removed by the caller)."""
+def _load_slave(path, name, unzip_root, log):
+    """One Co-Simulation slave, its FMU unpacked under unzip_root (removed by the caller)."""
     from fmpy import extract, read_model_description
     from fmpy.fmi2 import FMU2Slave
-    real, integer = start
     md = read_model_description(str(path))
     s = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(path), os.path.join(unzip_root, name)),
                   modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
     s.vr, s.fmu_path, s.log, s.failed, s.instantiated = vrs(md), str(path), log, False, False
-    _fmi_call(s, "at instantiation", s.instantiate, False, log.callbacks())
+    return s
+
+
+def _initialise(s, start, rtol):
+    """Instantiate and initialise a slave with its start values."""
+    real, integer = start
+    _fmi_call(s, "at instantiation", s.instantiate, False, s.log.callbacks())
     s.instantiated = True
     _fmi_call(s, "at setup", s.setupExperiment, rtol, 0.0)
     _fmi_call(s, "setting the start values", s.setReal, [s.vr[k] for k in real], list(real.values()))
     _fmi_call(s, "setting the start values", s.setInteger, [s.vr[k] for k in integer], list(integer.values()))
     _fmi_call(s, "at initialisation", s.enterInitializationMode)
     _fmi_call(s, "at initialisation", s.exitInitializationMode)
-    return s
 
 
 def _close_slaves(slaves):
@@ -212,7 +215,8 @@ def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol
         try:
             for path, name, start in [(wall_fmu, "wall", wall or wall_start_values()),
                                       (dia_fmu, "diaphragm", (dia or {}, {}))]:
-                slaves.append(_open_slave(path, name, unzip_root, start, rtol, log))
+                slaves.append(_load_slave(path, name, unzip_root, log))  # listed first: always freed
+                _initialise(slaves[-1], start, rtol)
             return _jacobi_fmpy(*slaves, t_in, ag_in, t_end, H, progress)
         finally:
             _close_slaves(slaves)
