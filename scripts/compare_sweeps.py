@@ -5,18 +5,19 @@ runs that survive in both (a collapsed run's peak is where the run was stopped, 
   .venv/bin/python scripts/compare_sweeps.py results/acc_rtol1e-6.csv results/acc_rtol1e-8.csv
 """
 import argparse
+import pathlib
 import sys
 
-import pandas as pd
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from rwsweep import store  # noqa: E402
 
 KEY = ["wall", "model", "hinge_law", "kd_kN", "record", "pga_g", "scale"]
 
 
 def load(path):
-    d = pd.read_csv(path)
-    d = d[d.status == "ok"].copy()
-    d["collapsed"] = d.collapsed.astype(str).str.lower().isin(["true", "1"])
-    return d.set_index(KEY).sort_index()
+    """The 'ok' runs (damaged lines named and left out, rwsweep.store)."""
+    d = store.load_frame(path)
+    return d[d.status == "ok"].set_index(KEY).sort_index()
 
 
 def main(argv=None):
@@ -24,7 +25,11 @@ def main(argv=None):
     p.add_argument("results")
     p.add_argument("reference")
     args = p.parse_args(argv)
-    a, ref = load(args.results), load(args.reference)
+    try:
+        a, ref = load(args.results), load(args.reference)
+    except (OSError, ValueError) as exc:
+        print(f"compare_sweeps.py: error: {exc}", file=sys.stderr)
+        return 2
     common = a.index.intersection(ref.index)
     if common.empty:
         sys.exit("the two files have no run in common")

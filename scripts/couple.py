@@ -11,8 +11,10 @@ integrate themselves with CVODE; a master exchanges their values every macro ste
 
 Two independent masters run the same fixed-step Jacobi scheme (every slave steps from t to t+H
 with the inputs set at t; after the step the outputs at t+H become the inputs of the next step):
-fmpy (FMU2Slave, in this process) and libcosim (libcosimpy, run in a subprocess because it can
-crash on a bad FMU). The ground motion is held over each step in both.
+fmpy (FMU2Slave) and libcosim (libcosimpy). The command line runs each master in a child process
+(this script with --json), so an FMU that crashes or a libcosim abort ends in a message naming
+the master and the signal, not a dead interpreter; every file the child unpacks goes into a
+temporary folder removed afterwards. The ground motion is held over each step in both.
 
     scripts/couple.py                                  # wall 1, El Centro x 0.5, fmpy master
     scripts/couple.py --master both                    # fmpy and libcosim, and their difference
@@ -22,9 +24,13 @@ Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms) and resu
 """
 import argparse
 import json
+import math
+import os
 import pathlib
+import signal
 import subprocess
 import sys
+import tempfile
 
 import numpy as np
 
@@ -40,8 +46,121 @@ MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
 LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
 
 
+# Meaningful ranges of the master's own options (low, high); the macro step is also at most t_end.
+T_END_RANGE = (1e-3, 1e5)     # s
+MACRO_STEP_MIN = 1e-6         # s: 30 s at 1 us is 3e7 exchanges, already hours
+RTOL_RANGE = (1e-12, 1e-2)
+
+
+class CouplingError(Exception):
+    """A slave failed (the FMU, the FMI call and the FMU's own message) or the run did not reach
+    its end: never a silent, shortened result."""
+
+
+def check_options(t_end, H, rtol):
+    """ValueError naming the option and its range."""
+    if not (math.isfinite(t_end) and T_END_RANGE[0] <= t_end <= T_END_RANGE[1]):
+        raise ValueError(f"--t-end {t_end!r} is outside [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}] s")
+    if not (math.isfinite(H) and MACRO_STEP_MIN <= H <= t_end):
+        raise ValueError(f"--macro-step {H!r} is outside [{MACRO_STEP_MIN:g}, t_end = {t_end:g}] s")
+    if not (math.isfinite(rtol) and RTOL_RANGE[0] <= rtol <= RTOL_RANGE[1]):
+        raise ValueError(f"--rtol {rtol!r} is outside [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]")
+
+
 def vrs(md):
     return {v.name: v.valueReference for v in md.modelVariables}
+
+
+class _FmuLog:
+    """The FMUs' log messages of warning level and above, kept to name the cause of a failure."""
+
+    def __init__(self):
+        self.messages = []
+        self._keep = []
+
+    def callbacks(self):
+        from ctypes import byref
+        from fmpy import calloc, free
+        from fmpy.fmi2 import (fmi2CallbackAllocateMemoryTYPE, fmi2CallbackFreeMemoryTYPE, fmi2CallbackFunctions,
+                               fmi2CallbackLoggerTYPE)
+        from fmpy.logging import addLoggerProxy
+
+        def logger(env, instance, status, category, message):
+            if status >= 1:  # fmi2Warning and worse
+                self.messages.append(f"{(instance or b'').decode(errors='replace')}: "
+                                     f"{(message or b'').decode(errors='replace')}")
+        cb = fmi2CallbackFunctions()
+        cb.logger = fmi2CallbackLoggerTYPE(logger)
+        cb.allocateMemory = fmi2CallbackAllocateMemoryTYPE(calloc)
+        cb.freeMemory = fmi2CallbackFreeMemoryTYPE(free)
+        addLoggerProxy(byref(cb))  # formats the FMU's printf-style arguments
+        self._keep.append(cb)  # each FMU holds a pointer to its callbacks until freeInstance
+        return cb
+
+    def last(self, instance):
+        mine = [m for m in self.messages if m.startswith(instance + ":")]
+        return mine[-1] if mine else f"{instance}: no message logged"
+
+
+def _status_name(status):
+    names = ["ok", "warning", "discard", "error", "fatal", "pending"]
+    return names[status] if 0 <= status < len(names) else f"status {status}"
+
+
+def _fmi_call(slave, what, fn, *args):
+    """fn(*args), an FMI call of `slave`, with a failure turned into a CouplingError naming the FMU,
+    the call and the FMU's own last message."""
+    from fmpy.fmi1 import FMICallException
+    try:
+        return fn(*args)
+    except FMICallException as exc:
+        slave.failed = True
+        raise CouplingError(f"{slave.fmu_path} ({slave.instanceName}): {exc.function} returned "
+                            f"{_status_name(exc.status)} {what}: {slave.log.last(slave.instanceName)}") from None
+    except Exception as exc:  # fmpy raises a bare Exception when fmi2Instantiate returns NULL
+        slave.failed = True
+        raise CouplingError(f"{slave.fmu_path} ({slave.instanceName}) {what}: {exc}: "
+                            f"{slave.log.last(slave.instanceName)}") from None
+
+
+def _load_slave(path, name, unzip_root, log):
+    """One Co-Simulation slave, its FMU unpacked under unzip_root (removed by the caller)."""
+    from fmpy import extract, read_model_description
+    from fmpy.fmi2 import FMU2Slave
+    md = read_model_description(str(path))
+    s = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(path), os.path.join(unzip_root, name)),
+                  modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
+    s.vr, s.fmu_path, s.log, s.failed, s.instantiated = vrs(md), str(path), log, False, False
+    return s
+
+
+def _initialise(s, start, rtol):
+    """Instantiate and initialise a slave with its start values."""
+    real, integer = start
+    _fmi_call(s, "at instantiation", s.instantiate, False, s.log.callbacks())
+    s.instantiated = True
+    _fmi_call(s, "at setup", s.setupExperiment, rtol, 0.0)
+    _fmi_call(s, "setting the start values", s.setReal, [s.vr[k] for k in real], list(real.values()))
+    _fmi_call(s, "setting the start values", s.setInteger, [s.vr[k] for k in integer], list(integer.values()))
+    _fmi_call(s, "at initialisation", s.enterInitializationMode)
+    _fmi_call(s, "at initialisation", s.exitInitializationMode)
+
+
+def _close_slaves(slaves):
+    """Terminate the slaves that did not fail (a failed one may not be terminated) and free all;
+    an error here never hides the one that ended the run."""
+    for s in slaves:
+        if not s.instantiated:
+            continue
+        try:
+            if not s.failed:
+                s.terminate()
+        except Exception as exc:  # noqa: BLE001  reported, not raised: the run's result stands
+            print(f"couple.py: warning: {s.fmu_path} ({s.instanceName}): fmi2Terminate failed: {exc}", file=sys.stderr)
+        try:
+            s.freeInstance()
+        except Exception:  # noqa: BLE001
+            pass
 
 
 def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86):
@@ -88,30 +207,29 @@ def _assemble(t, wall_rows, dia_rows):
 
 
 def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol=1e-6, progress=False):
-    """The fmpy master: fixed-step Jacobi over two Co-Simulation slaves."""
-    from fmpy import extract, read_model_description
-    from fmpy.fmi2 import FMU2Slave
+    """The fmpy master: fixed-step Jacobi over two Co-Simulation slaves. Both FMUs are unpacked into
+    one temporary folder, removed however the run ends."""
+    check_options(t_end, H, rtol)
+    log, slaves = _FmuLog(), []
+    with tempfile.TemporaryDirectory(prefix="couple_fmus_") as unzip_root:
+        try:
+            for path, name, start in [(wall_fmu, "wall", wall or wall_start_values()),
+                                      (dia_fmu, "diaphragm", (dia or {}, {}))]:
+                slaves.append(_load_slave(path, name, unzip_root, log))  # listed first: always freed
+                _initialise(slaves[-1], start, rtol)
+            return _jacobi_fmpy(*slaves, t_in, ag_in, t_end, H, progress)
+        finally:
+            _close_slaves(slaves)
 
-    slaves = []
-    for path, name, (real, integer) in [(wall_fmu, "wall", wall or wall_start_values()),
-                                        (dia_fmu, "diaphragm", (dia or {}, {}))]:
-        md = read_model_description(str(path))
-        s = FMU2Slave(guid=md.guid, unzipDirectory=extract(str(path)),
-                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
-        s.vr = vrs(md)
-        s.instantiate()
-        s.setupExperiment(tolerance=rtol, startTime=0.0)
-        s.setReal([s.vr[k] for k in real], list(real.values()))
-        s.setInteger([s.vr[k] for k in integer], list(integer.values()))
-        s.enterInitializationMode()
-        s.exitInitializationMode()
-        slaves.append(s)
-    w, d = slaves
+
+def _jacobi_fmpy(w, d, t_in, ag_in, t_end, H, progress):
+    from fmpy.fmi1 import FMICallException
+    from fmpy.fmi2 import fmi2Discard
     n = int(round(t_end / H))
     times, wall_rows, dia_rows = [], [], []
-    u = d.getReal([d.vr["u"]])[0]
-    w.setReal([w.vr["u_top"]], [u])
-    F = w.getReal([w.vr["F_top"]])[0]
+    u = _fmi_call(d, "at t = 0", d.getReal, [d.vr["u"]])[0]
+    _fmi_call(w, "at t = 0", w.setReal, [w.vr["u_top"]], [u])
+    F = _fmi_call(w, "at t = 0", w.getReal, [w.vr["F_top"]])[0]
     steps = range(n)
     if progress:
         from tqdm import tqdm
@@ -119,44 +237,50 @@ def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol
     collapsed_at = None
     for k in steps:
         t = k * H
+        at = f"at t = {t:.6g} s"
         ag = float(np.interp(t, t_in, ag_in, right=0.0))
-        w.setReal([w.vr["ag"], w.vr["u_top"]], [ag, u])
-        d.setReal([d.vr["ag"], d.vr["F_top"]], [ag, F])
+        _fmi_call(w, at, w.setReal, [w.vr["ag"], w.vr["u_top"]], [ag, u])
+        _fmi_call(d, at, d.setReal, [d.vr["ag"], d.vr["F_top"]], [ag, F])
         times.append(t)
-        wall_rows.append(w.getReal([w.vr[x] for x in WALL_OUT]))
-        dia_rows.append(d.getReal([d.vr[x] for x in DIA_OUT]))
+        wall_rows.append(_fmi_call(w, at, w.getReal, [w.vr[x] for x in WALL_OUT]))
+        dia_rows.append(_fmi_call(d, at, d.getReal, [d.vr[x] for x in DIA_OUT]))
         try:
             w.doStep(currentCommunicationPoint=t, communicationStepSize=H)
-        except Exception:  # fmi2Discard: the wall collapsed and the FMU ended the run
+        except FMICallException as exc:
+            if exc.status != fmi2Discard:  # an error, not the collapse the FMU ends a run with
+                _fmi_call(w, at, _raise, exc)
             collapsed_at = t
             break
-        d.doStep(currentCommunicationPoint=t, communicationStepSize=H)
-        F = w.getReal([w.vr["F_top"]])[0]  # with the u_top of the step (Jacobi)
-        u = d.getReal([d.vr["u"]])[0]
+        _fmi_call(d, at, d.doStep, t, H)
+        F = _fmi_call(w, at, w.getReal, [w.vr["F_top"]])[0]  # with the u_top of the step (Jacobi)
+        u = _fmi_call(d, at, d.getReal, [d.vr["u"]])[0]
     else:
         times.append(n * H)
         w.setReal([w.vr["u_top"]], [u])
         d.setReal([d.vr["F_top"]], [F])
         wall_rows.append(w.getReal([w.vr[x] for x in WALL_OUT]))
         dia_rows.append(d.getReal([d.vr[x] for x in DIA_OUT]))
-    for s in slaves:
-        s.terminate()
-        s.freeInstance()
     r = _assemble(times, wall_rows, dia_rows)
     r["collapsed_at"] = collapsed_at
     return r
+
+
+def _raise(exc):
+    raise exc
 
 
 def run_libcosim(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None):
     """The libcosim master (libcosimpy) with the same Jacobi scheme: call it in a subprocess
     (run_libcosim_subprocess), libcosim aborts the process on some FMU errors."""
     from fmpy import read_model_description
-    from libcosimpy.CosimEnums import CosimVariableType
     from libcosimpy.CosimExecution import CosimExecution
     from libcosimpy.CosimManipulator import CosimManipulator
     from libcosimpy.CosimObserver import CosimObserver
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
     from libcosimpy.CosimSlave import CosimLocalSlave
 
+    check_options(t_end, H, 1e-6)
+    log_output_level(CosimLogLevel.WARNING)  # its trace of every FMU event would fill the parent's pipe
     real, integer = wall or wall_start_values()
     wv, dv = vrs(read_model_description(str(wall_fmu))), vrs(read_model_description(str(dia_fmu)))
     ex = CosimExecution.from_step_size(step_size=int(round(H * 1e9)))  # nanoseconds
@@ -178,22 +302,72 @@ def run_libcosim(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None):
     # after a step: row 0 is the state at rest both slaves start from (every output 0)
     n = int(round(t_end / H))
     times, wall_rows, dia_rows = [0.0], [[0.0] * len(WALL_OUT)], [[0.0] * len(DIA_OUT)]
+    collapsed_at = None
     for k in range(n):
         ag = float(np.interp(k * H, t_in, ag_in, right=0.0))
         override.slave_real_values(iw, [wv["ag"]], [ag])  # held over the step, as in run_fmpy
         override.slave_real_values(idia, [dv["ag"]], [ag])
         if not ex.step():
-            break
+            message = _libcosim_error()
+            # libcosim reports a slave's fmi2Discard as "<instance>: Step not complete" (its
+            # observer keeps the values of the last good step, so the wall's `collapsed` output
+            # cannot be read there): from the wall it is the collapse that ends its run, as in
+            # run_fmpy; anything else is a failure
+            if "wall: Step not complete" in message:
+                collapsed_at = k * H
+                break
+            raise CouplingError(f"libcosim master: the step from t = {k * H:.6g} s failed before t_end = "
+                                f"{t_end:g} s: {message}")
         times.append((k + 1) * H)
         wall_rows.append(observer.last_real_values(iw, [wv[x] for x in WALL_OUT]))
         dia_rows.append(observer.last_real_values(idia, [dv[x] for x in DIA_OUT]))
-    return _assemble(times, wall_rows, dia_rows)
+    if collapsed_at is None and abs(times[-1] - n * H) > 1e-9 * max(1.0, t_end):
+        raise CouplingError(f"libcosim master: the run ended at t = {times[-1]:.6g} s, not at t_end = {t_end:g} s")
+    r = _assemble(times, wall_rows, dia_rows)
+    r["collapsed_at"] = collapsed_at
+    return r
+
+
+def _libcosim_error():
+    from libcosimpy._internal import get_last_error_message
+    return get_last_error_message() or "no message from libcosim"
+
+
+def run_master_subprocess(master, args_list, out_json):
+    """Run one master of this script in a fresh process (an FMU that crashes, or libcosim aborting,
+    ends that process only) with its own temporary folder, removed afterwards with whatever the
+    child unpacked, even when it was killed. Returns the CompletedProcess."""
+    cmd = [sys.executable, str(pathlib.Path(__file__).resolve()), "--master", master, "--json", str(out_json)]
+    with tempfile.TemporaryDirectory(prefix="couple_") as tmp:
+        return subprocess.run(cmd + list(args_list), capture_output=True, text=True, errors="replace",
+                              timeout=1800, env=dict(os.environ, TMPDIR=tmp))
 
 
 def run_libcosim_subprocess(args_list, out_json):
-    """Run this script's libcosim master in a fresh process; returns the CompletedProcess."""
-    cmd = [sys.executable, str(pathlib.Path(__file__).resolve()), "--master", "libcosim", "--json", str(out_json)]
-    return subprocess.run(cmd + list(args_list), capture_output=True, text=True, timeout=1800)
+    """The libcosim master in a fresh process (see run_master_subprocess)."""
+    return run_master_subprocess("libcosim", args_list, out_json)
+
+
+def child_failure(master, proc, fmus):
+    """The message for a master's process that failed, the real error first: its own error line
+    when it wrote one, else the last error an FMU or libcosim logged, then how the process ended
+    (a signal: an FMU crashed, or libcosim aborted on an error it threw from a thread)."""
+    lines = [ln.strip() for ln in proc.stderr.splitlines() if ln.strip()]
+    own = [ln for ln in lines if ln.startswith("couple.py: error:")]
+    if own:
+        return own[-1][len("couple.py: error: "):]
+    logged = [ln for ln in lines if "what():" in ln or "[error]" in ln]
+    cause = logged[-1].split("what():")[-1].strip()[-500:] if logged else ""
+    if proc.returncode < 0:
+        sig = signal.Signals(-proc.returncode)
+        how = (f"the {master} master aborted (signal {sig.value}, {sig.name})" if sig == signal.SIGABRT and cause
+               else f"the {master} master died with signal {sig.value} ({sig.name}): an FMU crashed")
+    else:
+        how = f"the {master} master failed (exit {proc.returncode})"
+    where = f"wall {fmus[0]}, diaphragm {fmus[1]}"
+    if cause:
+        return f"{cause} ({how}; {where})"
+    return f"{how} ({where})" + (f"; last output: {lines[-1][-500:]}" if lines else "")
 
 
 def save_csv(r, path):
@@ -232,7 +406,7 @@ def plot(r, path, title, other=None):
     plt.close(fig)
 
 
-def main(argv=None):
+def parse_args(argv):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--wall-fmu", default=str(REPO / "build" / "RockingWall.fmu"))
     ap.add_argument("--diaphragm-fmu", default=str(REPO / "build" / "Diaphragm.fmu"))
@@ -244,51 +418,78 @@ def main(argv=None):
     ap.add_argument("--m", type=float, default=2000.0, help="diaphragm mass, kg per m of wall")
     ap.add_argument("--k", type=float, default=7e5, help="diaphragm stiffness, N/m per m of wall")
     ap.add_argument("--zeta", type=float, default=0.05)
-    ap.add_argument("--macro-step", type=float, default=1e-3)
-    ap.add_argument("--t-end", type=float, default=30.0)
-    ap.add_argument("--rtol", type=float, default=1e-6)
+    ap.add_argument("--macro-step", type=float, default=1e-3,
+                    help=f"communication step H [s], in [{MACRO_STEP_MIN:g}, t_end]")
+    ap.add_argument("--t-end", type=float, default=30.0, help=f"[s], in [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}]")
+    ap.add_argument("--rtol", type=float, default=1e-6, help=f"the slaves' tolerance, in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]")
     ap.add_argument("--master", choices=["fmpy", "libcosim", "both"], default="fmpy")
     ap.add_argument("--out", default=str(REPO / "results" / "couple.csv"))
     ap.add_argument("--plot", default=str(REPO / "results" / "couple.png"))
-    ap.add_argument("--json", help="write the result arrays as JSON (used for the libcosim subprocess)")
-    a = ap.parse_args(argv)
+    ap.add_argument("--json", help="run one master in this process and write its result arrays as JSON "
+                                   "(how the command line runs each master in a child process)")
+    return ap.parse_args(argv)
+
+
+def run_here(a):
+    """One master in this process (the child's side of run_master_subprocess)."""
     t_in, ag_in = ground_motion(a.record, a.scale)
     wall = wall_start_values(a.wall, a.Kd, a.hinge_law)
     dia = {"m": a.m, "k": a.k, "zeta": a.zeta}
     if a.master == "libcosim":
-        r = run_libcosim(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia)
-        if a.json:
-            pathlib.Path(a.json).write_text(json.dumps({k: np.asarray(v).tolist() for k, v in r.items()}))
-        print(f"libcosim: peak s1 {np.abs(r['wall_s1']).max():.5f} m, s2 {np.abs(r['wall_s2']).max():.5f} m, "
-              f"u {np.abs(r['dia_u']).max():.5f} m")
-        return 0
-    r = run_fmpy(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia, a.rtol, progress=True)
-    other = None
-    if a.master == "both":
-        out_json = pathlib.Path(a.out).with_suffix(".libcosim.json")
-        passthrough = [f"--{k.replace('_', '-')}={v}" for k, v in vars(a).items()
-                       if k not in ("master", "json", "out", "plot")]
-        proc = run_libcosim_subprocess(passthrough, out_json)
-        if proc.returncode != 0:
-            print(f"couple: the libcosim master failed (exit {proc.returncode}):\n{proc.stderr[-2000:]}", file=sys.stderr)
-            return 1
-        other = CoupledResult({k: np.asarray(v) for k, v in json.loads(out_json.read_text()).items()})
+        return run_libcosim(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia)
+    return run_fmpy(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia, a.rtol)
+
+
+def run_child(master, a):
+    """A master's result, run in a child process; CouplingError with the child's real error."""
+    passthrough = [f"--{k.replace('_', '-')}={v}" for k, v in vars(a).items()
+                   if k not in ("master", "json", "out", "plot")]
+    with tempfile.TemporaryDirectory(prefix="couple_result_") as tmp:
+        out_json = pathlib.Path(tmp) / f"{master}.json"
+        proc = run_master_subprocess(master, passthrough, out_json)
+        if proc.returncode != 0 or not out_json.exists():
+            raise CouplingError(child_failure(master, proc, (a.wall_fmu, a.diaphragm_fmu)))
+        data = json.loads(out_json.read_text())
+    r = CoupledResult({k: np.asarray(v) for k, v in data.items() if k != "collapsed_at"})
+    r["collapsed_at"] = data.get("collapsed_at")
+    return r
+
+
+def report(master, r, a):
+    end = (f", wall collapsed at t = {r['collapsed_at']:.3f} s" if r.get("collapsed_at") is not None
+           else f", to t = {r['time'][-1]:g} s")
+    print(f"{master} master, H = {a.macro_step:g} s: peak s1 {np.abs(r['wall_s1']).max():.5f} m, "
+          f"s2 {np.abs(r['wall_s2']).max():.5f} m, diaphragm u {np.abs(r['dia_u']).max():.5f} m{end}")
+
+
+def main(argv=None):
+    a = parse_args(argv)
+    try:
+        check_options(a.t_end, a.macro_step, a.rtol)
+        if a.json:  # the child: one master here, its arrays to the parent
+            r = run_here(a)
+            pathlib.Path(a.json).write_text(json.dumps({k: (np.asarray(v).tolist() if v is not None else None)
+                                                        for k, v in r.items()}))
+            return 0
+        masters = ["fmpy", "libcosim"] if a.master == "both" else [a.master]
+        results = {m: run_child(m, a) for m in masters}
+    except (ValueError, OSError, CouplingError) as exc:
+        print(f"couple.py: error: {exc}", file=sys.stderr)
+        return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
+    r = results[masters[0]]
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     save_csv(r, a.out)
     title = (f"Wall {a.wall} + diaphragm (m = {a.m:g} kg/m, k = {a.k:g} N/m2, zeta = {a.zeta:g}), "
              f"K_d = {a.Kd:g} N/m2, H = {a.macro_step:g} s")
-    plot(r, a.plot, title, other)
-    w_in = r.ground_work()
-    print(f"fmpy master, H = {a.macro_step:g} s: peak s1 {np.abs(r['wall_s1']).max():.5f} m, "
-          f"s2 {np.abs(r['wall_s2']).max():.5f} m, diaphragm u {np.abs(r['dia_u']).max():.5f} m"
-          + (f", wall collapsed at t = {r['collapsed_at']:.3f} s" if r["collapsed_at"] is not None else ""))
+    plot(r, a.plot, title, results.get("libcosim") if len(masters) == 2 else None)
+    for m in masters:
+        report(m, results[m], a)
     print(f"energy: max |residual| {np.abs(r.energy_residual()).max():.4g} J/m against "
-          f"max |ground work| {np.abs(w_in).max():.4g} J/m")
-    if other is not None:
+          f"max |ground work| {np.abs(r.ground_work()).max():.4g} J/m")
+    if len(masters) == 2:
+        other = results["libcosim"]
         n = min(len(r["time"]), len(other["time"]))
-        diff = np.abs(r["wall_s1"][:n] - other["wall_s1"][:n]).max()
-        print(f"libcosim master: peak s1 {np.abs(other['wall_s1']).max():.5f} m; "
-              f"max |s1 fmpy - s1 libcosim| = {diff:.3g} m")
+        print(f"max |s1 fmpy - s1 libcosim| = {np.abs(r['wall_s1'][:n] - other['wall_s1'][:n]).max():.3g} m")
     print(f"wrote {a.out} and {a.plot}")
     return 0
 

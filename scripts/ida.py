@@ -18,21 +18,34 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rwsweep import fragility  # noqa: E402
+from rwsweep import fragility, store  # noqa: E402
+from rwsweep.runner import ERROR, OK, RETRIED  # noqa: E402
+
+def report_not_ok(d, path):
+    """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the
+    fragility, so they are named, not dropped silently."""
+    unfinished = d[d.status.isin(RETRIED)]
+    if len(unfinished):
+        print(f"{path}: {len(unfinished)} runs were killed or timed out and are NOT in the plots (often the runs "
+              f"nearest collapse), e.g. {unfinished.run_id.iloc[0]}: {unfinished.message.iloc[0]}; "
+              "resume the sweep (the same sweep.py command) to run them again", file=sys.stderr)
+    failed = d[d.status == ERROR]
+    if len(failed):
+        print(f"{path}: {len(failed)} runs failed and are left out, e.g. {failed.record.iloc[0]}: "
+              f"{failed.message.iloc[0]}", file=sys.stderr)
 
 
 def load(path, wall, model, hinge_law):
-    d = pd.read_csv(path)
-    bad = d[d.status != "ok"]
-    if len(bad):
-        print(f"{len(bad)} runs failed and are left out, e.g. {bad.record.iloc[0]}: {bad.message.iloc[0]}")
-    d = d[(d.status == "ok") & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)].copy()
+    """The 'ok' runs of one wall, model and hinge law; damaged lines of the file are named and left
+    out (rwsweep.store), and a run_id written twice counts once (the last row)."""
+    d = store.load_frame(path)
+    report_not_ok(d, path)
+    d.attrs["unfinished"] = int(d.status.isin(RETRIED).sum())
+    d = d[(d.status == OK) & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
-        sys.exit(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
-    d["collapsed"] = d.collapsed.astype(str).str.lower().isin(["true", "1"])
+        raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
     return d
 
 
@@ -109,8 +122,10 @@ def kd_map(d, path):
                              norm=matplotlib.colors.LogNorm(vmin=max(shown.min(), 0.1), vmax=shown.max()))
         ax.pcolormesh(xe, ye, np.ma.masked_where(np.isfinite(med.values), np.ones_like(med.values)),
                       cmap=matplotlib.colors.ListedColormap(["0.55"]))
-        cs = ax.contour(np.arange(len(kds)), np.arange(len(pgas)), frac.values, levels=[0.16, 0.5, 0.84], colors=["w", "c", "b"], linewidths=1.2)
-        ax.clabel(cs, fmt=lambda p: f"{p:.0%} collapse", fontsize=7)
+        if len(kds) >= 2 and len(pgas) >= 2:  # a contour needs a 2 x 2 grid at least
+            cs = ax.contour(np.arange(len(kds)), np.arange(len(pgas)), frac.values, levels=[0.16, 0.5, 0.84],
+                            colors=["w", "c", "b"], linewidths=1.2)
+            ax.clabel(cs, fmt=lambda p: f"{p:.0%} collapse", fontsize=7)
         ax.set_xticks(np.arange(len(kds)), [f"{k:g}" for k in kds], rotation=45)
         ax.set_yticks(np.arange(len(pgas)), [f"{x:g}" for x in pgas], fontsize=7)
         ax.set_xlabel("K_d [kN/m per m]")
@@ -131,7 +146,11 @@ def main(argv=None):
     p.add_argument("--hinge-law", default="dohertyHinge")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
     args = p.parse_args(argv)
-    d = load(args.results, args.wall, args.model, args.hinge_law)
+    try:
+        d = load(args.results, args.wall, args.model, args.hinge_law)
+    except (OSError, ValueError) as exc:
+        print(f"ida.py: error: {exc}", file=sys.stderr)
+        return 2
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
     sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
@@ -143,7 +162,9 @@ def main(argv=None):
     for kd, f in fits.items():
         print(f"{kd:10g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}")
     print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")
-    return 0
+    # the plots are made from every good row, but a file with damaged lines or unfinished runs is
+    # not a complete result: say so in the exit status too
+    return 1 if d.attrs.get("damaged_lines") or d.attrs.get("unfinished") else 0
 
 
 if __name__ == "__main__":

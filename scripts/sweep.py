@@ -9,8 +9,12 @@ results/records/) or a folder of PEER .AT2 files (--suite DIR).
 Runs go to a LocalCluster on this machine (--workers) or to a running Dask scheduler
 (--scheduler ADDRESS; its workers must see fmi2sim, the FMU and the records at the same paths).
 Each finished run is appended to one CSV (--out); run the same command again to resume: runs
-already in the file are not repeated. A run that fails (e.g. a damaged record) becomes a row with
-status 'error' and fmi2sim's message, and the sweep goes on.
+already in the file, computed from the same inputs (record content, FMU, fmi2sim, settings), are
+not repeated; killed or timed-out runs are. A run that fails (e.g. a damaged record) becomes a row
+with status 'error' and fmi2sim's message, and the sweep goes on. One sweep at a time per results
+file (FILE.lock). Exit status: 0 when every run is finished (even with 'error' rows), 1 when some
+runs were killed or timed out (run the command again) or the file had damaged lines (set aside
+into FILE.set-aside-<time>, named line by line), 2 for a refused command or file.
 
 Example (the measured sweep of the README):
   .venv/bin/python scripts/sweep.py --config scripts/sweeps/fema_ida.toml --out results/sweep_fema.csv
@@ -25,8 +29,10 @@ import time
 REPO = pathlib.Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO / "reference"))
 sys.path.insert(0, str(REPO / "scripts"))
-from rwsweep import grid, records  # noqa: E402
-from rwsweep.execute import execute  # noqa: E402
+from rwsweep import grid, records, store  # noqa: E402
+from rwsweep.execute import check_options, describe as describe_outcome, execute  # noqa: E402
+from rwsweep.execute import Terminated  # noqa: E402
+from rwsweep.lock import Busy  # noqa: E402
 
 BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
 FEMA_CACHE = REPO / "results" / "records" / "fema_farfield"
@@ -52,6 +58,8 @@ def parse_args(argv=None):
     p.add_argument("--scheduler", help="address of a running Dask scheduler, or 'synchronous' (no Dask)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="LocalCluster workers (default: cores)")
     p.add_argument("--batch", type=int, default=4, help="runs per Dask task (default 4)")
+    p.add_argument("--timeout", type=float, help="seconds a run may take before it is killed (default 600); "
+                                                  "timed-out runs are retried on resume")
     p.add_argument("--dry-run", action="store_true", help="print the plan and its size, run nothing")
     p.add_argument("--scan-workers", type=int, nargs="+", metavar="N",
                    help="time the whole plan once per worker count, each into a fresh file OUT.wN.csv, "
@@ -66,7 +74,7 @@ def load_suite(cfg):
     if cfg["records"]:
         missing = set(cfg["records"]) - {r.name for r in recs}
         if missing:
-            sys.exit(f"records not in the suite: {sorted(missing)}")
+            raise ValueError(f"records not in the suite '{suite}': {sorted(missing)}")
         recs = [r for r in recs if r.name in set(cfg["records"])]
     return recs
 
@@ -92,18 +100,54 @@ def describe(cfg, suite, specs):
 
 def check_artefacts(args):
     for path in (args.fmi2sim, args.fmu):
-        if not pathlib.Path(path).exists():
-            sys.exit(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
-                     "or pass --fmi2sim/--fmu or RW_BUILD_DIR")
+        if not pathlib.Path(path).is_file():
+            raise FileNotFoundError(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
+                                    "or pass --fmi2sim/--fmu or RW_BUILD_DIR")
+
+
+def check_command(args):
+    """Refuse absurd execution options and an --out that cannot be a results file, before the
+    (possibly long) planning."""
+    check_options(args.workers, args.batch, args.timeout)
+    for n in args.scan_workers or []:
+        check_options(n, args.batch, args.timeout)
+    store.check_target(args.out)
 
 
 def report(label, outcome):
-    print(f"{label}: {outcome.ran} runs ({outcome.errors} errors, {outcome.skipped} already done) in "
-          f"{outcome.seconds:.1f} s = {outcome.runs_per_s:.2f} runs/s (+ {outcome.startup_s:.1f} s to start Dask)")
+    for line in describe_outcome(outcome, label):
+        print(line, file=sys.stderr)
+    if outcome.ran == 0:
+        print(f"{label}: nothing to do: all {outcome.planned} runs are done")
+        return
+    print(f"{label}: {outcome.ran} runs ({outcome.errors} errors, {outcome.unfinished} killed or timed out, "
+          f"{outcome.skipped} already done) in {outcome.seconds:.1f} s = {outcome.runs_per_s:.2f} runs/s "
+          f"(+ {outcome.startup_s:.1f} s to start Dask)")
+
+
+def exit_status(outcome):
+    """1 when the results are not complete and clean: runs killed or timed out (run the command
+    again), or damaged lines found in the file (set aside, and their runs computed again)."""
+    return 1 if outcome.unfinished or (outcome.resume is not None and outcome.resume.bad) else 0
 
 
 def main(argv=None):
+    """The command line; refused commands and files end with a message (file, line, problem)
+    and exit status 2, never a traceback."""
     args = parse_args(argv)
+    try:
+        return run(args)
+    except (ValueError, OSError, ImportError, Busy) as exc:  # ResultsError, RecordError are ValueErrors
+        print(f"sweep.py: error: {exc}", file=sys.stderr)
+        return 2
+    except (KeyboardInterrupt, Terminated) as exc:
+        print(f"sweep.py: interrupted ({type(exc).__name__} {exc}): the rows written so far are kept; "
+              "run the same command again to resume", file=sys.stderr)
+        return 130
+
+
+def run(args):
+    check_command(args)
     cfg, suite, specs = plan(args)
     print(describe(cfg, suite, specs))
     if args.dry_run:
@@ -111,13 +155,13 @@ def main(argv=None):
     check_artefacts(args)
     print("load:", subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip())
     common = dict(fmi2sim=args.fmi2sim, fmu=args.fmu, rtol=cfg["rtol"], scheduler=args.scheduler,
-                  batch=args.batch, progress=not args.no_progress)
+                  batch=args.batch, progress=not args.no_progress, timeout=args.timeout)
     if not args.scan_workers:
         t0 = time.perf_counter()
         outcome = execute(specs, args.out, workers=args.workers, **common)
         report(f"{args.out}", outcome)
         print(f"total wall-clock time {time.perf_counter() - t0:.1f} s")
-        return 0
+        return exit_status(outcome)
     base = pathlib.Path(args.out)
     times = {}
     for n in args.scan_workers:

@@ -1,12 +1,19 @@
 """Run the unfinished runs of a plan on Dask (or in this process) and append each row to the
 results file as it arrives."""
+import contextlib
 import dataclasses
+import os
+import pathlib
+import shutil
+import signal
+import tempfile
+import threading
 import time
 
 import cloudpickle
 from tqdm import tqdm
 
-from . import runner
+from . import provenance, runner
 from .store import ResultsFile
 
 # Workers get the run function by value, so a Dask cluster started elsewhere (--scheduler) needs
@@ -18,62 +25,196 @@ cloudpickle.register_pickle_by_value(runner)
 @dataclasses.dataclass
 class Outcome:
     planned: int
-    skipped: int       # already in the results file
+    skipped: int       # already in the results file, computed from the same inputs
     ran: int
-    errors: int
+    errors: int        # rows with status 'error'
+    unfinished: int    # killed or timed out: run again by the next resume
     seconds: float     # from the first submission to the last row written
     startup_s: float   # starting the LocalCluster / connecting to the scheduler
+    resume: object = None  # store.Resume: what was reused, recomputed and set aside
 
     @property
     def runs_per_s(self):
         return self.ran / self.seconds if self.seconds > 0 else float("nan")
 
 
+# Meaningful ranges of the execution options, checked before anything starts.
+LIMITS = dict(workers=(1, 1024), batch=(1, 100_000))
+TIMEOUT_RANGE = (1.0, 7 * 86400.0)
+
+
+def check_options(workers, batch, timeout):
+    """ValueError naming the option and its range (workers = 0 would wait forever for a worker)."""
+    for name, value in (("workers", workers), ("batch", batch)):
+        low, high = LIMITS[name]
+        if isinstance(value, bool) or not isinstance(value, int) or not low <= value <= high:
+            raise ValueError(f"--{name} {value!r} is outside [{low}, {high}]")
+    if timeout is not None:
+        low, high = TIMEOUT_RANGE
+        if not low <= float(timeout) <= high:  # also refuses NaN
+            raise ValueError(f"--timeout {timeout!r} is outside [{low:g}, {high:g}] s")
+
+
+def describe(outcome, path):
+    """Lines telling what a resume reused, ran again and set aside, and what is left to do."""
+    r, lines = outcome.resume, []
+    if r is not None and r.stale:
+        why = "; ".join(f"{n} {reason}" for reason, n in r.stale.most_common())
+        lines.append(f"{sum(r.stale.values())} rows of {path} not reused, computed from other inputs ({why}): run again")
+    if r is not None and r.retried:
+        lines.append(f"{r.retried} killed or timed-out rows of {path} run again")
+    if r is not None and r.bad:
+        lines.append(f"{r.bad} damaged lines of {path} set aside (named above); the runs of this plan among them run again")
+    if r is not None and r.set_aside:
+        lines.append(f"the rows not kept are in {r.set_aside}")
+    if outcome.unfinished:
+        lines.append(f"{outcome.unfinished} runs were killed or timed out (not finished): "
+                     "run the same command again to retry them")
+    return lines
+
+
 def _batches(items, size):
     return [items[i:i + size] for i in range(0, len(items), size)]
 
 
-def execute(specs, results_path, fmi2sim, fmu, rtol, scheduler=None, workers=2, batch=1, progress=True):
-    """scheduler: None -> a LocalCluster of `workers` single-threaded worker processes;
-    'synchronous' -> one after another in this process; else the address of a running Dask
-    scheduler, used as it is."""
-    store = ResultsFile(results_path)
-    done = store.finished()
-    todo = [dataclasses.asdict(s) for s in specs if s.run_id not in done]
-    errors = 0
-    bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, smoothing=0.05)
-    client = cluster = None
-    t_start = time.perf_counter()
+def keyed(specs, fmi2sim, fmu, rtol):
+    """The specs as dicts with the columns that say what each row is computed from."""
+    eng = provenance.engine(fmi2sim, fmu, rtol)
+    out = []
+    for s in specs:
+        d = dataclasses.asdict(s)
+        d.update(eng)
+        d["key"] = provenance.run_key(d, eng)
+        out.append(d)
+    return out
+
+
+class Terminated(BaseException):
+    """SIGTERM or SIGHUP: unwinds like Ctrl-C, so every `finally` (cluster, temporary folders,
+    results file) runs."""
+
+
+@contextlib.contextmanager
+def _signals_unwind():
+    if threading.current_thread() is not threading.main_thread():
+        yield  # handlers can only be set from the main thread
+        return
+
+    def handler(signum, frame):
+        raise Terminated(signal.Signals(signum).name)
+    old = {s: signal.signal(s, handler) for s in (signal.SIGTERM, signal.SIGHUP)}
     try:
-        if scheduler == "synchronous":
-            startup = 0.0
-            t0 = time.perf_counter()
-            stream = ([runner.run(s, fmi2sim, fmu, rtol)] for s in todo)
-        else:
-            from dask.distributed import Client, LocalCluster, as_completed
-            if todo:
-                if scheduler:
-                    client = Client(scheduler)
-                else:
-                    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                           dashboard_address=":0")  # any free port: never clash
-                    client = Client(cluster)
-            startup = time.perf_counter() - t_start
-            t0 = time.perf_counter()
-            futures = [client.submit(runner.run_batch, b, fmi2sim, fmu, rtol, pure=False)
-                       for b in _batches(todo, max(1, batch))] if todo else []
-            stream = (f.result() for f in as_completed(futures))
-        for rows in stream:
-            for row in rows:
-                store.append(row)
-                errors += row["status"] != "ok"
-            bar.update(len(rows))
-        seconds = time.perf_counter() - t0
+        yield
     finally:
-        bar.close()
-        store.close()
+        for s, h in old.items():
+            signal.signal(s, h)
+
+
+def _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout):
+    for s in todo:
+        yield [runner.run(s, fmi2sim, fmu, rtol, tmp_root, timeout)]
+
+
+def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout):
+    """Rows as batches finish. A batch whose worker died (Dask gives up after its retries) becomes
+    'killed' rows, which the next resume runs again, instead of ending the sweep."""
+    from dask.distributed import as_completed
+    futures = {client.submit(runner.run_batch, b, fmi2sim, fmu, rtol, tmp_root, timeout, pure=False): b
+               for b in _batches(todo, max(1, batch))}
+    for f in as_completed(futures):
+        try:
+            yield f.result()
+        except Exception as exc:  # KilledWorker, a worker lost with its task, ...
+            yield [runner.killed_row(s, f"Dask task did not return: {type(exc).__name__}: {exc}") for s in futures[f]]
+
+
+@contextlib.contextmanager
+def _client(scheduler, workers, tmp_root):
+    import dask
+    from dask.distributed import Client, LocalCluster
+    client = cluster = None
+    try:
+        if scheduler:
+            client = Client(scheduler)
+        else:
+            # the cluster keeps its scratch space in the sweep's folder, removed with it
+            with dask.config.set({"temporary-directory": tmp_root}):
+                cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                       dashboard_address=":0", local_directory=tmp_root)  # any free port
+            client = Client(cluster)
+        yield client
+    finally:
         if client is not None:
             client.close()
         if cluster is not None:
             cluster.close()
-    return Outcome(len(specs), len(specs) - len(todo), len(todo), errors, seconds, startup)
+
+
+def stop_orphans(tmp_root):
+    """SIGKILL the fmi2sim processes of this sweep still running after its workers are gone (a
+    worker killed in the middle of a run leaves its fmi2sim behind). Only pids recorded in this
+    sweep's own folder, and only while their command line still names that folder (a pid can be
+    reused by an unrelated process)."""
+    for pid_file in pathlib.Path(tmp_root).glob(f"*/{runner.PID_FILE}"):
+        try:
+            pid = int(pid_file.read_text())
+            cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes()
+        except (OSError, ValueError):
+            continue  # finished already
+        if str(pid_file.parent).encode() in cmdline:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass
+
+
+def _rm_tree(path):
+    # a run still being torn down may add a file while the tree is removed: try again once
+    for _ in range(2):
+        shutil.rmtree(path, ignore_errors=True)
+
+
+def execute(specs, results_path, fmi2sim, fmu, rtol, scheduler=None, workers=2, batch=1, progress=True,
+            timeout=None):
+    """scheduler: None -> a LocalCluster of `workers` single-threaded worker processes;
+    'synchronous' -> one after another in this process; else the address of a running Dask
+    scheduler, used as it is. Holds the results file's lock throughout."""
+    check_options(workers if scheduler is None else 1, batch, timeout)
+    planned = keyed(specs, fmi2sim, fmu, rtol)
+    with _signals_unwind(), ResultsFile(results_path) as store:
+        resume = store.resume({d["run_id"]: {c: d.get(c, "") for c in runner.PROVENANCE} for d in planned})
+        todo = [d for d in planned if d["run_id"] not in resume.done]
+        counts = dict(errors=0, unfinished=0)
+        startup = seconds = 0.0
+        if todo:
+            startup, seconds = _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
+                                        progress, timeout)
+    return Outcome(len(specs), len(specs) - len(todo), len(todo), counts["errors"], counts["unfinished"],
+                   seconds, startup, resume)
+
+
+def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch, progress, timeout):
+    """Runs todo, appending rows; returns (start-up seconds, running seconds)."""
+    tmp_root = tempfile.mkdtemp(prefix="rw_sweep_")  # every run's files, whatever ends the sweep
+    bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, smoothing=0.05)
+    t_start = time.perf_counter()
+    try:
+        with contextlib.ExitStack() as stack:
+            if scheduler == "synchronous":
+                startup, t0 = 0.0, time.perf_counter()
+                stream = _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout)
+            else:
+                client = stack.enter_context(_client(scheduler, workers, tmp_root))
+                startup, t0 = time.perf_counter() - t_start, time.perf_counter()
+                stream = _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout)
+            for rows in stream:
+                for row in rows:
+                    store.append(row)
+                    counts["errors"] += row["status"] == runner.ERROR
+                    counts["unfinished"] += row["status"] in runner.RETRIED
+                bar.update(len(rows))
+            return startup, time.perf_counter() - t0
+    finally:
+        bar.close()
+        stop_orphans(tmp_root)
+        _rm_tree(tmp_root)

@@ -4,7 +4,6 @@ that lets an interrupted sweep resume)."""
 import dataclasses
 import itertools
 import math
-import sys
 import tomllib
 
 
@@ -32,14 +31,18 @@ class RunSpec:
     stop_time: float
     sets: tuple         # (("NAME", "VALUE"), ...) for fmi2sim --set
     error: str = ""     # the record could not be planned: reported without running
+    record_sha256: str = ""  # the record's content: part of the run's key (rwsweep.provenance)
 
 
 def load_config(path):
     """The [grid] table of a TOML file (an empty dict without a file)."""
     if not path:
         return {}
-    with open(path, "rb") as f:
-        cfg = tomllib.load(f)
+    try:
+        with open(path, "rb") as f:
+            cfg = tomllib.load(f)
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{path}: not a valid TOML file: {exc}") from None
     unknown = set(cfg.get("grid", {})) - set(DEFAULTS)
     if unknown:
         raise ValueError(f"{path}: unknown [grid] keys {sorted(unknown)}; known: {sorted(DEFAULTS)}")
@@ -51,6 +54,7 @@ def merge(config, flags):
     out = dict(DEFAULTS)
     out.update(config)
     out.update({k: v for k, v in flags.items() if v is not None and k in DEFAULTS})
+    check(out)
     bad = [m for m in out["models"] if m not in MODELS]
     if bad:
         raise ValueError(f"unknown model(s) {bad}; known: {list(MODELS)}")
@@ -58,6 +62,44 @@ def merge(config, flags):
     if bad:
         raise ValueError(f"unknown hinge law(s) {bad}; known: {list(HINGE_LAWS)}")
     return out
+
+
+# The meaningful range of each number of a grid: (low, high, whether low itself is allowed).
+RANGES = dict(kd_kN=(0.0, 1e9, False), scales=(0.0, 100.0, False), pga_g=(0.0, 10.0, False),
+              er=(0.0, 1.0, True), tail=(0.0, 3600.0, True), rtol=(1e-12, 1e-2, True))
+_LISTS = ("walls", "models", "hinge_laws", "kd_kN", "scales", "pga_g", "records")
+
+
+def in_range(name, value, low, high, low_ok=True):
+    """value as a float, or ValueError naming the option and its range."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        raise ValueError(f"{name} = {value!r} is not a number")
+    v = float(value)
+    inside = (v >= low if low_ok else v > low) and v <= high
+    if not (math.isfinite(v) and inside):
+        raise ValueError(f"{name} = {value!r} is outside {'[' if low_ok else '('}{low:g}, {high:g}]")
+    return v
+
+
+def check(cfg):
+    """Refuse a grid whose values are of the wrong type or outside their meaningful range."""
+    for key in _LISTS:
+        if not isinstance(cfg[key], list):
+            raise ValueError(f"{key} = {cfg[key]!r} must be a list")
+    for key in ("walls", "models", "hinge_laws", "kd_kN"):
+        if not cfg[key]:
+            raise ValueError(f"{key}: give at least one value")
+    if not cfg["pga_g"] and not cfg["scales"]:
+        raise ValueError("give intensities: scales or pga_g")
+    for key, (low, high, low_ok) in RANGES.items():
+        for v in cfg[key] if isinstance(cfg[key], list) else [cfg[key]]:
+            in_range(key, v, low, high, low_ok)
+    from rwref.params import WALLS
+    bad = [w for w in cfg["walls"] if isinstance(w, bool) or w not in WALLS]
+    if bad:
+        raise ValueError(f"walls {bad}: the paper's walls are {sorted(WALLS)}")
+    if not isinstance(cfg["suite"], str) or not cfg["suite"]:
+        raise ValueError(f"suite = {cfg['suite']!r}: 'fema' or a folder of .AT2 files")
 
 
 def wall_parameters(wall):
@@ -102,8 +144,8 @@ def expand(grid, suite):
                 specs.append(RunSpec(run_id, wall, model, law, kd, rec.name, rec.path, rec.pga_g, scale, pga,
                                      rec.duration + float(grid["tail"]),
                                      tuple((k, repr(float(v)) if isinstance(v, float) else str(v)) for k, v in sets.items()),
-                                     rec.error))
+                                     rec.error, rec.sha256))
     ids = [s.run_id for s in specs]
     if len(set(ids)) != len(ids):
-        sys.exit("the grid has duplicate runs (a value given twice, or two records with one name)")
+        raise ValueError("the grid has duplicate runs (a value given twice, or two records with one name)")
     return specs

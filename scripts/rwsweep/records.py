@@ -2,14 +2,28 @@
 AT2 files in a cache folder. A suite is a list of Record (name, path, PGA, duration); fmi2sim reads
 the files itself (`--ag FILE --ag-scale S`), so a sweep ships only paths to its workers."""
 import dataclasses
+import hashlib
 import importlib.util
+import os
 import pathlib
 import re
+import stat
 
 import numpy as np
 import pandas as pd
 
+from . import provenance
+
 FEMA_SET = "farfield"
+
+
+MAX_RECORD_BYTES = 64 * 2**20   # the largest NGA records are a few MB; planning streams the file
+_HEADER_LINE_BYTES = 64 * 2**10
+_CHUNK = 1 << 20
+
+
+class RecordError(ValueError):
+    """A record path that must not be opened at all (a FIFO would block the planning forever)."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -19,6 +33,7 @@ class Record:
     pga_g: float      # peak |acceleration| of the record as given [g]
     duration: float   # (NPTS - 1) * DT [s]
     error: str = ""   # set when the file cannot even be planned (header unreadable)
+    sha256: str = ""  # content hash (rwsweep.provenance): a result is tied to the bytes, not the name
 
 
 def _at2_header(line):
@@ -28,41 +43,102 @@ def _at2_header(line):
     if not m:
         m = re.match(r"\s*(\d+)\s+([0-9.eE+-]+)", line)
     if not m:
-        raise ValueError(f"line 4: expected 'NPTS= N, DT= dt SEC', found '{line.strip()}'")
+        raise ValueError(f"line 4: expected 'NPTS= N, DT= dt SEC', found '{line.strip()[:200]}'")
     npts, dt = int(m.group(1)), float(m.group(2))
     if npts <= 0 or not dt > 0:
         raise ValueError(f"line 4: NPTS = {npts}, DT = {dt} are not positive")
     return npts, dt
 
 
+def check_regular(path):
+    """Refuse what is not a regular file (FIFO, device, folder) before anything opens it;
+    symlinks are followed."""
+    try:
+        st = os.stat(path)
+    except OSError:
+        return  # read_at2 reports a missing or unreadable file as the record's error
+    if not stat.S_ISREG(st.st_mode):
+        raise RecordError(f"{path}: not a regular file ({_kind(st.st_mode)}): a record must be a file")
+    name = pathlib.Path(path).stem
+    if not name.isprintable():
+        raise RecordError(f"{path!r}: the record's name has characters that cannot be printed (control characters, "
+                          "or bytes that are not UTF-8), and it names rows of the results file")
+
+
+def _kind(mode):
+    for test, label in [(stat.S_ISFIFO, "a FIFO"), (stat.S_ISDIR, "a folder"), (stat.S_ISCHR, "a character device"),
+                        (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket")]:
+        if test(mode):
+            return label
+    return "not a regular file"
+
+
+def _peak_of_chunk(text):
+    """max |value| of the tokens of a chunk that parse as numbers (nan when none does)."""
+    tokens = text.replace(",", " ").split()
+    try:
+        values = np.array(tokens, dtype=float)
+    except ValueError:  # a damaged token: fmi2sim reports it with its line; skip it here
+        values = np.array([v for v in map(_float_or_nan, tokens)], dtype=float)
+    values = values[np.isfinite(values)]
+    return float(np.max(np.abs(values))) if values.size else float("nan")
+
+
+def _float_or_nan(tok):
+    try:
+        return float(tok)
+    except ValueError:
+        return float("nan")
+
+
+def _scan(f, h):
+    """PGA of the body of an open AT2 file, read in chunks (memory bounded whatever the size);
+    hashes the bytes as it goes."""
+    peak, rest = float("nan"), b""
+    for chunk in iter(lambda: f.read(_CHUNK), b""):
+        h.update(chunk)
+        chunk = rest + chunk
+        cut = max(chunk.rfind(b" "), chunk.rfind(b"\n"))  # never split a number between chunks
+        rest, chunk = (chunk[cut + 1:], chunk[:cut + 1]) if cut >= 0 else (chunk, b"")
+        peak = np.fmax(peak, _peak_of_chunk(chunk.decode("utf-8", errors="replace")))
+    return float(np.fmax(peak, _peak_of_chunk(rest.decode("utf-8", errors="replace"))))
+
+
 def read_at2(path):
     """A Record for one AT2 file. Only the header must be sound: PGA comes from the tokens that
     parse, and a damaged body is left for fmi2sim to report with its line number when the run
-    starts, so every run of that record carries the same message as a single fmi2sim run."""
-    path = pathlib.Path(path).resolve()  # workers get absolute paths
-    name = path.stem
+    starts, so every run of that record carries the same message as a single fmi2sim run.
+    A symlink keeps its own name (a suite of links names its records), and workers get the
+    absolute path of the link."""
+    given = pathlib.Path(path)
+    path, name = given.absolute(), given.stem
+    check_regular(path)
     try:
-        with open(path, encoding="utf-8", errors="replace") as f:
-            head = [f.readline() for _ in range(4)]
-            body = f.read()
-        npts, dt = _at2_header(head[3])
+        size = path.stat().st_size
+        if size > MAX_RECORD_BYTES:
+            raise ValueError(f"{size / 2**20:.0f} MiB, more than the {MAX_RECORD_BYTES // 2**20} MiB a record may have")
+        h = hashlib.sha256()
+        with open(path, "rb") as f:
+            head = [f.readline(_HEADER_LINE_BYTES) for _ in range(4)]
+            h.update(b"".join(head))
+            npts, dt = _at2_header(head[3].decode("utf-8", errors="replace"))
+            pga = _scan(f, h)
     except (OSError, ValueError) as exc:
         return Record(name, str(path), float("nan"), float("nan"), error=f"{path.name}: {exc}")
-    values = []
-    for tok in body.replace(",", " ").split():
-        try:
-            values.append(float(tok))
-        except ValueError:
-            pass
-    pga = float(np.max(np.abs(values))) if values else float("nan")
-    return Record(name, str(path), pga, (npts - 1) * dt)
+    return Record(name, str(path), pga, (npts - 1) * dt, sha256=h.hexdigest()[:provenance.SHORT])
 
 
 def at2_folder(folder):
-    """Every *.AT2 file in a folder (case-insensitive suffix), sorted by name."""
-    files = sorted(p for p in pathlib.Path(folder).iterdir() if p.suffix.lower() == ".at2")
+    """Every *.AT2 file in a folder (case-insensitive suffix), sorted by name. Anything named
+    *.AT2 that is not a regular file is refused before any file is read."""
+    folder = pathlib.Path(folder)
+    if not folder.is_dir():
+        raise FileNotFoundError(f"{folder}: not a folder of .AT2 files")
+    files = sorted(p for p in folder.iterdir() if p.suffix.lower() == ".at2")
     if not files:
         raise FileNotFoundError(f"{folder}: no .AT2 files")
+    for p in files:
+        check_regular(p)
     return [read_at2(p) for p in files]
 
 
@@ -96,8 +172,16 @@ def fema_farfield(cache_dir):
     if not index_path.exists():
         _convert_fema(fema_hdf5_path(), cache)
     index = pd.read_csv(index_path)
-    return [Record(r.name, str(cache / f"{r.name}.AT2"), float(r.pga_g), float(r.duration))
-            for r in index.itertuples(index=False)]
+    return [_cached(cache / f"{r.name}.AT2", r) for r in index.itertuples(index=False)]
+
+
+def _cached(path, r):
+    """A Record of the converted set from its index row, with the content hash of its file."""
+    try:
+        digest = provenance.file_sha256(path)
+    except OSError as exc:
+        return Record(r.name, str(path), float("nan"), float("nan"), error=f"{path.name}: {exc}")
+    return Record(r.name, str(path), float(r.pga_g), float(r.duration), sha256=digest)
 
 
 def _convert_fema(hdf5, cache):

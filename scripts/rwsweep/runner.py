@@ -1,20 +1,31 @@
 """One run of a sweep: fmi2sim with --summary (peaks without the time history), turned into one
 row of the results file. Runs on a Dask worker, so it takes and returns plain dicts (a RunSpec as a dict:
-workers need not import this project; sweep.py ships this module to them by value);
-a failed run becomes a row with status 'error' and fmi2sim's message instead of an exception, so
-one bad record cannot stop a sweep."""
+workers need not import this project; sweep.py ships this module to them by value, so it imports
+only the standard library); a failed run becomes a row instead of an exception, so one bad record
+cannot stop a sweep.
+
+Statuses: 'ok'; 'error' when fmi2sim (or the record) refused the run, which the same inputs would
+do again; 'killed' (a signal: the OOM killer, a dead Dask worker) and 'timeout', which say nothing
+about the inputs and are retried when the sweep is resumed."""
 import json
 import math
 import os
+import shutil
 import subprocess
 import tempfile
 import time
 
 # The columns of the results file, in order. Peaks are max |value| over fmi2sim's output rows and
-# solver steps.
+# solver steps. The last columns say what the row was computed from (rwsweep.provenance).
 COLUMNS = ["run_id", "wall", "model", "hinge_law", "kd_kN", "record", "record_pga_g", "scale", "pga_g",
            "status", "message", "peak_s1", "peak_s2", "peak_F_top", "collapsed", "impacts", "end_time",
-           "steps", "cpu_s", "elapsed_s"]
+           "steps", "cpu_s", "elapsed_s",
+           "key", "record_sha256", "engine", "fmi2sim_sha256", "fmu_guid", "fmu_sha256", "rtol"]
+PROVENANCE = COLUMNS[COLUMNS.index("key"):]
+
+OK, ERROR, KILLED, TIMEOUT = "ok", "error", "killed", "timeout"
+STATUSES = (OK, ERROR, KILLED, TIMEOUT)
+RETRIED = (KILLED, TIMEOUT)   # not finished: run again on resume
 
 TIMEOUT_S = 600.0
 
@@ -33,8 +44,14 @@ def _row(spec, status, message="", **values):
     row.update(run_id=spec["run_id"], wall=spec["wall"], model=spec["model"], hinge_law=spec["hinge_law"],
                kd_kN=spec["kd_kN"], record=spec["record"], record_pga_g=spec["record_pga_g"], scale=spec["scale"],
                pga_g=spec["pga_g"], status=status, message=" ".join(message.split()))  # one line in the CSV
+    row.update({c: spec.get(c, "") for c in PROVENANCE})
     row.update(values)
     return row
+
+
+def killed_row(spec, message):
+    """The row of a run that never returned (its Dask worker died)."""
+    return _row(spec, KILLED, message)
 
 
 def _error_line(stderr):
@@ -44,36 +61,73 @@ def _error_line(stderr):
     return (errors or lines or ["no message"])[-1]
 
 
-def run(spec, fmi2sim, fmu, rtol):
+def _run_dir(tmp_root):
+    """A private folder for one run, inside the sweep's folder when this machine has it (a
+    LocalCluster), so whatever a killed run leaves is removed with the sweep's folder."""
+    root = tmp_root if tmp_root and os.path.isdir(tmp_root) else None
+    return tempfile.mkdtemp(prefix="run_" if root else "rw_sweep_run_", dir=root)
+
+
+PID_FILE = "fmi2sim.pid"
+
+
+def _run_recorded(cmd, env, tmp, timeout):
+    """subprocess.run, with the child's pid written into its run folder: if this worker is killed
+    (its fmi2sim then runs on as an orphan), the sweep finds it there and stops it
+    (execute.stop_orphans)."""
+    with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace",
+                          env=env) as proc:
+        with open(os.path.join(tmp, PID_FILE), "w") as f:
+            f.write(str(proc.pid))
+        try:
+            out, err = proc.communicate(timeout=timeout)
+        except BaseException:  # a timeout, Ctrl-C, SIGTERM: never leave the child running
+            proc.kill()
+            proc.wait()
+            raise
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
+
+
+def _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0):
+    summary = os.path.join(tmp, "summary.json")
+    # TMPDIR: fmi2sim unpacks the FMU into this run's folder, so a run killed before it could
+    # clean up leaves nothing behind once the folder is removed
+    env = dict(os.environ, TMPDIR=tmp)
+    proc = _run_recorded(command(spec, fmi2sim, fmu, rtol, summary), env, tmp, timeout)
+    if proc.returncode < 0:  # a signal: the OOM killer, a timeout of the caller, ...
+        return _row(spec, KILLED, f"fmi2sim killed by signal {-proc.returncode}: {_error_line(proc.stderr)}",
+                    elapsed_s=time.perf_counter() - t0)
+    if proc.returncode != 0:
+        return _row(spec, ERROR, f"fmi2sim exit {proc.returncode}: {_error_line(proc.stderr)}",
+                    elapsed_s=time.perf_counter() - t0)
+    with open(summary) as f:
+        res = json.load(f)
+    out = res["outputs"]
+    return _row(spec, OK, peak_s1=out["s1"]["max_abs"], peak_s2=out["s2"]["max_abs"],
+                peak_F_top=out["F_top"]["max_abs"], collapsed=bool(out["collapsed"]["final"]),
+                impacts=int(out["impacts"]["final"]), end_time=res["end_time"], steps=res["steps"],
+                cpu_s=res["cpu_seconds"], elapsed_s=time.perf_counter() - t0)
+
+
+def run(spec, fmi2sim, fmu, rtol, tmp_root=None, timeout=None):
     """Simulate one RunSpec; always returns a row."""
     t0 = time.perf_counter()
+    timeout = TIMEOUT_S if timeout is None else timeout
     if spec["error"]:
-        return _row(spec, "error", spec["error"])
+        return _row(spec, ERROR, spec["error"])
     if not (spec["scale"] > 0 and math.isfinite(spec["scale"])):
-        return _row(spec, "error", f"scale factor {spec['scale']} (record PGA {spec['record_pga_g']} g)")
-    fd, summary = tempfile.mkstemp(prefix="rw_sweep_", suffix=".json")
-    os.close(fd)
+        return _row(spec, ERROR, f"scale factor {spec['scale']} (record PGA {spec['record_pga_g']} g)")
+    tmp = _run_dir(tmp_root)
     try:
-        proc = subprocess.run(command(spec, fmi2sim, fmu, rtol, summary), capture_output=True, text=True,
-                              timeout=TIMEOUT_S)
-        if proc.returncode != 0:
-            return _row(spec, "error", f"fmi2sim exit {proc.returncode}: {_error_line(proc.stderr)}",
-                        elapsed_s=time.perf_counter() - t0)
-        with open(summary) as f:
-            res = json.load(f)
-        out = res["outputs"]
-        return _row(spec, "ok", peak_s1=out["s1"]["max_abs"], peak_s2=out["s2"]["max_abs"],
-                    peak_F_top=out["F_top"]["max_abs"], collapsed=bool(out["collapsed"]["final"]),
-                    impacts=int(out["impacts"]["final"]), end_time=res["end_time"], steps=res["steps"],
-                    cpu_s=res["cpu_seconds"], elapsed_s=time.perf_counter() - t0)
+        return _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0)
     except subprocess.TimeoutExpired:
-        return _row(spec, "error", f"fmi2sim did not finish in {TIMEOUT_S:g} s")
+        return _row(spec, TIMEOUT, f"fmi2sim did not finish in {timeout:g} s", elapsed_s=time.perf_counter() - t0)
     except (OSError, ValueError, KeyError, TypeError) as exc:  # e.g. an FMU without s1, s2, ...
-        return _row(spec, "error", f"{type(exc).__name__}: {exc}")
+        return _row(spec, ERROR, f"{type(exc).__name__}: {exc}")
     finally:
-        os.unlink(summary)
+        shutil.rmtree(tmp, ignore_errors=True)
 
 
-def run_batch(specs, fmi2sim, fmu, rtol):
+def run_batch(specs, fmi2sim, fmu, rtol, tmp_root=None, timeout=None):
     """Several runs in one Dask task: fewer tasks for the scheduler when runs are short."""
-    return [run(s, fmi2sim, fmu, rtol) for s in specs]
+    return [run(s, fmi2sim, fmu, rtol, tmp_root, timeout) for s in specs]
