@@ -1,0 +1,931 @@
+/* RockingWall exact event-driven engine: see rw_engine.h.
+ *
+ * Layout: Stumpff functions (the exact scalar solution) -> regions (modal decomposition of one
+ * linear region, cached) -> spans (a region with a linear input from a start state) -> event
+ * search on a span (bracketing with Hermite extremum checks, safeguarded regula falsi) -> the
+ * stepper over one input segment -> the batch run over a record.
+ */
+#include "rw_engine.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RW_CACHE_SIZE 48
+#define RW_MAX_EVENT_ROUNDS 100 /* event-iteration rounds at one event, as cs_cvode.c allows 1000 */
+#define RW_PHASE_PER_SUBSTEP 1.0 /* rad of the fastest significant mode per bracketing substep */
+#define RW_MAX_SUBSTEPS 2000000L
+#define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
+
+/* ---- Stumpff functions ----------------------------------------------------------------------
+ * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
+ * c3 = (1-c1)/z (cosh/sinh for z < 0, polynomial at z = 0). With z = lam s^2 the solution of
+ * eta'' + lam eta = f0 + f1 s is eta0 c0 + v0 s c1 + f0 s^2 c2 + f1 s^3 c3 for every sign of lam,
+ * with no cancellation near lam = 0 (series there). */
+static void stumpff(double z, double c[4])
+{
+    if (fabs(z) < 1.0) {
+        /* c_k = 1/k! - z/(k+2)! + z^2/(k+4)! - ...: 11 terms leave < z^11/22! ~ 1e-21 */
+        int k, j;
+        for (k = 0; k < 4; k++) {
+            double term = 1.0, sum;
+            for (j = 2; j <= k; j++) term /= j;
+            sum = term;
+            for (j = 1; j <= 11; j++) {
+                term *= -z / ((double)(k + 2 * j - 1) * (k + 2 * j));
+                sum += term;
+            }
+            c[k] = sum;
+        }
+        return;
+    }
+    if (z > 0.0) {
+        const double r = sqrt(z);
+        c[0] = cos(r);
+        c[1] = sin(r) / r;
+    } else {
+        const double r = sqrt(-z);
+        c[0] = cosh(r);
+        c[1] = sinh(r) / r;
+    }
+    c[2] = (1.0 - c[0]) / z;
+    c[3] = (1.0 - c[1]) / z;
+}
+
+/* ---- regions --------------------------------------------------------------------------------
+ * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
+ * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top. */
+typedef struct {
+    double P[2][2], Pi[2][2], lam[2];
+    double ga[2], gu[2];
+    double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
+} rw_modes2;
+
+typedef struct {
+    rw_modes2 E;
+    double g0[2];
+} rw_region;
+
+typedef struct {
+    int used, closed_b, closed_m;
+    double key[4]; /* J (2DOF) or the 1DOF slope */
+    rw_modes2 E;
+    double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
+    int h_valid[2], h_next;
+} rw_cache_entry;
+
+struct rw_engine {
+    rw_params P;
+    rw_derived D;
+    const rw_hinge_law *law;
+    int rigid;
+    rw_cache_entry cache[RW_CACHE_SIZE];
+    int cache_next;
+    /* run bookkeeping */
+    int b[RW_NZ];               /* indicator states z > 0 */
+    double peak_s1, peak_s2;
+    long events, steps, impacts;
+    int collapsed, reason;
+    double t_collapse;
+    double t_last_event;
+    int same_instant, max_same_instant;
+    const double *t_out;
+    size_t n_out, i_out;
+    double *x_out, *s1_out, *s2_out;
+    char msg[256];
+};
+
+static void identity_modes(rw_modes2 *E, double p10, double pi10)
+{
+    memset(E, 0, sizeof *E);
+    E->P[0][0] = E->P[1][1] = E->Pi[0][0] = E->Pi[1][1] = 1.0;
+    E->P[1][0] = p10;
+    E->Pi[1][0] = pi10;
+}
+
+/* Symmetric generalised eigenproblem (Ks, M): Ks = k e e^T + G with e = (1, 1) and k = Kd h^2/4
+ * (Eq. 3.3), so that the slow eigenvalue under a stiff spring (k up to 1e12) comes from the
+ * determinant written without cancellation. M = L L^T; S = L^-1 Ks L^-T = k w w^T + Gs. */
+static void modes_symmetric(const rw_derived *d, double k, const double G[2][2], rw_modes2 *E)
+{
+    const double l00 = sqrt(d->M[0][0]), l10 = d->M[1][0] / l00, l11 = sqrt(d->M[1][1] - l10 * l10);
+    const double i00 = 1.0 / l00, i10 = -l10 / (l00 * l11), i11 = 1.0 / l11; /* L^-1 */
+    const double w0 = i00, w1 = i10 + i11;
+    const double gs00 = i00 * i00 * G[0][0];
+    const double gs01 = i00 * (i10 * G[0][0] + i11 * G[0][1]);
+    const double gs11 = i10 * i10 * G[0][0] + 2.0 * i10 * i11 * G[0][1] + i11 * i11 * G[1][1];
+    const double a = k * w0 * w0 + gs00, b = k * w0 * w1 + gs01, c = k * w1 * w1 + gs11;
+    const double det = k * (w0 * w0 * gs11 - 2.0 * w0 * w1 * gs01 + w1 * w1 * gs00) + (gs00 * gs11 - gs01 * gs01);
+    const double half = 0.5 * (a + c), disc = sqrt(0.25 * (a - c) * (a - c) + b * b);
+    const double big = half + (half >= 0.0 ? disc : -disc), small = big != 0.0 ? det / big : 0.0;
+    const double phi = 0.5 * atan2(2.0 * b, a - c), cs = cos(phi), sn = sin(phi);
+    double V[2][2];
+    int i, j;
+    /* column 0 of V has the eigenvalue half + disc, column 1 half - disc */
+    V[0][0] = cs; V[1][0] = sn; V[0][1] = -sn; V[1][1] = cs;
+    E->lam[0] = half >= 0.0 ? big : small;
+    E->lam[1] = half >= 0.0 ? small : big;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            /* P = L^-T V, Pi = V^T L^T */
+            E->P[i][j] = (i == 0 ? i00 * V[0][j] + i10 * V[1][j] : i11 * V[1][j]);
+            E->Pi[i][j] = (j == 0 ? V[0][i] * l00 : V[0][i] * l10 + V[1][i] * l11);
+        }
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->P[j][i]; /* P^T M P = I: modal force = P^T F */
+}
+
+/* General (nonsymmetric) Ks: A = M^-1 Ks, real distinct eigenvalues required. */
+static int modes_general(const rw_derived *d, const double Ks[2][2], rw_modes2 *E)
+{
+    const double dm = d->M[0][0] * d->M[1][1] - d->M[0][1] * d->M[1][0];
+    const double Mi[2][2] = {{d->M[1][1] / dm, -d->M[0][1] / dm}, {-d->M[1][0] / dm, d->M[0][0] / dm}};
+    double A[2][2], tr, det, disc, dp;
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) A[i][j] = Mi[i][0] * Ks[0][j] + Mi[i][1] * Ks[1][j];
+    tr = A[0][0] + A[1][1];
+    det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+    disc = 0.25 * tr * tr - det;
+    if (!(disc > 1e-14 * (0.25 * tr * tr + fabs(det)))) return -1; /* complex or repeated */
+    disc = sqrt(disc);
+    E->lam[0] = 0.5 * tr + disc;
+    E->lam[1] = 0.5 * tr - disc;
+    for (j = 0; j < 2; j++) { /* eigenvector: the larger of the two null-vector candidates */
+        const double u0 = A[0][1], u1 = E->lam[j] - A[0][0], w0 = E->lam[j] - A[1][1], w1 = A[1][0];
+        const int first = u0 * u0 + u1 * u1 >= w0 * w0 + w1 * w1;
+        E->P[0][j] = first ? u0 : w0;
+        E->P[1][j] = first ? u1 : w1;
+    }
+    dp = E->P[0][0] * E->P[1][1] - E->P[0][1] * E->P[1][0];
+    E->Pi[0][0] = E->P[1][1] / dp;
+    E->Pi[0][1] = -E->P[0][1] / dp;
+    E->Pi[1][0] = -E->P[1][0] / dp;
+    E->Pi[1][1] = E->P[0][0] / dp;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->Pi[i][0] * Mi[0][j] + E->Pi[i][1] * Mi[1][j];
+    return 0;
+}
+
+static void modal_force(const rw_modes2 *E, const double F[2], double out[2])
+{
+    out[0] = E->fm[0][0] * F[0] + E->fm[0][1] * F[1];
+    out[1] = E->fm[1][0] * F[0] + E->fm[1][1] * F[1];
+}
+
+/* 2DOF with open hinges: the region's stiffness K - J (Eq. 3.1, 3.3). */
+static int modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
+{
+    const rw_derived *d = &e->D;
+    const double k = e->P.Kd * e->P.h * e->P.h / 4.0;
+    double G[2][2], Ks[2][2], F[2];
+    int i, j;
+    memset(E, 0, sizeof *E);
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            G[i][j] = (d->K[i][j] - k) - J[i][j]; /* exact for a stiff spring (Sterbenz) */
+            Ks[i][j] = d->K[i][j] - J[i][j];
+        }
+    if (J[0][1] == J[1][0]) modes_symmetric(d, k, G, E);
+    else if (modes_general(d, Ks, E) != 0) return -1;
+    modal_force(E, d->pa, E->ga);
+    F[0] = F[1] = d->fu;
+    modal_force(E, F, E->gu);
+    return 0;
+}
+
+/* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
+static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
+{
+    int i;
+    for (i = 0; i < RW_CACHE_SIZE; i++) {
+        rw_cache_entry *c = &e->cache[i];
+        if (c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0) return c;
+    }
+    return NULL;
+}
+
+static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
+{
+    rw_cache_entry *c = &e->cache[e->cache_next];
+    e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
+    memset(c, 0, sizeof *c);
+    c->used = 1;
+    c->closed_b = cb;
+    c->closed_m = cm;
+    memcpy(c->key, key, sizeof c->key);
+    c->E = *E;
+    return c;
+}
+
+/* Doherty's 1DOF (support 2): mode 0 = q1 with (W/3g) D'' = -(W/2g) ag + F0 + F1 D, D = q1 h/2;
+ * mode 1 = q1 + q2 = 0 (slaved, nothing acts on it). */
+static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                   double g0[2])
+{
+    const rw_params *p = &e->P;
+    double key[4] = {0, 0, 0, 0}, F0 = 0.0, F1 = 0.0;
+    rw_cache_entry *c;
+    const int closed = e->rigid && m->closed_b;
+    g0[0] = g0[1] = 0.0;
+    if (!closed) {
+        rw_force_1dof_affine(p, &e->D, m, x[0] * p->h / 2.0, dq_sel[0] * p->h / 2.0, &F0, &F1);
+        key[0] = F1;
+        g0[0] = 6.0 * p->g * F0 / (p->W * p->h);
+    }
+    c = cache_find(e, closed, 0, key);
+    if (!c) {
+        rw_modes2 E;
+        identity_modes(&E, -1.0, 1.0);
+        if (!closed) {
+            E.lam[0] = -3.0 * p->g / p->W * F1;
+            E.ga[0] = -3.0 / p->h;
+        }
+        c = cache_add(e, closed, 0, key, &E);
+    }
+    return c;
+}
+
+/* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
+ * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
+static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2])
+{
+    const rw_derived *d = &e->D;
+    const double key[4] = {0, 0, 0, 0};
+    rw_cache_entry *c = cache_find(e, m->closed_b, m->closed_m, key);
+    const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
+    g0[0] = g0[1] = 0.0;
+    if (m->closed_b && !m->closed_m) g0[1] = -d->cap_m * m->side_m / d->M[1][1];
+    if (!m->closed_b && m->closed_m) g0[0] = -d->cap_b * m->side_b / mt;
+    if (!c) {
+        rw_modes2 E;
+        if (m->closed_b && m->closed_m) {
+            identity_modes(&E, 0.0, 0.0);
+        } else if (m->closed_b) {
+            identity_modes(&E, 0.0, 0.0);
+            E.lam[1] = d->K[1][1] / d->M[1][1];
+            E.ga[1] = d->pa[1] / d->M[1][1];
+            E.gu[1] = d->fu / d->M[1][1];
+        } else {
+            const double kt = d->K[0][0] + 2.0 * d->K[0][1] + d->K[1][1];
+            identity_modes(&E, 1.0, -1.0);
+            E.lam[0] = kt / mt;
+            E.ga[0] = (d->pa[0] + d->pa[1]) / mt;
+            E.gu[0] = 2.0 * d->fu / mt;
+        }
+        c = cache_add(e, m->closed_b, m->closed_m, key, &E);
+    }
+    return c;
+}
+
+/* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
+ * cannot decompose it (msg filled). */
+static rw_cache_entry *region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                 double g0[2])
+{
+    double Q[2], J[2][2], c[2], key[4];
+    rw_cache_entry *ce;
+    if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
+    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
+    e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
+    c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
+    c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+    key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
+    ce = cache_find(e, 0, 0, key);
+    if (!ce) {
+        rw_modes2 E;
+        if (modes_open(e, J, &E) != 0) {
+            snprintf(e->msg, sizeof e->msg, "a region of hinge law %s has complex or repeated modes: not supported",
+                     e->law->name);
+            return NULL;
+        }
+        ce = cache_add(e, 0, 0, key, &E);
+    }
+    modal_force(&ce->E, c, g0);
+    return ce;
+}
+
+/* ---- spans: a region with a linear input, from a start state ------------------------------- */
+typedef struct {
+    const rw_cache_entry *R;
+    double t0;
+    double eta[2], v[2]; /* modal state at t0 */
+    double f0[2], f1[2]; /* modal forcing at t0 and its rate */
+    double ag0, ag1, u0, u1; /* the input at t0 and its rate */
+} rw_span;
+
+static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2], double t0, const double x[RW_NX],
+                       const rw_linear_input *in, double t_in)
+{
+    const rw_modes2 *E = &R->E;
+    int i;
+    sp->R = R;
+    sp->t0 = t0;
+    sp->ag0 = in->ag + in->ag_slope * (t0 - t_in);
+    sp->u0 = in->u_top + in->u_slope * (t0 - t_in);
+    sp->ag1 = in->ag_slope;
+    sp->u1 = in->u_slope;
+    for (i = 0; i < 2; i++) {
+        sp->eta[i] = E->Pi[i][0] * x[0] + E->Pi[i][1] * x[1];
+        sp->v[i] = E->Pi[i][0] * x[2] + E->Pi[i][1] * x[3];
+        sp->f0[i] = g0[i] + E->ga[i] * sp->ag0 + E->gu[i] * sp->u0;
+        sp->f1[i] = E->ga[i] * sp->ag1 + E->gu[i] * sp->u1;
+    }
+}
+
+/* Modal state at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed). */
+static void span_modal(const rw_span *sp, double s, const double C[2][4], double eta[2], double v[2], double a[2])
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        double c[4];
+        const double lam = sp->R->E.lam[i];
+        if (C) memcpy(c, C[i], sizeof c);
+        else stumpff(lam * s * s, c);
+        eta[i] = sp->eta[i] * c[0] + s * (sp->v[i] * c[1] + s * (sp->f0[i] * c[2] + s * sp->f1[i] * c[3]));
+        v[i] = -lam * s * sp->eta[i] * c[1] + sp->v[i] * c[0] + s * (sp->f0[i] * c[1] + s * sp->f1[i] * c[2]);
+        a[i] = -lam * eta[i] + sp->f0[i] + sp->f1[i] * s;
+    }
+}
+
+static void to_physical(const rw_modes2 *E, const double eta[2], const double v[2], double x[RW_NX])
+{
+    x[0] = E->P[0][0] * eta[0] + E->P[0][1] * eta[1];
+    x[1] = E->P[1][0] * eta[0] + E->P[1][1] * eta[1];
+    x[2] = E->P[0][0] * v[0] + E->P[0][1] * v[1];
+    x[3] = E->P[1][0] * v[0] + E->P[1][1] * v[1];
+}
+
+/* State x and its time derivative xd at t0 + s. */
+static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
+{
+    double eta[2], v[2], a[2];
+    span_modal(sp, s, C, eta, v, a);
+    to_physical(&sp->R->E, eta, v, x);
+    if (xd) {
+        xd[0] = x[2];
+        xd[1] = x[3];
+        xd[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
+        xd[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
+    }
+}
+
+static rw_input span_input(const rw_span *sp, double s)
+{
+    rw_input in;
+    in.ag = sp->ag0 + sp->ag1 * s;
+    in.u_top = sp->u0 + sp->u1 * s;
+    return in;
+}
+
+/* The fastest rate (rad/s) among the modes that move significantly on this span: unstable modes
+ * always, oscillating ones when their free oscillation about the quasi-static solution is larger
+ * than 1e-12 of the toppling rotation (a stiff spring's mode driven quasi-statically is not). */
+static double span_rate(const rw_engine *e, const rw_span *sp)
+{
+    double w = 0.0;
+    int i;
+    for (i = 0; i < 2; i++) {
+        const double lam = sp->R->E.lam[i];
+        double amp, col;
+        if (lam <= 0.0) { w = fmax(w, sqrt(-lam)); continue; }
+        amp = hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+        col = fmax(fabs(sp->R->E.P[0][i]), fabs(sp->R->E.P[1][i]));
+        if (amp * col > 1e-12 * e->D.q_topple) w = fmax(w, sqrt(lam));
+    }
+    return w;
+}
+
+/* ---- indicators along a span ---------------------------------------------------------------- */
+typedef struct {
+    double s;
+    double x[RW_NX];
+    double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
+} rw_point;
+
+static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
+                       rw_point *pt)
+{
+    double xd[RW_NX], xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+    const double dl = 1e-9; /* s: central difference along the exact motion (only signs are used) */
+    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl), im = span_input(sp, s - dl);
+    int i;
+    pt->s = s;
+    span_eval(sp, s, C, pt->x, xd);
+    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    for (i = 0; i < RW_NX; i++) {
+        xp[i] = pt->x[i] + dl * xd[i];
+        xm[i] = pt->x[i] - dl * xd[i];
+    }
+    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    rw_event_indicators(&e->P, &e->D, m, &im, xm, zm);
+    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - zm[i]) / (2.0 * dl);
+}
+
+static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+{
+    double x[RW_NX], z[RW_NZ];
+    rw_input in = span_input(sp, s);
+    span_eval(sp, s, NULL, x, NULL);
+    rw_event_indicators(&e->P, &e->D, m, &in, x, z);
+    return z[k];
+}
+
+/* rate of indicator k at s (for the extremum of a possible double crossing) */
+static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+{
+    rw_point pt;
+    eval_point(e, m, sp, s, NULL, &pt);
+    return pt.dz[k];
+}
+
+/* Safeguarded regula falsi (Illinois, a bisection every fourth step) for the first s in
+ * (lo, hi] where the boolean (value > 0) differs from its value at lo. Returns hi at convergence
+ * (to a few ulps of the absolute time), the first point known to be past the root. */
+typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s);
+
+static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double lo,
+                          double flo, double hi, double fhi)
+{
+    const int blo = flo > 0.0;
+    int it, last = 0;
+    for (it = 0; it < 400; it++) {
+        const double tol = 4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300;
+        double s, fs;
+        if (hi - lo <= tol) break;
+        s = (it % 4 == 3 || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
+        if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+        if (!(s > lo && s < hi)) break; /* adjacent doubles */
+        fs = f(e, m, sp, k, s);
+        if ((fs > 0.0) != blo) {
+            hi = s;
+            fhi = fs;
+            if (last == -1) flo *= 0.5;
+            last = -1;
+        } else {
+            lo = s;
+            flo = fs;
+            if (last == 1) fhi *= 0.5;
+            last = 1;
+        }
+    }
+    return hi;
+}
+
+/* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a double
+ * crossing inside (the indicator approaches zero at a and leaves it at b: its extremum is
+ * located and tested). Returns 1 and *s_event, or 0. */
+static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
+                       double *s_event)
+{
+    int k, found = 0;
+    double best = b->s;
+    for (k = 0; k < RW_NZ; k++) {
+        const int was = e->b[k];
+        double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
+        if ((b->z[k] > 0.0) == was) {
+            /* no change at the ends: a dip through zero in between? */
+            const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
+            const int leave = was ? b->dz[k] > 0.0 : b->dz[k] < 0.0;
+            double s_ext, z_ext;
+            if (!approach || !leave) continue;
+            s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k]);
+            z_ext = indicator_at(e, m, sp, k, s_ext);
+            if ((z_ext > 0.0) == was) continue;
+            hi = s_ext;
+            fhi = z_ext;
+        }
+        if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
+        if (found && lo >= best) continue;
+        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi);
+        if (!found || s < best) best = s;
+        found = 1;
+    }
+    *s_event = best;
+    return found;
+}
+
+/* ---- peaks and output grid along a span ----------------------------------------------------- */
+static double s_of(const rw_params *p, int which, const double x[RW_NX])
+{
+    return which == 0 ? rw_s1(p, x) : rw_s2(p, x);
+}
+
+static double rate_of_s(const rw_engine *e, const rw_mode *m, const rw_span *sp, int which, double s)
+{
+    double x[RW_NX], v[RW_NX] = {0, 0, 0, 0};
+    (void)m;
+    span_eval(sp, s, NULL, x, NULL);
+    v[0] = x[2];
+    v[1] = x[3];
+    return s_of(&e->P, which, v);
+}
+
+static void track_peak(rw_engine *e, int which, double value)
+{
+    double *peak = which == 0 ? &e->peak_s1 : &e->peak_s2;
+    if (fabs(value) > *peak) *peak = fabs(value);
+}
+
+/* peaks over [a, b] of the span: the ends and an interior turning point of s1, s2 */
+static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const double xa[RW_NX], double sa,
+                     const double xb[RW_NX], double sb)
+{
+    int w;
+    for (w = 0; w < 2; w++) {
+        double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
+        const double ra = s_of(&e->P, w, va), rb = s_of(&e->P, w, vb);
+        track_peak(e, w, s_of(&e->P, w, xb));
+        if ((ra > 0.0) != (rb > 0.0) && sb > sa) {
+            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb);
+            double x[RW_NX];
+            span_eval(sp, s, NULL, x, NULL);
+            track_peak(e, w, s_of(&e->P, w, x));
+        }
+    }
+}
+
+static void record_output(rw_engine *e, const double x[RW_NX])
+{
+    size_t i = e->i_out;
+    if (e->x_out) memcpy(e->x_out + RW_NX * i, x, sizeof(double) * RW_NX);
+    if (e->s1_out) e->s1_out[i] = rw_s1(&e->P, x);
+    if (e->s2_out) e->s2_out[i] = rw_s2(&e->P, x);
+    e->i_out++;
+}
+
+/* grid times in (t0 + sa, t0 + sb] */
+static void outputs_on(rw_engine *e, const rw_span *sp, double sb)
+{
+    while (e->i_out < e->n_out && e->t_out[e->i_out] <= sp->t0 + sb) {
+        double x[RW_NX];
+        span_eval(sp, e->t_out[e->i_out] - sp->t0, NULL, x, NULL);
+        record_output(e, x);
+    }
+}
+
+/* ---- events ----------------------------------------------------------------------------------- */
+static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX])
+{
+    double z[RW_NZ];
+    int k;
+    rw_event_indicators(&e->P, &e->D, m, in, x, z);
+    for (k = 0; k < RW_NZ; k++) e->b[k] = z[k] > 0.0;
+}
+
+/* The model's event iteration at t (as the FMU's hosts run it), then its collapse test.
+ * Returns 0, 1 on collapse, or an error code + 1 (Zeno). */
+static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *in)
+{
+    rw_event_result r;
+    int rounds = 0;
+    e->events++;
+    if (t <= e->t_last_event + 1e-14 * fmax(1.0, fabs(t))) {
+        if (++e->same_instant > e->max_same_instant) {
+            snprintf(e->msg, sizeof e->msg, "more than %d events at t = %.17g (Zeno): stopped", e->max_same_instant, t);
+            return RW_ENGINE_ZENO + 1;
+        }
+    } else {
+        e->same_instant = 0;
+    }
+    e->t_last_event = t;
+    do {
+        rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
+        e->impacts += r.impacts;
+    } while ((r.modes_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
+    set_indicator_states(e, m, in, x);
+    e->reason = rw_collapse_reason(&e->P, &e->D, m, in, x);
+    if (e->reason != RW_STANDING) {
+        e->collapsed = 1;
+        e->t_collapse = t;
+        return 1;
+    }
+    return 0;
+}
+
+/* The direction that picks the region on a breakpoint: dq a moment later (the acceleration is
+ * continuous across a breakpoint, so this decides a grazing touch by its curvature). */
+static void selection_rate(const rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX],
+                           double dq_sel[2])
+{
+    double dx[RW_NX];
+    rw_derivatives(&e->P, &e->D, m, in, x, dx);
+    dq_sel[0] = x[2] + RW_SELECT_DT * dx[2];
+    dq_sel[1] = x[3] + RW_SELECT_DT * dx[3];
+}
+
+/* Stumpff coefficients of a full substep h, cached per region */
+static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
+{
+    int j, i;
+    for (j = 0; j < 2; j++)
+        if (c->h_valid[j] && c->h[j] == h) return (const double(*)[4])c->C[j];
+    j = c->h_next;
+    c->h_next ^= 1;
+    c->h[j] = h;
+    c->h_valid[j] = 1;
+    for (i = 0; i < 2; i++) stumpff(c->E.lam[i] * h * h, c->C[j][i]);
+    return (const double(*)[4])c->C[j];
+}
+
+/* ---- the stepper -------------------------------------------------------------------------------- */
+static int substeps_for(const rw_engine *e, const rw_span *sp, double len)
+{
+    const double n = ceil(len * span_rate(e, sp) / RW_PHASE_PER_SUBSTEP);
+    return n < 1.0 ? 1 : (n > RW_MAX_SUBSTEPS ? (int)RW_MAX_SUBSTEPS : (int)n);
+}
+
+/* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
+ * (x, t at the collapse), or an error code + 1. */
+static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
+                   double t_in)
+{
+    while (*t < t_end) {
+        rw_span sp;
+        rw_point pa, pb;
+        double g0[2], dq_sel[2];
+        rw_input now;
+        rw_cache_entry *R;
+        int n, j;
+        now.ag = in->ag + in->ag_slope * (*t - t_in);
+        now.u_top = in->u_top + in->u_slope * (*t - t_in);
+        selection_rate(e, m, &now, x, dq_sel);
+        R = region_of(e, m, x, dq_sel, g0);
+        if (!R) return RW_ENGINE_UNSUPPORTED + 1;
+        span_start(&sp, R, g0, *t, x, in, t_in);
+        n = substeps_for(e, &sp, t_end - *t);
+        {
+            const double h = (t_end - *t) / n;
+            const double(*C)[4] = substep_coefficients(R, h);
+            int done = 0;
+            eval_point(e, m, &sp, 0.0, NULL, &pa);
+            for (j = 0; j < n && !done; j++) {
+                double s_ev;
+                const double len = j == n - 1 ? t_end - sp.t0 : h;
+                eval_point(e, m, &sp, len, len == h ? C : NULL, &pb);
+                e->steps++;
+                if (first_event(e, m, &sp, &pa, &pb, &s_ev)) {
+                    double xe[RW_NX];
+                    rw_input ie = span_input(&sp, s_ev);
+                    int rc;
+                    span_eval(&sp, s_ev, NULL, xe, NULL);
+                    peaks_on(e, m, &sp, pa.x, pa.s, xe, s_ev);
+                    outputs_on(e, &sp, s_ev);
+                    memcpy(x, xe, sizeof xe);
+                    *t = sp.t0 + s_ev;
+                    rc = apply_event(e, m, x, *t, &ie);
+                    if (rc) return rc;
+                    done = 1; /* a new region from the event on */
+                    break;
+                }
+                peaks_on(e, m, &sp, pa.x, pa.s, pb.x, pb.s);
+                outputs_on(e, &sp, pb.s);
+                if (j == n - 1) {
+                    memcpy(x, pb.x, sizeof pb.x);
+                    *t = t_end;
+                } else { /* the next substep starts here: every full substep reuses C */
+                    span_start(&sp, R, g0, sp.t0 + h, pb.x, in, t_in);
+                    pa = pb;
+                    pa.s = 0.0;
+                }
+            }
+        }
+    }
+    return 0;
+}
+
+/* ---- the engine object ---------------------------------------------------------------------- */
+rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n)
+{
+    rw_engine *e;
+    if (!p) {
+        snprintf(msg, n, "rw_engine_new: parameters are NULL");
+        return NULL;
+    }
+    if (rw_params_validate(p, msg, n)) return NULL;
+    if (p->support == RW_PARAPET) {
+        snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+        return NULL;
+    }
+    e = (rw_engine *)calloc(1, sizeof *e);
+    if (!e) {
+        snprintf(msg, n, "out of memory");
+        return NULL;
+    }
+    e->P = *p;
+    rw_derive(p, &e->D);
+    e->law = rw_hinge_law_of(p->hingeLaw);
+    e->rigid = rw_is_rigid(p);
+    e->max_same_instant = 100;
+    e->t_last_event = -INFINITY;
+    e->t_collapse = NAN;
+    return e;
+}
+
+void rw_engine_free(rw_engine *e)
+{
+    free(e);
+}
+
+int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
+                   long *impacts, double *t_reached, char *msg, size_t n)
+{
+    long before = e->impacts;
+    int rc;
+    rw_input now;
+    now.ag = in->ag;
+    now.u_top = in->u_top;
+    set_indicator_states(e, m, &now, x);
+    *t_reached = t;
+    rc = advance(e, m, x, t_reached, t + h, in, t);
+    *impacts += e->impacts - before;
+    if (rc > 1) snprintf(msg, n, "%s", e->msg);
+    return rc;
+}
+
+/* ---- the batch run ---------------------------------------------------------------------------- */
+static int check_increasing(const double *v, size_t n, const char *what, char *msg, size_t len)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (!isfinite(v[i])) {
+            snprintf(msg, len, "%s[%zu] is not finite", what, i);
+            return 1;
+        }
+        if (i > 0 && !(v[i] > v[i - 1])) {
+            snprintf(msg, len, "%s must be strictly increasing (%s[%zu] = %.17g after %.17g)", what, what, i, v[i],
+                     v[i - 1]);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int check_finite(const double *v, size_t n, const char *what, char *msg, size_t len)
+{
+    size_t i;
+    for (i = 0; v && i < n; i++)
+        if (!isfinite(v[i])) {
+            snprintf(msg, len, "%s[%zu] is not finite", what, i);
+            return 1;
+        }
+    return 0;
+}
+
+static int check_run_arguments(const rw_params *p, const rw_record *rec, const rw_engine_options *o, char *msg,
+                               size_t n)
+{
+    if (!p || !rec || !o) {
+        snprintf(msg, n, "rw_engine_run: params, record and options must not be NULL");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (rec->n < 1 || !rec->t || !rec->ag) {
+        snprintf(msg, n, "the record needs n >= 1 samples with times t and accelerations ag");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (check_increasing(rec->t, rec->n, "t", msg, n) || check_finite(rec->ag, rec->n, "ag", msg, n) ||
+        check_finite(rec->u_top, rec->n, "u_top", msg, n))
+        return RW_ENGINE_BAD_ARGUMENT;
+    if (!isfinite(o->t_start) || !isfinite(o->t_end) || !(o->t_end > o->t_start)) {
+        snprintf(msg, n, "need finite t_start < t_end, got %g, %g", o->t_start, o->t_end);
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (check_finite(o->x0, o->x0 ? RW_NX : 0, "x0", msg, n)) return RW_ENGINE_BAD_ARGUMENT;
+    if (o->n_out > 0) {
+        if (!o->t_out || check_increasing(o->t_out, o->n_out, "t_out", msg, n)) {
+            if (!o->t_out) snprintf(msg, n, "n_out > 0 needs the output times t_out");
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+        if (o->t_out[0] < o->t_start || o->t_out[o->n_out - 1] > o->t_end) {
+            snprintf(msg, n, "output times must lie in [t_start, t_end]");
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+    }
+    return 0;
+}
+
+/* the input of the record on the segment starting at sample i (i = -1: before the first sample,
+ * i = n - 1: after the last; both held) */
+static rw_linear_input record_segment(const rw_record *rec, long i)
+{
+    rw_linear_input in;
+    memset(&in, 0, sizeof in);
+    if (i < 0 || (size_t)i >= rec->n - 1) {
+        const size_t k = i < 0 ? 0 : rec->n - 1;
+        in.ag = rec->ag[k];
+        in.u_top = rec->u_top ? rec->u_top[k] : 0.0;
+        return in;
+    }
+    {
+        const double dt = rec->t[i + 1] - rec->t[i];
+        in.ag = rec->ag[i];
+        in.ag_slope = (rec->ag[i + 1] - rec->ag[i]) / dt;
+        if (rec->u_top) {
+            in.u_top = rec->u_top[i];
+            in.u_slope = (rec->u_top[i + 1] - rec->u_top[i]) / dt;
+        }
+    }
+    return in;
+}
+
+/* the segment index whose interval [t_i, t_i+1) holds t (-1 before the first sample) */
+static long segment_of(const rw_record *rec, double t)
+{
+    size_t lo = 0, hi = rec->n;
+    if (t < rec->t[0]) return -1;
+    while (hi - lo > 1) { /* rec->t[lo] <= t < rec->t[hi] */
+        const size_t mid = (lo + hi) / 2;
+        if (rec->t[mid] <= t) lo = mid;
+        else hi = mid;
+    }
+    return (long)lo;
+}
+
+static void result_init(rw_engine_result *res)
+{
+    double *x_out = res->x_out, *s1 = res->s1_out, *s2 = res->s2_out;
+    memset(res, 0, sizeof *res);
+    res->x_out = x_out;
+    res->s1_out = s1;
+    res->s2_out = s2;
+    res->t_collapse = NAN;
+}
+
+/* Start: the modes from the start states, the hosts' initial event iteration, the collapse test. */
+static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_mode *m, double x[RW_NX])
+{
+    const rw_linear_input li = record_segment(rec, segment_of(rec, o->t_start));
+    const long seg = segment_of(rec, o->t_start);
+    rw_input in;
+    in.ag = li.ag + li.ag_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
+    in.u_top = li.u_top + li.u_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
+    if (o->x0) memcpy(x, o->x0, sizeof(double) * RW_NX);
+    else memset(x, 0, sizeof(double) * RW_NX);
+    memset(m, 0, sizeof *m);
+    rw_init_modes(&e->P, &e->D, &in, x, m, NULL, NULL);
+    e->t_last_event = o->t_start;
+    e->same_instant = 0;
+    e->events--; /* the initial iteration is not a located event */
+    if (e->n_out > 0 && e->t_out[0] <= o->t_start) record_output(e, x);
+    track_peak(e, 0, rw_s1(&e->P, x));
+    track_peak(e, 1, rw_s2(&e->P, x));
+    return apply_event(e, m, x, o->t_start, &in);
+}
+
+int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *o, rw_engine_result *res)
+{
+    rw_engine *e;
+    rw_mode m;
+    double x[RW_NX], t;
+    long seg;
+    int rc;
+    if (!res) return RW_ENGINE_BAD_ARGUMENT;
+    result_init(res);
+    rc = check_run_arguments(p, rec, o, res->message, sizeof res->message);
+    if (rc) return rc;
+    e = rw_engine_new(p, res->message, sizeof res->message);
+    if (!e) {
+        if (p->support == RW_PARAPET && !rw_params_validate(p, res->message, sizeof res->message)) {
+            snprintf(res->message, sizeof res->message,
+                     "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+            return RW_ENGINE_UNSUPPORTED;
+        }
+        return strstr(res->message, "memory") ? RW_ENGINE_NO_MEMORY : RW_ENGINE_BAD_PARAMETERS;
+    }
+    if (o->max_events_per_instant > 0) e->max_same_instant = o->max_events_per_instant;
+    e->t_out = o->t_out;
+    e->n_out = o->n_out;
+    e->x_out = res->x_out;
+    e->s1_out = res->s1_out;
+    e->s2_out = res->s2_out;
+    rc = run_start(e, rec, o, &m, x);
+    t = o->t_start;
+    seg = segment_of(rec, t);
+    while (rc == 0 && t < o->t_end) {
+        const rw_linear_input in = record_segment(rec, seg);
+        const double t_in = seg >= 0 ? rec->t[seg] : t;
+        double t_next = (seg + 1 < (long)rec->n) ? rec->t[seg + 1] : o->t_end;
+        if (t_next > o->t_end) t_next = o->t_end;
+        if (t_next > t) rc = advance(e, &m, x, &t, t_next, &in, t_in);
+        seg++;
+    }
+    while (e->i_out < e->n_out) { /* after a collapse or a Zeno stop: no values */
+        const double nan4[RW_NX] = {NAN, NAN, NAN, NAN};
+        record_output(e, nan4);
+    }
+    res->peak_s1 = e->peak_s1;
+    res->peak_s2 = e->peak_s2;
+    res->collapsed = e->collapsed;
+    res->collapse_reason = e->reason;
+    res->t_collapse = e->t_collapse;
+    res->impacts = e->impacts;
+    res->events = e->events;
+    res->steps = e->steps;
+    res->t_reached = t;
+    memcpy(res->x_end, x, sizeof x);
+    if (rc > 1) snprintf(res->message, sizeof res->message, "%s", e->msg);
+    rw_engine_free(e);
+    return rc > 1 ? rc - 1 : 0;
+}
