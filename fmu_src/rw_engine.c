@@ -94,6 +94,8 @@ struct rw_engine {
     const double *t_out;
     size_t n_out, i_out;
     double *x_out, *s1_out, *s2_out;
+    double *impact_t, *impact_energy;
+    size_t impact_cap;
     char msg[256];
 };
 
@@ -592,7 +594,12 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
     }
     e->t_last_event = t;
     do {
+        const double energy = rw_energy(&e->P, &e->D, m, in, x);
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
+        if (r.impacts && e->impact_t && (size_t)e->impacts < e->impact_cap) {
+            e->impact_t[e->impacts] = t;
+            e->impact_energy[e->impacts] = energy;
+        }
         e->impacts += r.impacts;
     } while ((r.modes_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
     set_indicator_states(e, m, in, x);
@@ -846,7 +853,12 @@ static long segment_of(const rw_record *rec, double t)
 static void result_init(rw_engine_result *res)
 {
     double *x_out = res->x_out, *s1 = res->s1_out, *s2 = res->s2_out;
+    double *it = res->impact_t, *ie = res->impact_energy;
+    const size_t cap = res->impact_cap;
     memset(res, 0, sizeof *res);
+    res->impact_t = it;
+    res->impact_energy = ie;
+    res->impact_cap = cap;
     res->x_out = x_out;
     res->s1_out = s1;
     res->s2_out = s2;
@@ -900,6 +912,11 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     e->x_out = res->x_out;
     e->s1_out = res->s1_out;
     e->s2_out = res->s2_out;
+    if (res->impact_t && res->impact_energy) {
+        e->impact_t = res->impact_t;
+        e->impact_energy = res->impact_energy;
+        e->impact_cap = res->impact_cap;
+    }
     rc = run_start(e, rec, o, &m, x);
     t = o->t_start;
     seg = segment_of(rec, t);

@@ -57,6 +57,10 @@ typedef struct {
     /* optional time history on the grid, caller-allocated (n_out each) or NULL */
     double *x_out;           /* n_out rows of RW_NX states (right limits at events) */
     double *s1_out, *s2_out;
+    /* optional impact log, caller-allocated (impact_cap entries each) or NULL: the time of each
+     * impact and the energy (rw_energy) just before it */
+    double *impact_t, *impact_energy;
+    size_t impact_cap;
     char message[256];       /* why a run failed or stopped early */
 } rw_engine_result;
 

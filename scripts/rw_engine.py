@@ -49,7 +49,8 @@ class _Result(ctypes.Structure):
                 ("events", ctypes.c_long), ("steps", ctypes.c_long), ("t_reached", ctypes.c_double),
                 ("x_end", ctypes.c_double * NX), ("x_out", ctypes.POINTER(ctypes.c_double)),
                 ("s1_out", ctypes.POINTER(ctypes.c_double)), ("s2_out", ctypes.POINTER(ctypes.c_double)),
-                ("message", ctypes.c_char * 256)]
+                ("impact_t", ctypes.POINTER(ctypes.c_double)), ("impact_energy", ctypes.POINTER(ctypes.c_double)),
+                ("impact_cap", ctypes.c_size_t), ("message", ctypes.c_char * 256)]
 
 
 class EngineError(RuntimeError):
@@ -61,13 +62,16 @@ class EngineError(RuntimeError):
 class Result:
     """Peaks, collapse, counters, and the time history on the grid if one was asked for."""
 
-    def __init__(self, r, t_out, x_out, s1, s2):
+    def __init__(self, r, t_out, x_out, s1, s2, imp_t, imp_e):
         self.peak_s1, self.peak_s2 = r.peak_s1, r.peak_s2
         self.collapsed, self.collapse_reason = bool(r.collapsed), r.collapse_reason
         self.t_collapse = r.t_collapse if r.collapsed else math.nan
         self.impacts, self.events, self.steps = r.impacts, r.events, r.steps
         self.t_reached, self.x_end = r.t_reached, np.array(r.x_end[:])
         self.t, self.x, self.s1, self.s2 = t_out, x_out, s1, s2
+        n = min(r.impacts, imp_t.size) if imp_t is not None else 0
+        self.impact_t = imp_t[:n] if imp_t is not None else None
+        self.impact_energy = imp_e[:n] if imp_t is not None else None
 
     def __repr__(self):
         return (f"Result(peak_s1={self.peak_s1:.6g}, peak_s2={self.peak_s2:.6g}, collapsed={self.collapsed}, "
@@ -116,8 +120,10 @@ def _array(a, n=None):
     return a
 
 
-def run(t, ag, u_top=None, t_end=None, t_start=0.0, x0=None, t_out=None, max_events_per_instant=0, **param_values):
-    """One run of the engine. Raises EngineError for bad input (the C API's code and message)."""
+def run(t, ag, u_top=None, t_end=None, t_start=0.0, x0=None, t_out=None, max_events_per_instant=0, impact_log=0,
+        **param_values):
+    """One run of the engine. Raises EngineError for bad input (the C API's code and message).
+    impact_log > 0 keeps the time and the energy before each of the first impact_log impacts."""
     t = _array(t)
     ag, u_top = _array(ag, t.size), _array(u_top, t.size)
     t_end = float(t[-1]) if t_end is None else float(t_end)
@@ -132,7 +138,10 @@ def run(t, ag, u_top=None, t_end=None, t_start=0.0, x0=None, t_out=None, max_eve
     opt = _Options(float(t_start), t_end, _ptr(x0), n_out, _ptr(t_out), int(max_events_per_instant))
     res = _Result()
     res.x_out, res.s1_out, res.s2_out = _ptr(x_out), _ptr(s1), _ptr(s2)
+    imp_t = np.full(impact_log, np.nan) if impact_log > 0 else None
+    imp_e = np.full(impact_log, np.nan) if impact_log > 0 else None
+    res.impact_t, res.impact_energy, res.impact_cap = _ptr(imp_t), _ptr(imp_e), max(0, int(impact_log))
     code = library().rw_engine_run(ctypes.byref(p), ctypes.byref(rec), ctypes.byref(opt), ctypes.byref(res))
     if code:
         raise EngineError(code, res.message.decode(errors="replace"))
-    return Result(res, t_out, x_out, s1, s2)
+    return Result(res, t_out, x_out, s1, s2, imp_t, imp_e)
