@@ -512,9 +512,48 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     return sign ? ext > margin : ext < -margin;
 }
 
-/* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a double
- * crossing inside (the indicator approaches zero at a and leaves it at b: its extremum is
- * located and tested). Returns 1 and *s_event, or 0. */
+#define RW_DIP_DEPTH 3 /* a suspicious substep is split 4 ways, at most this many times */
+
+/* Does indicator k, on the same side of zero (state `was`) at both ends of [a, b], dip through
+ * zero in between? Only when it moves toward zero at an end and its Hermite interpolant does not
+ * clear zero; then the piece is split (a breakpoint indicator |w| - c has a kink at w = 0, so one
+ * piece can hold a dip and a turn), and at the finest level the extremum is located. On a dip,
+ * *lo, *hi bracket its first crossing. */
+static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, const rw_point *a,
+               const rw_point *b, int depth, double *lo, double *flo, double *hi, double *fhi)
+{
+    const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
+    const int leave = was ? b->dz[k] > 0.0 : b->dz[k] < 0.0;
+    rw_point p[2];
+    int i;
+    if (!approach && !leave) return 0;
+    if (hermite_keeps_sign(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s)) return 0;
+    if (depth == RW_DIP_DEPTH) {
+        double s_ext, z_ext;
+        if (!approach || !leave) return 0;
+        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9);
+        z_ext = indicator_at(e, m, sp, k, s_ext);
+        if ((z_ext > 0.0) == was) return 0;
+        *lo = a->s, *flo = a->z[k], *hi = s_ext, *fhi = z_ext;
+        return 1;
+    }
+    p[0] = *a;
+    for (i = 1; i <= 4; i++) {
+        rw_point *q = &p[i & 1];
+        const rw_point *prev = &p[(i - 1) & 1];
+        if (i == 4) *q = *b;
+        else eval_point(e, m, sp, a->s + 0.25 * i * (b->s - a->s), NULL, q);
+        if ((q->z[k] > 0.0) != was) {
+            *lo = prev->s, *flo = prev->z[k], *hi = q->s, *fhi = q->z[k];
+            return 1;
+        }
+        if (dip(e, m, sp, k, was, prev, q, depth + 1, lo, flo, hi, fhi)) return 1;
+    }
+    return 0;
+}
+
+/* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a dip
+ * through zero and back inside the substep. Returns 1 and *s_event, or 0. */
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
                        double *s_event)
 {
@@ -523,19 +562,7 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     for (k = 0; k < RW_NZ; k++) {
         const int was = e->b[k];
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
-        if ((b->z[k] > 0.0) == was) {
-            /* no change at the ends: a dip through zero in between? */
-            const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
-            const int leave = was ? b->dz[k] > 0.0 : b->dz[k] < 0.0;
-            double s_ext, z_ext;
-            if (!approach || !leave) continue;
-            if (hermite_keeps_sign(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s)) continue;
-            s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9);
-            z_ext = indicator_at(e, m, sp, k, s_ext);
-            if ((z_ext > 0.0) == was) continue;
-            hi = s_ext;
-            fhi = z_ext;
-        }
+        if ((b->z[k] > 0.0) == was && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
         s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0);
@@ -676,9 +703,13 @@ static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
 }
 
 /* ---- the stepper -------------------------------------------------------------------------------- */
+/* Substeps of a span: each significant mode turns by at most RW_PHASE_PER_SUBSTEP, and none is
+ * longer than a quarter radian of the wall's own rocking rate p = sqrt(3g/4R) (Housner), which
+ * bounds the polynomial motion of zero-stiffness regions (a plateau, a closed hinge). */
 static int substeps_for(const rw_engine *e, const rw_span *sp, double len)
 {
-    const double n = ceil(len * span_rate(e, sp) / RW_PHASE_PER_SUBSTEP);
+    const double rate = fmax(span_rate(e, sp), sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25);
+    const double n = ceil(len * rate / RW_PHASE_PER_SUBSTEP);
     return n < 1.0 ? 1 : (n > RW_MAX_SUBSTEPS ? (int)RW_MAX_SUBSTEPS : (int)n);
 }
 
