@@ -658,6 +658,11 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         e->same_instant = 0;
     }
     e->t_last_event = t;
+    if (getenv("RW_ENGINE_DEBUG")) {
+        double z[RW_NZ];
+        rw_event_indicators(&e->P, &e->D, m, in, x, z);
+        fprintf(stderr, "event t=%.17g q=%.17g %.17g dq=%g %g z=%g %g %g %g %g %g %g %g\n", t, x[0], x[1], x[2], x[3], z[0], z[1], z[2], z[3], z[4], z[5], z[6], z[7]);
+    }
     do {
         const double energy = rw_energy(&e->P, &e->D, m, in, x);
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
@@ -706,11 +711,13 @@ static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
 /* Substeps of a span: each significant mode turns by at most RW_PHASE_PER_SUBSTEP, and none is
  * longer than a quarter radian of the wall's own rocking rate p = sqrt(3g/4R) (Housner), which
  * bounds the polynomial motion of zero-stiffness regions (a plateau, a closed hinge). */
-static int substeps_for(const rw_engine *e, const rw_span *sp, double len)
+static int substeps_for(const rw_engine *e, const rw_span *sp, double *len)
 {
     const double rate = fmax(span_rate(e, sp), sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25);
-    const double n = ceil(len * rate / RW_PHASE_PER_SUBSTEP);
-    return n < 1.0 ? 1 : (n > RW_MAX_SUBSTEPS ? (int)RW_MAX_SUBSTEPS : (int)n);
+    const double n = ceil(*len * rate / RW_PHASE_PER_SUBSTEP);
+    if (n <= RW_MAX_SUBSTEPS) return n < 1.0 ? 1 : (int)n;
+    *len *= RW_MAX_SUBSTEPS / n; /* this span covers a part; the caller continues with a new one */
+    return (int)RW_MAX_SUBSTEPS;
 }
 
 /* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
@@ -724,6 +731,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         double g0[2], dq_sel[2];
         rw_input now;
         rw_cache_entry *R;
+        double span_len;
         int n, j;
         now.ag = in->ag + in->ag_slope * (*t - t_in);
         now.u_top = in->u_top + in->u_slope * (*t - t_in);
@@ -731,15 +739,16 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         R = region_of(e, m, x, dq_sel, g0);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
-        n = substeps_for(e, &sp, t_end - *t);
+        span_len = t_end - *t;
+        n = substeps_for(e, &sp, &span_len);
         {
-            const double h = (t_end - *t) / n;
+            const double h = span_len / n, span_end = n * h < t_end - *t ? *t + span_len : t_end;
             const double(*C)[4] = substep_coefficients(R, h);
             int done = 0;
             eval_point(e, m, &sp, 0.0, NULL, &pa);
             for (j = 0; j < n && !done; j++) {
                 double s_ev;
-                const double len = j == n - 1 ? t_end - sp.t0 : h;
+                const double len = j == n - 1 ? span_end - sp.t0 : h;
                 eval_point(e, m, &sp, len, len == h ? C : NULL, &pb);
                 e->steps++;
                 if (first_event(e, m, &sp, &pa, &pb, &s_ev)) {
@@ -760,7 +769,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
                 outputs_on(e, &sp, pb.s);
                 if (j == n - 1) {
                     memcpy(x, pb.x, sizeof pb.x);
-                    *t = t_end;
+                    *t = span_end;
                 } else { /* the next substep starts here: every full substep reuses C */
                     span_start(&sp, R, g0, sp.t0 + h, pb.x, in, t_in);
                     pa = pb;

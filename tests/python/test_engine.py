@@ -152,7 +152,7 @@ def test_er_zero_comes_to_rest(support, law):
         assert np.max(np.abs(r.x_end)) < 1e-6
 
 
-@pytest.mark.parametrize("support,law,kd", [(3, 4, 5e4), (3, 3, 1e6), (3, 4, 1e12), (2, 4, 0.0), (2, 1, 0.0)])
+@pytest.mark.parametrize("support,law,kd", [(3, 4, 5e4), (3, 3, 1e6), (3, 4, 1e9), (2, 4, 0.0), (2, 1, 0.0)])
 def test_er_one_keeps_energy_over_600_s(support, law, kd):
     """Free rocking with e_r = 1 from a displaced start: the energy before every impact over 600 s
     equals the first to 1e-9. The rigid law's impacts happen RW_EPS_Q past zero (the model's
@@ -160,7 +160,7 @@ def test_er_one_keeps_energy_over_600_s(support, law, kd):
     not count: its bound is that, per impact (measured: exactly that)."""
     t = np.array([0.0, 600.0])
     q0 = 0.005
-    x0 = [q0, q0 if support == 3 else -q0, 0.0, 0.0]
+    x0 = [q0, -q0, 0.0, 0.0]  # the simply supported shape: the spring starts unstretched
     r = rw_engine.run(t, np.zeros(2), t_end=600.0, x0=x0, support=support, hingeLaw=law, er=1.0, Kd=kd,
                       impact_log=1000000)
     assert not r.collapsed and r.impacts > 1000
