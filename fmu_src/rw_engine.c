@@ -658,11 +658,6 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         e->same_instant = 0;
     }
     e->t_last_event = t;
-    if (getenv("RW_ENGINE_DEBUG")) {
-        double z[RW_NZ];
-        rw_event_indicators(&e->P, &e->D, m, in, x, z);
-        fprintf(stderr, "event t=%.17g q=%.17g %.17g dq=%g %g z=%g %g %g %g %g %g %g %g\n", t, x[0], x[1], x[2], x[3], z[0], z[1], z[2], z[3], z[4], z[5], z[6], z[7]);
-    }
     do {
         const double energy = rw_energy(&e->P, &e->D, m, in, x);
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
