@@ -13,7 +13,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define RW_CACHE_SIZE 48
 #define RW_MAX_EVENT_ROUNDS 100 /* event-iteration rounds at one event, as cs_cvode.c allows 1000 */
 #define RW_PHASE_PER_SUBSTEP 1.0 /* rad of the fastest significant mode per bracketing substep */
 #define RW_MAX_SUBSTEPS 2000000L
@@ -53,51 +52,6 @@ static void stumpff(double z, double c[4])
     c[2] = (1.0 - c[0]) / z;
     c[3] = (1.0 - c[1]) / z;
 }
-
-/* ---- regions --------------------------------------------------------------------------------
- * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
- * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top. */
-typedef struct {
-    double P[2][2], Pi[2][2], lam[2];
-    double ga[2], gu[2];
-    double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
-} rw_modes2;
-
-typedef struct {
-    rw_modes2 E;
-    double g0[2];
-} rw_region;
-
-typedef struct {
-    int used, closed_b, closed_m;
-    double key[4]; /* J (2DOF) or the 1DOF slope */
-    rw_modes2 E;
-    double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
-    int h_valid[2], h_next;
-} rw_cache_entry;
-
-struct rw_engine {
-    rw_params P;
-    rw_derived D;
-    const rw_hinge_law *law;
-    int rigid;
-    rw_cache_entry cache[RW_CACHE_SIZE];
-    int cache_next;
-    /* run bookkeeping */
-    int b[RW_NZ];               /* indicator states z > 0 */
-    double peak_s1, peak_s2;
-    long events, steps, impacts;
-    int collapsed, reason;
-    double t_collapse;
-    double t_last_event;
-    int same_instant, max_same_instant;
-    const double *t_out;
-    size_t n_out, i_out;
-    double *x_out, *s1_out, *s2_out;
-    double *impact_t, *impact_energy;
-    size_t impact_cap;
-    char msg[256];
-};
 
 static void identity_modes(rw_modes2 *E, double p10, double pi10)
 {
@@ -661,6 +615,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
     do {
         const double energy = rw_energy(&e->P, &e->D, m, in, x);
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
+        if (r.states_changed) e->dissipated += energy - rw_energy(&e->P, &e->D, m, in, x);
         if (r.impacts && e->impact_t && (size_t)e->impacts < e->impact_cap) {
             e->impact_t[e->impacts] = t;
             e->impact_energy[e->impacts] = energy;
@@ -777,23 +732,18 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
 }
 
 /* ---- the engine object ---------------------------------------------------------------------- */
-rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n)
+int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
 {
-    rw_engine *e;
-    if (!p) {
-        snprintf(msg, n, "rw_engine_new: parameters are NULL");
-        return NULL;
+    if (!e || !p) {
+        snprintf(msg, n, "rw_engine_init: engine and parameters must not be NULL");
+        return 1;
     }
-    if (rw_params_validate(p, msg, n)) return NULL;
+    if (rw_params_validate(p, msg, n)) return 1;
     if (p->support == RW_PARAPET) {
         snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
-        return NULL;
+        return 1;
     }
-    e = (rw_engine *)calloc(1, sizeof *e);
-    if (!e) {
-        snprintf(msg, n, "out of memory");
-        return NULL;
-    }
+    memset(e, 0, sizeof *e);
     e->P = *p;
     rw_derive(p, &e->D);
     e->law = rw_hinge_law_of(p->hingeLaw);
@@ -801,6 +751,20 @@ rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n)
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
     e->t_collapse = NAN;
+    return 0;
+}
+
+rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n)
+{
+    rw_engine *e = (rw_engine *)calloc(1, sizeof *e);
+    if (!e) {
+        snprintf(msg, n, "out of memory");
+        return NULL;
+    }
+    if (rw_engine_init(e, p, msg, n)) {
+        free(e);
+        return NULL;
+    }
     return e;
 }
 
@@ -809,17 +773,34 @@ void rw_engine_free(rw_engine *e)
     free(e);
 }
 
+/* Did the inputs jump at t (a new step's values) so that an indicator changed sign? Then the
+ * model's event iteration at t, as cs_cvode.c does at a communication point. */
+static int input_jump(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *now)
+{
+    double z[RW_NZ];
+    int k;
+    if (!e->b_valid) {
+        set_indicator_states(e, m, now, x);
+        e->b_valid = 1;
+        return 0;
+    }
+    rw_event_indicators(&e->P, &e->D, m, now, x, z);
+    for (k = 0; k < RW_NZ; k++)
+        if ((z[k] > 0.0) != e->b[k]) return apply_event(e, m, x, t, now);
+    return 0;
+}
+
 int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
                    long *impacts, double *t_reached, char *msg, size_t n)
 {
-    long before = e->impacts;
-    int rc;
+    const long before = e->impacts;
     rw_input now;
+    int rc;
     now.ag = in->ag;
     now.u_top = in->u_top;
-    set_indicator_states(e, m, &now, x);
     *t_reached = t;
-    rc = advance(e, m, x, t_reached, t + h, in, t);
+    rc = input_jump(e, m, x, t, &now);
+    if (rc == 0) rc = advance(e, m, x, t_reached, t + h, in, t);
     *impacts += e->impacts - before;
     if (rc > 1) snprintf(msg, n, "%s", e->msg);
     return rc;

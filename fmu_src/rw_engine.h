@@ -16,6 +16,11 @@
 
 #include "rw_physics.h"
 
+/* an input linear over a step or segment: value at its start and slope */
+typedef struct {
+    double ag, ag_slope, u_top, u_slope;
+} rw_linear_input;
+
 /* error codes of rw_engine_run (0 = ok) */
 enum {
     RW_ENGINE_OK = 0,
@@ -69,17 +74,66 @@ typedef struct {
 int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *opt, rw_engine_result *res);
 
 /* ---- a stepper for callers that own the time loop (Co-Simulation) ---------------------------- */
-typedef struct rw_engine rw_engine;
+#define RW_CACHE_SIZE 48
+/* ---- regions --------------------------------------------------------------------------------
+ * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
+ * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top. */
+typedef struct {
+    double P[2][2], Pi[2][2], lam[2];
+    double ga[2], gu[2];
+    double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
+} rw_modes2;
 
-/* After the modes are initialised by the caller (rw_init_modes): the engine over p from x, m at t. */
+typedef struct {
+    rw_modes2 E;
+    double g0[2];
+} rw_region;
+
+typedef struct {
+    int used, closed_b, closed_m;
+    double key[4]; /* J (2DOF) or the 1DOF slope */
+    rw_modes2 E;
+    double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
+    int h_valid[2], h_next;
+} rw_cache_entry;
+
+typedef struct rw_engine { /* by value in the FMU's data; use the functions, not the fields */
+    rw_params P;
+    rw_derived D;
+    const rw_hinge_law *law;
+    int rigid;
+    rw_cache_entry cache[RW_CACHE_SIZE];
+    int cache_next;
+    /* run bookkeeping */
+    int b[RW_NZ];               /* indicator states z > 0 */
+    double peak_s1, peak_s2;
+    long events, steps, impacts;
+    double dissipated;          /* energy taken out by the event maps (impacts, closings) */
+    int collapsed, reason;
+    double t_collapse;
+    double t_last_event;
+    int same_instant, max_same_instant;
+    const double *t_out;
+    size_t n_out, i_out;
+    double *x_out, *s1_out, *s2_out;
+    double *impact_t, *impact_energy;
+    size_t impact_cap;
+    int b_valid;                /* b holds the indicator states of the last step's end */
+    char msg[256];
+} rw_engine;
+
+
+/* In place (e.g. inside the FMU's instance data): 0, or 1 with msg filled. */
+int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n);
+
+/* A heap engine over p (NULL with msg filled if p is refused or the parapet). */
 rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n);
 void rw_engine_free(rw_engine *e);
-/* Advance x, m from t to t + h with the inputs linear over the step (value at t and slope).
- * Event updates are the model's; impacts are added to *impacts. Returns 0, 1 if the wall
- * collapsed at *t_reached (<= t + h), or an error code + 1 (msg filled). */
-typedef struct {
-    double ag, ag_slope, u_top, u_slope;
-} rw_linear_input;
+/* Advance x, m (initialised by the caller: rw_init_modes and the initial event iteration) from t
+ * to t + h with the inputs linear over the step (value at t and slope). If the inputs jumped at t
+ * since the previous step so that an indicator changed sign, the model's event iteration runs at
+ * t first (an input can open a hinge at rest). Impacts are added to *impacts. Returns 0, 1 if the
+ * wall collapsed at *t_reached (<= t + h), or an error code + 1 (msg filled). */
 int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
                    long *impacts, double *t_reached, char *msg, size_t n);
 
