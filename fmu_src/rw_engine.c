@@ -373,20 +373,16 @@ typedef struct {
 static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
                        rw_point *pt)
 {
-    double xd[RW_NX], xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
-    const double dl = 1e-9; /* s: central difference along the exact motion (only signs are used) */
-    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl), im = span_input(sp, s - dl);
+    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
+    const double dl = 1e-9; /* s: a difference along the exact motion (only signs are used) */
+    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
     int i;
     pt->s = s;
     span_eval(sp, s, C, pt->x, xd);
     rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
-    for (i = 0; i < RW_NX; i++) {
-        xp[i] = pt->x[i] + dl * xd[i];
-        xm[i] = pt->x[i] - dl * xd[i];
-    }
+    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
     rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
-    rw_event_indicators(&e->P, &e->D, m, &im, xm, zm);
-    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - zm[i]) / (2.0 * dl);
+    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
 }
 
 static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)

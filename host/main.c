@@ -21,7 +21,8 @@ static const char *usage =
     "usage: fmi2sim MODEL.fmu|FOLDER [options]\n"
     "Simulates an FMI 2.0 Model-Exchange FMU with SUNDIALS CVODE and writes a CSV of its outputs.\n"
     "\n"
-    "  --solver bdf|adams       CVODE method (default bdf)\n"
+    "  --solver bdf|adams|erk   CVODE BDF or Adams, or ARKODE's explicit Runge-Kutta (ERKStep)\n"
+    "                           (default bdf)\n"
     "  --rtol R                 relative tolerance (default 1e-6)\n"
     "  --atol A                 absolute tolerance (default rtol * nominal of each state)\n"
     "  --max-step H             largest CVODE step (default none)\n"
@@ -152,9 +153,10 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--version")) { printf("fmi2sim " FMI2SIM_VERSION "\n"); status = 0; goto out; }
         else if (!strcmp(a, "--solver")) {
             NEED_VALUE();
-            if (!strcmp(val, "bdf")) opt.adams = 0;
-            else if (!strcmp(val, "adams")) opt.adams = 1;
-            else { status = die("--solver: '%s' is not bdf or adams", val); goto out; }
+            if (!strcmp(val, "bdf")) opt.adams = opt.erk = 0;
+            else if (!strcmp(val, "adams")) opt.adams = 1, opt.erk = 0;
+            else if (!strcmp(val, "erk")) opt.erk = 1, opt.adams = 0;
+            else { status = die("--solver: '%s' is not bdf, adams or erk", val); goto out; }
         }
         else if (!strcmp(a, "--rtol")) { NEED_VALUE(); if (parse_double(a, val, &opt.rtol) || opt.rtol <= 0) { status = die("--rtol must be > 0"); goto out; } }
         else if (!strcmp(a, "--atol")) { NEED_VALUE(); if (parse_double(a, val, &opt.atol) || opt.atol <= 0) { status = die("--atol must be > 0"); goto out; } }
