@@ -300,13 +300,22 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
     }
 }
 
-/* Modal state at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed). */
-static void span_modal(const rw_span *sp, double s, const double C[2][4], double eta[2], double v[2], double a[2])
+/* Modal state at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed).
+ * fast[i] (fast may be NULL) leaves out the free oscillation of mode i: its exact particular
+ * solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
+static void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double eta[2], double v[2],
+                       double a[2])
 {
     int i;
     for (i = 0; i < 2; i++) {
         double c[4];
         const double lam = sp->R->E.lam[i];
+        if (fast && fast[i]) {
+            eta[i] = (sp->f0[i] + sp->f1[i] * s) / lam;
+            v[i] = sp->f1[i] / lam;
+            a[i] = 0.0;
+            continue;
+        }
         if (C) memcpy(c, C[i], sizeof c);
         else stumpff(lam * s * s, c);
         eta[i] = sp->eta[i] * c[0] + s * (sp->v[i] * c[1] + s * (sp->f0[i] * c[2] + s * sp->f1[i] * c[3]));
@@ -323,11 +332,13 @@ static void to_physical(const rw_modes2 *E, const double eta[2], const double v[
     x[3] = E->P[1][0] * v[0] + E->P[1][1] * v[1];
 }
 
-/* State x and its time derivative xd at t0 + s. */
-static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
+/* State x and its time derivative xd at t0 + s (span_eval_part: without the fast modes' free
+ * oscillation). */
+static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
+                           double xd[RW_NX])
 {
     double eta[2], v[2], a[2];
-    span_modal(sp, s, C, eta, v, a);
+    span_modal(sp, s, C, fast, eta, v, a);
     to_physical(&sp->R->E, eta, v, x);
     if (xd) {
         xd[0] = x[2];
@@ -335,6 +346,11 @@ static void span_eval(const rw_span *sp, double s, const double C[2][4], double 
         xd[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
         xd[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
     }
+}
+
+static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
+{
+    span_eval_part(sp, s, C, NULL, x, xd);
 }
 
 static rw_input span_input(const rw_span *sp, double s)
@@ -345,22 +361,49 @@ static rw_input span_input(const rw_span *sp, double s)
     return in;
 }
 
-/* The fastest rate (rad/s) among the modes that move significantly on this span: unstable modes
- * always, oscillating ones when their free oscillation about the quasi-static solution is larger
- * than 1e-12 of the toppling rotation (a stiff spring's mode driven quasi-statically is not). */
-static double span_rate(const rw_engine *e, const rw_span *sp)
+/* The modes of a span, for bracketing: unstable modes always count; an oscillating mode counts
+ * when its free oscillation about the quasi-static solution is larger than 1e-12 of the toppling
+ * rotation (a stiff spring's mode driven quasi-statically is not), and it is `fast` when it turns
+ * more than 4 times faster than every other counted rate (including the wall's rocking rate, see
+ * substeps_for): its free oscillation is then bounded by its amplitude, amp_q, and handled as a
+ * band around the slow motion (rw_engine.c "fast modes") instead of setting the substeps. */
+typedef struct {
+    int fast[2], any_fast;
+    double slow_rate, fast_rate;
+    double amp_q[2]; /* bound of the fast modes' free oscillation in (q1, q2) */
+} rw_rates;
+
+static double mode_amplitude(const rw_span *sp, int i)
 {
-    double w = 0.0;
+    const double lam = sp->R->E.lam[i];
+    return hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+}
+
+static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
+{
+    double w[2] = {0.0, 0.0};
     int i;
+    memset(r, 0, sizeof *r);
     for (i = 0; i < 2; i++) {
         const double lam = sp->R->E.lam[i];
-        double amp, col;
-        if (lam <= 0.0) { w = fmax(w, sqrt(-lam)); continue; }
-        amp = hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+        double col;
+        if (lam <= 0.0) { w[i] = sqrt(-lam); continue; }
         col = fmax(fabs(sp->R->E.P[0][i]), fabs(sp->R->E.P[1][i]));
-        if (amp * col > 1e-12 * e->D.q_topple) w = fmax(w, sqrt(lam));
+        if (mode_amplitude(sp, i) * col > 1e-12 * e->D.q_topple) w[i] = sqrt(lam);
     }
-    return w;
+    r->slow_rate = floor_rate;
+    for (i = 0; i < 2; i++) {
+        const double other = fmax(floor_rate, w[1 - i]);
+        if (sp->R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
+            const double amp = mode_amplitude(sp, i);
+            r->fast[i] = r->any_fast = 1;
+            r->fast_rate = fmax(r->fast_rate, w[i]);
+            r->amp_q[0] += amp * fabs(sp->R->E.P[0][i]);
+            r->amp_q[1] += amp * fabs(sp->R->E.P[1][i]);
+        } else {
+            r->slow_rate = fmax(r->slow_rate, w[i]);
+        }
+    }
 }
 
 /* ---- indicators along a span ---------------------------------------------------------------- */
@@ -663,19 +706,202 @@ static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
     return (const double(*)[4])c->C[j];
 }
 
-/* ---- the stepper -------------------------------------------------------------------------------- */
-/* Substeps of a span: each significant mode turns by at most RW_PHASE_PER_SUBSTEP, and none is
+/* ---- resolving a span ----------------------------------------------------------------------------- */
+/* Substeps: the counted rate turns by at most RW_PHASE_PER_SUBSTEP per substep, and none is
  * longer than a quarter radian of the wall's own rocking rate p = sqrt(3g/4R) (Housner), which
- * bounds the polynomial motion of zero-stiffness regions (a plateau, a closed hinge). */
-static int substeps_for(const rw_engine *e, const rw_span *sp, double *len)
+ * bounds the polynomial motion of zero-stiffness regions (a plateau, a closed hinge). A span
+ * longer than RW_MAX_SUBSTEPS substeps covers a part (*len shortened); the caller continues. */
+static double rocking_rate(const rw_engine *e)
 {
-    const double rate = fmax(span_rate(e, sp), sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25);
+    return sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25;
+}
+
+static int substeps_for(double rate, double *len)
+{
     const double n = ceil(*len * rate / RW_PHASE_PER_SUBSTEP);
     if (n <= RW_MAX_SUBSTEPS) return n < 1.0 ? 1 : (int)n;
-    *len *= RW_MAX_SUBSTEPS / n; /* this span covers a part; the caller continues with a new one */
+    *len *= RW_MAX_SUBSTEPS / n;
     return (int)RW_MAX_SUBSTEPS;
 }
 
+/* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
+ * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
+ * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
+ * pieces of length len/n (NULL: computed). */
+static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+                   const rw_linear_input *in, double t_in, double len, int n, const double (*C)[4], double x[RW_NX],
+                   double *t)
+{
+    const double h = len / n, t_end = sp->t0 + len;
+    rw_point pa, pb;
+    int j;
+    eval_point(e, m, sp, 0.0, NULL, &pa);
+    for (j = 0; j < n; j++) {
+        double s_ev;
+        const double piece = j == n - 1 ? t_end - sp->t0 : h;
+        eval_point(e, m, sp, piece, piece == h ? C : NULL, &pb);
+        e->steps++;
+        if (first_event(e, m, sp, &pa, &pb, &s_ev)) {
+            rw_input ie = span_input(sp, s_ev);
+            int rc;
+            span_eval(sp, s_ev, NULL, x, NULL);
+            peaks_on(e, m, sp, pa.x, pa.s, x, s_ev);
+            outputs_on(e, sp, s_ev);
+            *t = sp->t0 + s_ev;
+            rc = apply_event(e, m, x, *t, &ie);
+            return rc ? rc : -1;
+        }
+        peaks_on(e, m, sp, pa.x, pa.s, pb.x, pb.s);
+        outputs_on(e, sp, pb.s);
+        memcpy(x, pb.x, sizeof pb.x);
+        if (j == n - 1) {
+            *t = t_end;
+        } else { /* the next piece starts here */
+            span_start(sp, R, g0, sp->t0 + h, pb.x, in, t_in);
+            *t = sp->t0;
+            pa = pb;
+            pa.s = 0.0;
+        }
+    }
+    return 0;
+}
+
+/* ---- fast modes: a band around the slow motion ---------------------------------------------------
+ * A stiff mode (a stiff spring: up to 1e5 rad/s) would set substeps of microseconds. Its free
+ * oscillation is a sinusoid of constant amplitude amp_q about its exact quasi-static solution, so
+ * over a substep of the slow modes the motion is the slow part (span_eval_part) within that band.
+ * A substep can hold no event when every indicator of the slow part stays farther from zero than
+ * what the band can change it by (evaluated at +-amp_q, doubled), and no new peak when |s1|, |s2|
+ * of the slow part plus the band stay below the peaks so far; otherwise the substep is resolved at
+ * the fast rate. The slow part between the substep's ends is bounded by its cubic Hermite
+ * interpolant with the margin of hermite_keeps_sign. */
+
+/* min and max over [0, 1] of the cubic Hermite interpolant of (z, dz) on [0, L], ends included */
+static void hermite_range(double za, double da, double zb, double db, double L, double *lo, double *hi)
+{
+    const double ma = L * da, mb = L * db;
+    const double A = 6.0 * za + 3.0 * ma - 6.0 * zb + 3.0 * mb;
+    const double B = -6.0 * za - 4.0 * ma + 6.0 * zb - 2.0 * mb;
+    const double C = ma, margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
+    double roots[2];
+    int n = 0, i;
+    *lo = fmin(za, zb);
+    *hi = fmax(za, zb);
+    if (fabs(A) > 1e-300) {
+        const double disc = B * B - 4.0 * A * C;
+        if (disc >= 0.0) {
+            roots[n++] = (-B + sqrt(disc)) / (2.0 * A);
+            roots[n++] = (-B - sqrt(disc)) / (2.0 * A);
+        }
+    } else if (fabs(B) > 1e-300) {
+        roots[n++] = -C / B;
+    }
+    for (i = 0; i < n; i++) {
+        const double u = roots[i], u2 = u * u, u3 = u2 * u;
+        if (u > 0.0 && u < 1.0) {
+            const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
+            *lo = fmin(*lo, z);
+            *hi = fmax(*hi, z);
+        }
+    }
+    *lo -= margin;
+    *hi += margin;
+}
+
+static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
+                            rw_point *pt)
+{
+    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
+    const double dl = 1e-9;
+    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
+    int i;
+    pt->s = s;
+    span_eval_part(sp, s, NULL, fast, pt->x, xd);
+    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
+    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
+}
+
+/* how much the band can change each indicator, near the slow point a */
+static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
+                    double band[RW_NZ])
+{
+    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+    rw_input in = span_input(sp, a->s);
+    int k;
+    memcpy(xp, a->x, sizeof xp);
+    memcpy(xm, a->x, sizeof xm);
+    for (k = 0; k < 2; k++) {
+        xp[k] += r->amp_q[k];
+        xm[k] -= r->amp_q[k];
+    }
+    rw_event_indicators(&e->P, &e->D, m, &in, xp, zp);
+    rw_event_indicators(&e->P, &e->D, m, &in, xm, zm);
+    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+}
+
+/* Can the substep [0, L] of the span hold no event (see above)? Then *peaks_full says whether a
+ * new peak is possible there: the band is then negligible (below 1e-9 of the peak) and the peaks
+ * are taken on the full motion at the substep's resolution; a new peak with a larger band makes
+ * the substep not quiet. */
+static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const rw_rates *r,
+                            int *peaks_full)
+{
+    rw_point a, b;
+    double band[RW_NZ], lo, hi;
+    int k, w;
+    *peaks_full = 0;
+    eval_slow_point(e, m, sp, 0.0, r->fast, &a);
+    eval_slow_point(e, m, sp, L, r->fast, &b);
+    band_of(e, m, sp, &a, r, band);
+    for (k = 0; k < RW_NZ; k++) {
+        hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
+        if (e->b[k] ? !(lo > band[k]) : !(hi < -band[k])) return 0;
+    }
+    for (w = 0; w < 2; w++) {
+        const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
+        const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
+        const double sb = 2.0 * fabs(s_of(&e->P, w, amp));
+        const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
+        hermite_range(s_of(&e->P, w, a.x), s_of(&e->P, w, va), s_of(&e->P, w, b.x), s_of(&e->P, w, vb), L, &lo, &hi);
+        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (sb > 1e-9 * fmax(fabs(lo), fabs(hi))) return 0;
+        *peaks_full = 1;
+    }
+    return 1;
+}
+
+/* A substep of a span with fast modes, from the span's start to t_to: accepted when quiet, else
+ * halved until its halves are quiet or short enough (8 pieces at the fast rate) to be resolved in
+ * full, so that only the neighbourhood of an event or a new peak is resolved at the fast rate.
+ * Returns as resolve(). */
+static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+                        const rw_linear_input *in, double t_in, double t_to, const rw_rates *r, double x[RW_NX],
+                        double *t, int depth)
+{
+    const double L = t_to - sp->t0;
+    int peaks_full, nf, rc;
+    double len = L;
+    if (substep_is_quiet(e, m, sp, L, r, &peaks_full)) {
+        double xa[RW_NX];
+        memcpy(xa, x, sizeof xa);
+        e->steps++;
+        span_eval(sp, L, NULL, x, NULL);
+        if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
+        outputs_on(e, sp, L);
+        *t = t_to;
+        return 0;
+    }
+    nf = substeps_for(r->fast_rate, &len);
+    if (nf <= 8 || depth >= 40) return resolve(e, m, sp, R, g0, in, t_in, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL, x, t);
+    rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, r, x, t, depth + 1);
+    if (rc) return rc;
+    span_start(sp, R, g0, *t, x, in, t_in);
+    return fast_substep(e, m, sp, R, g0, in, t_in, t_to, r, x, t, depth + 1);
+}
+
+/* ---- the stepper ------------------------------------------------------------------------------ */
 /* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
  * (x, t at the collapse), or an error code + 1. */
 static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
@@ -683,55 +909,32 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
 {
     while (*t < t_end) {
         rw_span sp;
-        rw_point pa, pb;
-        double g0[2], dq_sel[2];
+        rw_rates r;
+        double g0[2], dq_sel[2], span_len, h, span_end;
         rw_input now;
         rw_cache_entry *R;
-        double span_len;
-        int n, j;
+        int n, j, rc = 0;
         now.ag = in->ag + in->ag_slope * (*t - t_in);
         now.u_top = in->u_top + in->u_slope * (*t - t_in);
         selection_rate(e, m, &now, x, dq_sel);
         R = region_of(e, m, x, dq_sel, g0);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
+        span_rates(e, &sp, rocking_rate(e), &r);
         span_len = t_end - *t;
-        n = substeps_for(e, &sp, &span_len);
-        {
-            const double h = span_len / n, span_end = n * h < t_end - *t ? *t + span_len : t_end;
-            const double(*C)[4] = substep_coefficients(R, h);
-            int done = 0;
-            eval_point(e, m, &sp, 0.0, NULL, &pa);
-            for (j = 0; j < n && !done; j++) {
-                double s_ev;
-                const double len = j == n - 1 ? span_end - sp.t0 : h;
-                eval_point(e, m, &sp, len, len == h ? C : NULL, &pb);
-                e->steps++;
-                if (first_event(e, m, &sp, &pa, &pb, &s_ev)) {
-                    double xe[RW_NX];
-                    rw_input ie = span_input(&sp, s_ev);
-                    int rc;
-                    span_eval(&sp, s_ev, NULL, xe, NULL);
-                    peaks_on(e, m, &sp, pa.x, pa.s, xe, s_ev);
-                    outputs_on(e, &sp, s_ev);
-                    memcpy(x, xe, sizeof xe);
-                    *t = sp.t0 + s_ev;
-                    rc = apply_event(e, m, x, *t, &ie);
-                    if (rc) return rc;
-                    done = 1; /* a new region from the event on */
-                    break;
-                }
-                peaks_on(e, m, &sp, pa.x, pa.s, pb.x, pb.s);
-                outputs_on(e, &sp, pb.s);
-                if (j == n - 1) {
-                    memcpy(x, pb.x, sizeof pb.x);
-                    *t = span_end;
-                } else { /* the next substep starts here: every full substep reuses C */
-                    span_start(&sp, R, g0, sp.t0 + h, pb.x, in, t_in);
-                    pa = pb;
-                    pa.s = 0.0;
-                }
-            }
+        n = substeps_for(r.slow_rate, &span_len);
+        h = span_len / n;
+        span_end = n * h < t_end - *t ? *t + span_len : t_end;
+        if (!r.any_fast) {
+            rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h), x, t);
+            if (rc > 0) return rc;
+            continue;
+        }
+        for (j = 0; j < n && rc == 0; j++) {
+            const double t_to = j == n - 1 ? span_end : sp.t0 + h;
+            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, &r, x, t, 0);
+            if (rc > 0) return rc;
+            if (rc == 0 && j < n - 1) span_start(&sp, R, g0, *t, x, in, t_in);
         }
     }
     return 0;
