@@ -122,7 +122,10 @@ def test_random_scene_against_fmi2sim(seed, fmi2sim_exe, rockingwall_fmu, workdi
     if not bad:
         return
     # second opinion: CVODE at 1e-12, and the spread between the two CVODE runs
-    cv12 = es.fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, 1e-12, workdir, max_step=1e-4)
+    try:
+        cv12 = es.fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, 1e-12, workdir, max_step=1e-4)
+    except subprocess.CalledProcessError:  # CVODE may refuse 1e-12 on a stiff scene: the next best
+        cv12 = es.fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, 1e-11, workdir, max_step=1e-4)
     spread = {k: abs(cv10[k] - cv12[k]) for k in ("peak_s1", "peak_s2")}
     spread["t_collapse"] = abs(cv10["end_time"] - cv12["end_time"])
     spread["impacts"] = abs(sig(1e-10) - sig(1e-12)) if r.impacts != cv12["impacts"] else 0
