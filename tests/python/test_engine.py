@@ -300,3 +300,18 @@ def test_fmi2sim_erk_bouncing_ball(fmi2sim_exe, build_dir, tmp_path):
     for k in range(1, 5):
         want.append(want[-1] + 2 * 0.8**k * v1 / 9.81)
     np.testing.assert_allclose(got, want, rtol=1e-7)
+
+
+def test_command_line_run_matches_the_binding(build_dir, workdir):
+    import json
+    sig = inputs.el_centro(0.5)
+    csv = workdir / "cli.csv"
+    np.savetxt(csv, np.c_[sig.t, sig.a], delimiter=",", header="time,ag", comments="", fmt="%.17g")
+    proc = subprocess.run([str(build_dir / "rwengine"), "--input", str(csv), "--stop-time", "30", "--set", "Kd=5e4",
+                           "--set", "hingeLaw=3"], capture_output=True, text=True, timeout=60, check=True)
+    got = json.loads(proc.stdout)
+    r = rw_engine.run(sig.t, sig.a, t_end=30.0, Kd=5e4, hingeLaw=3)
+    assert got["peak_s1"] == r.peak_s1 and got["impacts"] == r.impacts
+    bad = subprocess.run([str(build_dir / "rwengine"), "--input", str(csv), "--set", "support=1"], capture_output=True,
+                         text=True, timeout=60)
+    assert bad.returncode == 2 and "parapet" in bad.stderr
