@@ -73,21 +73,17 @@ typedef struct {
  * and fills res->message when not 0. */
 int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *opt, rw_engine_result *res);
 
-/* ---- a stepper for callers that own the time loop (Co-Simulation) ---------------------------- */
-#define RW_CACHE_SIZE 48
-/* ---- regions --------------------------------------------------------------------------------
+/* ---- the engine's state (public so that it can live inside the FMU's instance data) ------------
  * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
- * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top. */
+ * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top; decompositions are cached by region (the
+ * closed flags and J, or the 1DOF slope), with the Stumpff coefficients of the last two step
+ * lengths. */
+#define RW_CACHE_SIZE 48
 typedef struct {
     double P[2][2], Pi[2][2], lam[2];
     double ga[2], gu[2];
     double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
 } rw_modes2;
-
-typedef struct {
-    rw_modes2 E;
-    double g0[2];
-} rw_region;
 
 typedef struct {
     int used, closed_b, closed_m;
@@ -122,7 +118,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     char msg[256];
 } rw_engine;
 
-
+/* ---- a stepper for callers that own the time loop (Co-Simulation) ---------------------------- */
 /* In place (e.g. inside the FMU's instance data): 0, or 1 with msg filled. */
 int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n);
 
