@@ -84,10 +84,10 @@ def fmpy_run(sig, params, t_end, rtol):
     return np.max(np.abs(res["s1"])), np.max(np.abs(res["s2"])), time.process_time() - start
 
 
-def reference_run(sig, names, t_end, rtol):
+def reference_run(sig, names, kd, t_end, rtol):
     from rwref import Params, simulate
     start = time.process_time()
-    res = simulate(Params(model=names[0], hinge_law=names[1], **WALL_1, Kd=5e4), sig, t_end, method="DOP853",
+    res = simulate(Params(model=names[0], hinge_law=names[1], **WALL_1, Kd=kd), sig, t_end, method="DOP853",
                    rtol=rtol, atol=rtol * 1e-3, t_out=np.arange(0.0, t_end, 0.01))
     return np.max(np.abs(res.s1)), np.max(np.abs(res.s2)), time.process_time() - start
 
@@ -127,7 +127,7 @@ def main():
             fp_txt = f"{cpu * 1e3:.0f} ms {error(p1, p2, ref):.0e}"
             if ref_names:
                 try:
-                    p1, p2, cpu = reference_run(sig, ref_names, t_end, 1e-8)
+                    p1, p2, cpu = reference_run(sig, ref_names, params.get("Kd", 1e6), t_end, 1e-8)
                     ref_txt = f"{cpu * 1e3:.0f} ms {error(p1, p2, ref):.0e}"
                 except Exception as exc:  # the reference solver is being renamed (support, hingeLaw)
                     ref_txt = f"n/a ({type(exc).__name__})"
