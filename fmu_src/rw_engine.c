@@ -279,6 +279,7 @@ typedef struct {
     double eta[2], v[2]; /* modal state at t0 */
     double f0[2], f1[2]; /* modal forcing at t0 and its rate */
     double ag0, ag1, u0, u1; /* the input at t0 and its rate */
+    double x0[RW_NX];        /* the start state itself: the motion is x0 + P (eta(s) - eta(0)) */
 } rw_span;
 
 static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2], double t0, const double x[RW_NX],
@@ -292,6 +293,7 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
     sp->u0 = in->u_top + in->u_slope * (t0 - t_in);
     sp->ag1 = in->ag_slope;
     sp->u1 = in->u_slope;
+    memcpy(sp->x0, x, sizeof sp->x0);
     for (i = 0; i < 2; i++) {
         sp->eta[i] = E->Pi[i][0] * x[0] + E->Pi[i][1] * x[1];
         sp->v[i] = E->Pi[i][0] * x[2] + E->Pi[i][1] * x[3];
@@ -300,36 +302,41 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
     }
 }
 
-/* Modal state at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed).
- * fast[i] (fast may be NULL) leaves out the free oscillation of mode i: its exact particular
- * solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
-static void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double eta[2], double v[2],
-                       double a[2])
+/* Modal motion at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed), as
+ * changes from the start, deta = eta(s) - eta(0), dv = v(s) - v(0) (with c0 = 1 - z c2, free of
+ * cancellation), and the modal accelerations a. Written as changes, the state at s = 0 is the start
+ * state itself, not its image through P Pi: an indicator that set an event's state keeps its sign
+ * where the next span begins. fast[i] (fast may be NULL) leaves out the free oscillation of mode i:
+ * its exact particular solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
+static void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
+                       double dv[2], double a[2])
 {
     int i;
     for (i = 0; i < 2; i++) {
         double c[4];
-        const double lam = sp->R->E.lam[i];
+        const double lam = sp->R->E.lam[i], eta0 = sp->eta[i], v0 = sp->v[i];
+        const double f0 = sp->f0[i], f1 = sp->f1[i];
         if (fast && fast[i]) {
-            eta[i] = (sp->f0[i] + sp->f1[i] * s) / lam;
-            v[i] = sp->f1[i] / lam;
+            deta[i] = (f0 + f1 * s) / lam - eta0;
+            dv[i] = f1 / lam - v0;
             a[i] = 0.0;
             continue;
         }
         if (C) memcpy(c, C[i], sizeof c);
         else stumpff(lam * s * s, c);
-        eta[i] = sp->eta[i] * c[0] + s * (sp->v[i] * c[1] + s * (sp->f0[i] * c[2] + s * sp->f1[i] * c[3]));
-        v[i] = -lam * s * sp->eta[i] * c[1] + sp->v[i] * c[0] + s * (sp->f0[i] * c[1] + s * sp->f1[i] * c[2]);
-        a[i] = -lam * eta[i] + sp->f0[i] + sp->f1[i] * s;
+        deta[i] = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
+        dv[i] = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
+        a[i] = -lam * (eta0 + deta[i]) + f0 + f1 * s;
     }
 }
 
-static void to_physical(const rw_modes2 *E, const double eta[2], const double v[2], double x[RW_NX])
+static void to_physical(const rw_span *sp, const double deta[2], const double dv[2], double x[RW_NX])
 {
-    x[0] = E->P[0][0] * eta[0] + E->P[0][1] * eta[1];
-    x[1] = E->P[1][0] * eta[0] + E->P[1][1] * eta[1];
-    x[2] = E->P[0][0] * v[0] + E->P[0][1] * v[1];
-    x[3] = E->P[1][0] * v[0] + E->P[1][1] * v[1];
+    const rw_modes2 *E = &sp->R->E;
+    x[0] = sp->x0[0] + (E->P[0][0] * deta[0] + E->P[0][1] * deta[1]);
+    x[1] = sp->x0[1] + (E->P[1][0] * deta[0] + E->P[1][1] * deta[1]);
+    x[2] = sp->x0[2] + (E->P[0][0] * dv[0] + E->P[0][1] * dv[1]);
+    x[3] = sp->x0[3] + (E->P[1][0] * dv[0] + E->P[1][1] * dv[1]);
 }
 
 /* State x and its time derivative xd at t0 + s (span_eval_part: without the fast modes' free
@@ -337,9 +344,9 @@ static void to_physical(const rw_modes2 *E, const double eta[2], const double v[
 static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
                            double xd[RW_NX])
 {
-    double eta[2], v[2], a[2];
-    span_modal(sp, s, C, fast, eta, v, a);
-    to_physical(&sp->R->E, eta, v, x);
+    double deta[2], dv[2], a[2];
+    span_modal(sp, s, C, fast, deta, dv, a);
+    to_physical(sp, deta, dv, x);
     if (xd) {
         xd[0] = x[2];
         xd[1] = x[3];
