@@ -315,3 +315,13 @@ def test_command_line_run_matches_the_binding(build_dir, workdir):
     bad = subprocess.run([str(build_dir / "rwengine"), "--input", str(csv), "--set", "support=1"], capture_output=True,
                          text=True, timeout=60)
     assert bad.returncode == 2 and "parapet" in bad.stderr
+
+
+def test_no_event_loop_under_a_violently_oscillating_stiff_spring():
+    """A start with the K_d = 1e12 spring stretched (q1 = q2): the top oscillates at ~1e5 rad/s
+    through the hinges' breakpoints. The engine used to find the breakpoint it had just applied
+    again at the same instant (its next span rebuilt the state through P Pi, flipping an indicator
+    of 1e-18): a Zeno stop. Now the run goes through with every event at its own instant."""
+    r = rw_engine.run(np.array([0.0, 1.0]), np.zeros(2), t_end=1.0, x0=[0.005, 0.005, 0.0, 0.0], support=3,
+                      hingeLaw=4, er=1.0, Kd=1e12, max_events_per_instant=1)
+    assert r.t_reached == 1.0 and r.events > 1000
