@@ -68,7 +68,17 @@ typedef struct {
     void (*nominals)(double x[]);
     /* one event-mode update at `time` */
     void (*event_update)(void *M, double time, const fmu_logger *log, fmu_event_result *r);
+
+    /* Optional (NULL, or FMU_NOT_EXACT returned: the CVODE step of cs_cvode.c). A Co-Simulation
+     * step from t to t + h done exactly by the model over inputs linear in time: their values are
+     * the ones set in the model, slope[i] the derivative the master gave for slope_vr[i] (0 if
+     * none). Returns 0 (t + h reached), 1 (the model ended the run at *t_reached), -1 (msg says
+     * why), or FMU_NOT_EXACT when these parameters need the general solver. */
+    int (*exact_step)(void *M, double t, double h, const unsigned *slope_vr, const double *slope, size_t n_in,
+                      const fmu_logger *log, double *t_reached, char *msg, size_t n);
 } fmu_model;
+
+#define FMU_NOT_EXACT 2
 
 extern const fmu_model FMU_MODEL;
 

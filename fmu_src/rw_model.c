@@ -8,29 +8,12 @@
 #include "fmu_model.h"
 #include "model_variables.h"
 #include "rw_physics.h"
+#include "rw_model_data.h"
 
 /* compile-time check: model_variables.h and rw_physics.h agree on the sizes */
 typedef char rw_check_nx[(RW_NUMBER_OF_STATES == RW_NX) ? 1 : -1];
 typedef char rw_check_nz[(RW_NUMBER_OF_EVENT_INDICATORS == RW_NZ) ? 1 : -1];
 
-/* time between the collapse event (where `collapsed` becomes true and is recorded) and the
- * time event that requests terminateSimulation */
-#define RW_TERMINATE_DELAY 1e-6
-
-typedef struct {
-    rw_params P;
-    rw_derived D;
-    rw_mode mode;
-    rw_input in;
-    double x[RW_NX];
-    int impacts;
-    int collapsed;
-    double terminate_time;
-    double dissipated;
-    /* for messages from the physics: the logger and the time of the current event */
-    const fmu_logger *log;
-    double time;
-} rw_data;
 
 #define FMU_Real FMU_REAL
 #define FMU_Integer FMU_INTEGER
@@ -264,4 +247,5 @@ const fmu_model FMU_MODEL = {
     VARS, sizeof VARS / sizeof VARS[0], sizeof(rw_data),
     reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
     get_states, set_states, derivatives, event_indicators, nominals, event_update,
+    rw_exact_step, /* Co-Simulation through the exact engine (cs_exact.c) */
 };

@@ -371,3 +371,23 @@ int rw_condition(const rw_params *p, const rw_mode *m)
     if (m->side_b > 0) return m->side_m < 0 ? 1 : 3;
     return m->side_m > 0 ? 2 : 4;
 }
+
+/* ---- for the exact engine (rw_engine.c) ------------------------------------------------------
+ * Doherty's 1DOF force as an affine function F = F0 + F1*D on the region the motion goes into:
+ * on a breakpoint (to rounding) the direction dD decides, as the 2DOF laws' past() does. F is
+ * continuous at the breakpoints, so F0 = F(D) - F1*D is the same from both sides. */
+void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_mode *m, double D, double dD,
+                          double *F0, double *F1)
+{
+    const double a = fabs(D), out = sgn(D != 0.0 ? D : dD) * dD; /* > 0: moving away from 0 */
+    int region; /* 0 inner, 1 plateau, 2 beyond Delta_2 */
+    if (law(p)->set_valued) {
+        *F1 = d->Fr / d->Du;
+    } else {
+        if (fabs(a - d->D1) <= 1e-12 * d->D1) region = out > 0.0 ? 1 : 0;
+        else if (fabs(a - d->D2) <= 1e-12 * d->D2) region = out > 0.0 ? 2 : 1;
+        else region = a < d->D1 ? 0 : (a < d->D2 ? 1 : 2);
+        *F1 = region == 0 ? -d->Fi / d->D1 : (region == 1 ? 0.0 : d->Fr / d->Du);
+    }
+    *F0 = rw_force_1dof(p, d, m, D) - *F1 * D;
+}

@@ -102,6 +102,9 @@ int rw_is_rigid(const rw_params *p);
 void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2]);
 /* Trilinear / rigid resisting force F(D) of the 1DOF (Doherty), rigid uses side for sign(D). */
 double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, double D);
+/* For the exact engine: the same force as F0 + F1*D on the region the motion (dD) goes into. */
+void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_mode *m, double D, double dD,
+                          double *F0, double *F1);
 void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                     const double x[RW_NX], double dx[RW_NX]);
 /* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */

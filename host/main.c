@@ -27,7 +27,8 @@ static const char *usage =
     "usage: fmi2sim MODEL.fmu|FOLDER [options]\n"
     "Simulates an FMI 2.0 Model-Exchange FMU with SUNDIALS CVODE and writes a CSV of its outputs.\n"
     "\n"
-    "  --solver bdf|adams       CVODE method (default bdf)\n"
+    "  --solver bdf|adams|erk   CVODE BDF or Adams, or ARKODE's explicit Runge-Kutta (ERKStep)\n"
+    "                           (default bdf)\n"
     "  --rtol R                 relative tolerance in [1e-12, 0.01] (default 1e-8: free rocking\n"
     "                           then loses < 0.2 % of its energy per 100 s; 2.6 % at 1e-6)\n"
     "  --atol A                 absolute tolerance in [1e-16, 0.01] x the nominal of every state\n"
@@ -278,9 +279,10 @@ int main(int argc, char **argv)
         else if (!strcmp(a, "--version")) { printf("fmi2sim " FMI2SIM_VERSION "\n"); status = 0; goto out; }
         else if (!strcmp(a, "--solver")) {
             NEED_VALUE();
-            if (!strcmp(val, "bdf")) opt.adams = 0;
-            else if (!strcmp(val, "adams")) opt.adams = 1;
-            else { status = die("--solver: '%s' is not bdf or adams", val); goto out; }
+            if (!strcmp(val, "bdf")) opt.adams = opt.erk = 0;
+            else if (!strcmp(val, "adams")) opt.adams = 1, opt.erk = 0;
+            else if (!strcmp(val, "erk")) opt.erk = 1, opt.adams = 0;
+            else { status = die("--solver: '%s' is not bdf, adams or erk", val); goto out; }
         }
         else if (!strcmp(a, "--rtol")) { NUMBER(&opt.rtol); if (in_range(a, opt.rtol, RTOL_MIN, RTOL_MAX)) { status = 2; goto out; } }
         else if (!strcmp(a, "--atol")) { NUMBER(&opt.atol); if (opt.atol <= 0) { status = die("--atol must be > 0"); goto out; } }

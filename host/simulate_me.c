@@ -10,9 +10,14 @@
  * and output rows on the regular grid are interpolated (CVodeGetDky) inside steps. After an event
  * CVODE is re-initialised when the FMU says states or nominals changed, and after every state
  * event: there CVODE has already stepped past the root with the pre-event right-hand side, so its
- * history is stale even when no state jumped. */
+ * history is stale even when no state jumped.
+ *
+ * --solver erk runs ARKODE's ERKStep (explicit Runge-Kutta, its default 4th/3rd-order pair) in
+ * the same loop: one step at a time, the same stop times, roots, dense output and re-initialisation
+ * (the integrator layer below is the only place that knows which one runs). */
 #include "simulate_me.h"
 
+#include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
 #include <math.h>
 #include <nvector/nvector_serial.h>
@@ -270,7 +275,15 @@ static int event_iteration(sim *s, fmi2EventInfo *info, int *values_changed, int
 #define ATOL_MIN 1e-16
 #define ATOL_MAX 1e-2
 
-static int set_tolerances(sim *s, void *mem, N_Vector abstol)
+/* ---- the integrator: CVODE (BDF or Adams) or ARKODE ERKStep, behind one small interface ---- */
+typedef struct {
+    int erk;
+    void *mem;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+} integrator;
+
+static int set_tolerances(sim *s, const integrator *I, N_Vector abstol)
 {
     double *a = N_VGetArrayPointer(abstol);
     FMI(s, s->fmu->getNominalsOfContinuousStates(s->c, a, s->nx), "fmi2GetNominalsOfContinuousStates");
@@ -283,7 +296,8 @@ static int set_tolerances(sim *s, void *mem, N_Vector abstol)
                         ATOL_MIN * nominal, ATOL_MAX * nominal);
         a[i] = atol;
     }
-    CVodeSVtolerances(mem, s->opt->rtol, abstol);
+    if (I->erk) ERKStepSVtolerances(I->mem, s->opt->rtol, abstol);
+    else CVodeSVtolerances(I->mem, s->opt->rtol, abstol);
     return 0;
 }
 
@@ -305,6 +319,100 @@ static int check_counts(sim *s)
         return fail(s, "the binary refuses %zu event indicators, the model description's "
                     "numberOfEventIndicators: they do not match (see the FMU's log above)", s->nz);
     return 0;
+}
+
+static int integrator_create(sim *s, integrator *I, double t0, N_Vector y, N_Vector abstol, SUNContext ctx)
+{
+    const sim_options *o = s->opt;
+    I->erk = o->erk;
+    if (I->erk) {
+        I->mem = ERKStepCreate(rhs, t0, y, ctx);
+        if (!I->mem) return fail(s, "ERKStepCreate failed");
+        ERKStepSetErrHandlerFn(I->mem, cvode_error_handler, s);
+        ERKStepSetUserData(I->mem, s);
+        if (set_tolerances(s, I, abstol) != 0) return -1;
+        if (o->max_step > 0) ERKStepSetMaxStep(I->mem, o->max_step);
+        if (s->nz) ERKStepRootInit(I->mem, (int)s->nz, roots);
+        ERKStepSetNoInactiveRootWarn(I->mem);
+        return 0;
+    }
+    I->mem = CVodeCreate(o->adams ? CV_ADAMS : CV_BDF, ctx);
+    if (!I->mem) return fail(s, "CVodeCreate failed");
+    CVodeSetErrHandlerFn(I->mem, cvode_error_handler, s);
+    if (CVodeInit(I->mem, rhs, t0, y) != CV_SUCCESS) return fail(s, "CVodeInit: %s", s->cvode_msg);
+    CVodeSetUserData(I->mem, s);
+    if (set_tolerances(s, I, abstol) != 0) return -1;
+    I->A = SUNDenseMatrix((sunindextype)s->nx, (sunindextype)s->nx, ctx);
+    I->LS = SUNLinSol_Dense(y, I->A, ctx);
+    CVodeSetLinearSolver(I->mem, I->LS, I->A);
+    if (o->max_step > 0) CVodeSetMaxStep(I->mem, o->max_step);
+    if (s->nz) CVodeRootInit(I->mem, (int)s->nz, roots);
+    CVodeSetNoInactiveRootWarn(I->mem);
+    return 0;
+}
+
+/* One step toward t_stop (never past it). Returns <0 on failure (message set), 1 at a root, else 0. */
+static int integrator_step(sim *s, const integrator *I, double t_stop, N_Vector y, double *tret)
+{
+    int flag;
+    if (I->erk) {
+        ERKStepSetStopTime(I->mem, t_stop);
+        flag = ERKStepEvolve(I->mem, t_stop, y, tret, ARK_ONE_STEP);
+        if (flag < 0) {
+            char *name = ERKStepGetReturnFlagName(flag); /* malloc'ed, like CVODE's */
+            fail(s, "ARKODE ERKStep failed at t = %.10g: %s (%s)", *tret, name ? name : "?", s->cvode_msg);
+            free(name);
+            return -1;
+        }
+        return flag == ARK_ROOT_RETURN;
+    }
+    CVodeSetStopTime(I->mem, t_stop);
+    flag = CVode(I->mem, t_stop, y, tret, CV_ONE_STEP);
+    if (flag < 0) {
+        cvode_failed(s, flag, *tret);
+        return -1;
+    }
+    return flag == CV_ROOT_RETURN;
+}
+
+static void integrator_dky(const integrator *I, double t, N_Vector out)
+{
+    if (I->erk) ERKStepGetDky(I->mem, t, 0, out);
+    else CVodeGetDky(I->mem, t, 0, out);
+}
+
+/* The counters restart at every re-initialisation: add them up before each one and at the end. */
+static void add_counters(const integrator *I, sim_stats *st)
+{
+    long steps = 0, rhs_evals = 0, root_evals = 0;
+    if (I->erk) {
+        ERKStepGetNumSteps(I->mem, &steps);
+        ERKStepGetNumRhsEvals(I->mem, &rhs_evals);
+        ERKStepGetNumGEvals(I->mem, &root_evals);
+    } else {
+        CVodeGetNumSteps(I->mem, &steps);
+        CVodeGetNumRhsEvals(I->mem, &rhs_evals);
+        CVodeGetNumGEvals(I->mem, &root_evals);
+    }
+    st->steps += steps;
+    st->rhs_evals += rhs_evals;
+    st->root_evals += root_evals;
+}
+
+static void integrator_reinit(const integrator *I, double t, N_Vector y)
+{
+    if (I->erk) ERKStepReInit(I->mem, rhs, t, y);
+    else CVodeReInit(I->mem, t, y);
+}
+
+static void integrator_free(integrator *I)
+{
+    if (I->mem) {
+        if (I->erk) ERKStepFree(&I->mem);
+        else CVodeFree(&I->mem);
+    }
+    if (I->LS) SUNLinSolFree(I->LS);
+    if (I->A) SUNMatDestroy(I->A);
 }
 
 static int setup_io(sim *s)
@@ -348,18 +456,6 @@ static int setup_io(sim *s)
     return 0;
 }
 
-/* CVODE's counters restart at every CVodeReInit: add them up before each one and at the end. */
-static void add_counters(void *mem, sim_stats *st)
-{
-    long steps = 0, rhs_evals = 0, root_evals = 0;
-    CVodeGetNumSteps(mem, &steps);
-    CVodeGetNumRhsEvals(mem, &rhs_evals);
-    CVodeGetNumGEvals(mem, &root_evals);
-    st->steps += steps;
-    st->rhs_evals += rhs_evals;
-    st->root_evals += root_evals;
-}
-
 static int run(sim *s, sim_stats *st, SUNContext ctx)
 {
     const sim_options *o = s->opt;
@@ -369,13 +465,12 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     fmi2EventInfo info;
     int values_changed, nominals_changed;
     N_Vector y = NULL, abstol = NULL, ytmp = NULL;
-    SUNMatrix A = NULL;
-    SUNLinearSolver LS = NULL;
-    void *mem = NULL;
+    integrator I;
     double t = t0, next_event = INFINITY;
     long k_out = 1;
     int rc = -1;
 
+    memset(&I, 0, sizeof I);
     s->c = s->fmu->instantiate(s->md->model_identifier, fmi2ModelExchange, s->md->guid, o->resource_uri,
                                &cb, fmi2False, o->logging ? fmi2True : fmi2False);
     if (!s->c) return fail(s, "fmi2Instantiate returned NULL: the binary refused the FMU "
@@ -396,17 +491,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     abstol = N_VClone(y);
     if (s->nx) {
         FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
-        mem = CVodeCreate(o->adams ? CV_ADAMS : CV_BDF, ctx);
-        CVodeSetErrHandlerFn(mem, cvode_error_handler, s);
-        if (CVodeInit(mem, rhs, t0, y) != CV_SUCCESS) { fail(s, "CVodeInit: %s", s->cvode_msg); goto done; }
-        CVodeSetUserData(mem, s);
-        if (set_tolerances(s, mem, abstol) != 0) goto done;
-        A = SUNDenseMatrix((sunindextype)s->nx, (sunindextype)s->nx, ctx);
-        LS = SUNLinSol_Dense(y, A, ctx);
-        CVodeSetLinearSolver(mem, LS, A);
-        if (o->max_step > 0) CVodeSetMaxStep(mem, o->max_step);
-        if (s->nz) CVodeRootInit(mem, (int)s->nz, roots);
-        CVodeSetNoInactiveRootWarn(mem);
+        if (integrator_create(s, &I, t0, y, abstol, ctx) != 0) goto done;
     }
     if (write_row(s, t0) != 0) goto done;
 
@@ -416,18 +501,15 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
         int state_event = 0, time_event, step_event = 0;
         fmi2Boolean enter_event = fmi2False, terminate = fmi2False;
         if (s->nx) {
-            int flag;
-            CVodeSetStopTime(mem, t_stop);
-            flag = CVode(mem, t_stop, y, &tret, CV_ONE_STEP);
-            if (s->failed) goto done;
-            if (flag < 0) { cvode_failed(s, flag, tret); goto done; }
-            state_event = flag == CV_ROOT_RETURN;
+            const int flag = integrator_step(s, &I, t_stop, y, &tret);
+            if (s->failed || flag < 0) goto done;
+            state_event = flag == 1;
         } else {
             tret = fmin(t_stop, t0 + (double)k_out * dt);
         }
         /* regular output rows strictly inside this step, from CVODE's interpolant */
         for (double to = t0 + (double)k_out * dt; to < tret - eps && to <= tend + eps; to = t0 + (double)++k_out * dt) {
-            if (s->nx) CVodeGetDky(mem, to, 0, ytmp);
+            if (s->nx) integrator_dky(&I, to, ytmp);
             if (set_point(s, to, N_VGetArrayPointer(ytmp)) != 0 || write_row(s, to) != 0) goto done;
         }
         if (set_point(s, tret, N_VGetArrayPointer(y)) != 0 || track_outputs(s) != 0) goto done;
@@ -458,21 +540,17 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
         if (s->nx) FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
         if (write_row(s, t) != 0) goto done; /* the row after the event */
         if (s->nx && (values_changed || nominals_changed || state_event)) {
-            if (nominals_changed && set_tolerances(s, mem, abstol) != 0) goto done;
-            add_counters(mem, st);
-            CVodeReInit(mem, t, y);
+            if (nominals_changed && set_tolerances(s, &I, abstol) != 0) goto done;
+            add_counters(&I, st);
+            integrator_reinit(&I, t, y);
             st->reinits++;
         }
     }
     st->end_time = t;
     rc = 0;
 done:
-    if (mem) {
-        add_counters(mem, st);
-        CVodeFree(&mem);
-    }
-    if (LS) SUNLinSolFree(LS);
-    if (A) SUNMatDestroy(A);
+    if (I.mem) add_counters(&I, st);
+    integrator_free(&I);
     if (y) N_VDestroy(y);
     if (ytmp) N_VDestroy(ytmp);
     if (abstol) N_VDestroy(abstol);

@@ -22,7 +22,8 @@ typedef struct {
 } sim_summary;
 
 typedef struct {
-    int adams;              /* 0: BDF, 1: Adams-Moulton */
+    int adams;              /* 0: BDF, 1: Adams-Moulton (CVODE) */
+    int erk;                /* 1: ARKODE ERKStep (explicit Runge-Kutta) instead of CVODE */
     double rtol, atol;      /* atol <= 0: rtol * nominal of each state */
     double max_step;        /* <= 0: none */
     double start_time, stop_time, output_interval;

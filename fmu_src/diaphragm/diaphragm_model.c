@@ -152,4 +152,5 @@ const fmu_model FMU_MODEL = {
     VARS, sizeof VARS / sizeof VARS[0], sizeof(dg_data),
     reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
     get_states, set_states, derivatives, event_indicators, nominals, event_update,
+    NULL, /* no exact Co-Simulation step: CVODE */
 };

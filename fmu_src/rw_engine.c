@@ -1,0 +1,1218 @@
+/* RockingWall exact event-driven engine: see rw_engine.h.
+ *
+ * Layout: Stumpff functions (the exact scalar solution) -> regions (modal decomposition of one
+ * linear region, cached) -> spans (a region with a linear input from a start state) -> event
+ * search on a span (bracketing with Hermite extremum checks, safeguarded regula falsi) -> the
+ * stepper over one input segment -> the batch run over a record.
+ */
+#include "rw_engine.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RW_MAX_EVENT_ROUNDS 100 /* event-iteration rounds at one event, as cs_cvode.c allows 1000 */
+#define RW_PHASE_PER_SUBSTEP 1.0 /* rad of the fastest significant mode per bracketing substep */
+#define RW_MAX_SUBSTEPS 2000000L
+#define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
+
+/* ---- Stumpff functions ----------------------------------------------------------------------
+ * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
+ * c3 = (1-c1)/z (cosh/sinh for z < 0, polynomial at z = 0). With z = lam s^2 the solution of
+ * eta'' + lam eta = f0 + f1 s is eta0 c0 + v0 s c1 + f0 s^2 c2 + f1 s^3 c3 for every sign of lam,
+ * with no cancellation near lam = 0 (series there). */
+/* 1/n! for the series of the Stumpff functions */
+static const double INV_FACT[24] = {
+    1.0, 1.0, 1.0 / 2, 1.0 / 6, 1.0 / 24, 1.0 / 120, 1.0 / 720, 1.0 / 5040, 1.0 / 40320, 1.0 / 362880,
+    1.0 / 3628800, 1.0 / 39916800, 1.0 / 479001600, 1.0 / 6227020800.0, 1.0 / 87178291200.0,
+    1.0 / 1307674368000.0, 1.0 / 20922789888000.0, 1.0 / 355687428096000.0, 1.0 / 6402373705728000.0,
+    1.0 / 121645100408832000.0, 1.0 / 2432902008176640000.0, 1.0 / 51090942171709440000.0,
+    1.0 / 1124000727777607680000.0, 1.0 / 25852016738884976640000.0};
+
+static void stumpff(double z, double c[4])
+{
+    if (z == 0.0) {
+        c[0] = c[1] = 1.0;
+        c[2] = 0.5;
+        c[3] = 1.0 / 6.0;
+        return;
+    }
+    if (fabs(z) < 1.0) {
+        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19 */
+        int k, j;
+        for (k = 0; k < 4; k++) {
+            double sum = INV_FACT[2 * 9 + k];
+            for (j = 8; j >= 0; j--) sum = INV_FACT[2 * j + k] - z * sum;
+            c[k] = sum;
+        }
+        return;
+    }
+    if (z > 0.0) {
+        const double r = sqrt(z);
+        c[0] = cos(r);
+        c[1] = sin(r) / r;
+    } else {
+        const double r = sqrt(-z);
+        c[0] = cosh(r);
+        c[1] = sinh(r) / r;
+    }
+    c[2] = (1.0 - c[0]) / z;
+    c[3] = (1.0 - c[1]) / z;
+}
+
+static void identity_modes(rw_modes2 *E, double p10, double pi10)
+{
+    memset(E, 0, sizeof *E);
+    E->P[0][0] = E->P[1][1] = E->Pi[0][0] = E->Pi[1][1] = 1.0;
+    E->P[1][0] = p10;
+    E->Pi[1][0] = pi10;
+}
+
+/* Symmetric generalised eigenproblem (Ks, M): Ks = k e e^T + G with e = (1, 1) and k = Kd h^2/4
+ * (Eq. 3.3), so that the slow eigenvalue under a stiff spring (k up to 1e12) comes from the
+ * determinant written without cancellation. M = L L^T; S = L^-1 Ks L^-T = k w w^T + Gs. */
+static void modes_symmetric(const rw_derived *d, double k, const double G[2][2], rw_modes2 *E)
+{
+    const double l00 = sqrt(d->M[0][0]), l10 = d->M[1][0] / l00, l11 = sqrt(d->M[1][1] - l10 * l10);
+    const double i00 = 1.0 / l00, i10 = -l10 / (l00 * l11), i11 = 1.0 / l11; /* L^-1 */
+    const double w0 = i00, w1 = i10 + i11;
+    const double gs00 = i00 * i00 * G[0][0];
+    const double gs01 = i00 * (i10 * G[0][0] + i11 * G[0][1]);
+    const double gs11 = i10 * i10 * G[0][0] + 2.0 * i10 * i11 * G[0][1] + i11 * i11 * G[1][1];
+    const double a = k * w0 * w0 + gs00, b = k * w0 * w1 + gs01, c = k * w1 * w1 + gs11;
+    const double det = k * (w0 * w0 * gs11 - 2.0 * w0 * w1 * gs01 + w1 * w1 * gs00) + (gs00 * gs11 - gs01 * gs01);
+    const double half = 0.5 * (a + c), disc = sqrt(0.25 * (a - c) * (a - c) + b * b);
+    const double big = half + (half >= 0.0 ? disc : -disc), small = big != 0.0 ? det / big : 0.0;
+    const double phi = 0.5 * atan2(2.0 * b, a - c), cs = cos(phi), sn = sin(phi);
+    double V[2][2];
+    int i, j;
+    /* column 0 of V has the eigenvalue half + disc, column 1 half - disc */
+    V[0][0] = cs; V[1][0] = sn; V[0][1] = -sn; V[1][1] = cs;
+    E->lam[0] = half >= 0.0 ? big : small;
+    E->lam[1] = half >= 0.0 ? small : big;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            /* P = L^-T V, Pi = V^T L^T */
+            E->P[i][j] = (i == 0 ? i00 * V[0][j] + i10 * V[1][j] : i11 * V[1][j]);
+            E->Pi[i][j] = (j == 0 ? V[0][i] * l00 : V[0][i] * l10 + V[1][i] * l11);
+        }
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->P[j][i]; /* P^T M P = I: modal force = P^T F */
+}
+
+/* General (nonsymmetric) Ks: A = M^-1 Ks, real distinct eigenvalues required. */
+static int modes_general(const rw_derived *d, const double Ks[2][2], rw_modes2 *E)
+{
+    const double dm = d->M[0][0] * d->M[1][1] - d->M[0][1] * d->M[1][0];
+    const double Mi[2][2] = {{d->M[1][1] / dm, -d->M[0][1] / dm}, {-d->M[1][0] / dm, d->M[0][0] / dm}};
+    double A[2][2], tr, det, disc, dp;
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) A[i][j] = Mi[i][0] * Ks[0][j] + Mi[i][1] * Ks[1][j];
+    tr = A[0][0] + A[1][1];
+    det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+    disc = 0.25 * tr * tr - det;
+    if (!(disc > 1e-14 * (0.25 * tr * tr + fabs(det)))) return -1; /* complex or repeated */
+    disc = sqrt(disc);
+    E->lam[0] = 0.5 * tr + disc;
+    E->lam[1] = 0.5 * tr - disc;
+    for (j = 0; j < 2; j++) { /* eigenvector: the larger of the two null-vector candidates */
+        const double u0 = A[0][1], u1 = E->lam[j] - A[0][0], w0 = E->lam[j] - A[1][1], w1 = A[1][0];
+        const int first = u0 * u0 + u1 * u1 >= w0 * w0 + w1 * w1;
+        E->P[0][j] = first ? u0 : w0;
+        E->P[1][j] = first ? u1 : w1;
+    }
+    dp = E->P[0][0] * E->P[1][1] - E->P[0][1] * E->P[1][0];
+    E->Pi[0][0] = E->P[1][1] / dp;
+    E->Pi[0][1] = -E->P[0][1] / dp;
+    E->Pi[1][0] = -E->P[1][0] / dp;
+    E->Pi[1][1] = E->P[0][0] / dp;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->Pi[i][0] * Mi[0][j] + E->Pi[i][1] * Mi[1][j];
+    return 0;
+}
+
+static void modal_force(const rw_modes2 *E, const double F[2], double out[2])
+{
+    out[0] = E->fm[0][0] * F[0] + E->fm[0][1] * F[1];
+    out[1] = E->fm[1][0] * F[0] + E->fm[1][1] * F[1];
+}
+
+/* 2DOF with open hinges: the region's stiffness K - J (Eq. 3.1, 3.3). */
+static int modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
+{
+    const rw_derived *d = &e->D;
+    const double k = e->P.Kd * e->P.h * e->P.h / 4.0;
+    double G[2][2], Ks[2][2], F[2];
+    int i, j;
+    memset(E, 0, sizeof *E);
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            G[i][j] = (d->K[i][j] - k) - J[i][j]; /* exact for a stiff spring (Sterbenz) */
+            Ks[i][j] = d->K[i][j] - J[i][j];
+        }
+    if (J[0][1] == J[1][0]) modes_symmetric(d, k, G, E);
+    else if (modes_general(d, Ks, E) != 0) return -1;
+    modal_force(E, d->pa, E->ga);
+    F[0] = F[1] = d->fu;
+    modal_force(E, F, E->gu);
+    return 0;
+}
+
+/* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
+static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
+{
+    int i;
+    for (i = 0; i < RW_CACHE_SIZE; i++) {
+        rw_cache_entry *c = &e->cache[i];
+        if (c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0) return c;
+    }
+    return NULL;
+}
+
+static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
+{
+    rw_cache_entry *c = &e->cache[e->cache_next];
+    e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
+    memset(c, 0, sizeof *c);
+    c->used = 1;
+    c->closed_b = cb;
+    c->closed_m = cm;
+    memcpy(c->key, key, sizeof c->key);
+    c->E = *E;
+    return c;
+}
+
+/* Doherty's 1DOF (support 2): mode 0 = q1 with (W/3g) D'' = -(W/2g) ag + F0 + F1 D, D = q1 h/2;
+ * mode 1 = q1 + q2 = 0 (slaved, nothing acts on it). */
+static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                   double g0[2])
+{
+    const rw_params *p = &e->P;
+    double key[4] = {0, 0, 0, 0}, F0 = 0.0, F1 = 0.0;
+    rw_cache_entry *c;
+    const int closed = e->rigid && m->closed_b;
+    g0[0] = g0[1] = 0.0;
+    if (!closed) {
+        rw_force_1dof_affine(p, &e->D, m, x[0] * p->h / 2.0, dq_sel[0] * p->h / 2.0, &F0, &F1);
+        key[0] = F1;
+        g0[0] = 6.0 * p->g * F0 / (p->W * p->h);
+    }
+    c = cache_find(e, closed, 0, key);
+    if (!c) {
+        rw_modes2 E;
+        identity_modes(&E, -1.0, 1.0);
+        if (!closed) {
+            E.lam[0] = -3.0 * p->g / p->W * F1;
+            E.ga[0] = -3.0 / p->h;
+        }
+        c = cache_add(e, closed, 0, key, &E);
+    }
+    return c;
+}
+
+/* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
+ * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
+static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2])
+{
+    const rw_derived *d = &e->D;
+    const double key[4] = {0, 0, 0, 0};
+    rw_cache_entry *c = cache_find(e, m->closed_b, m->closed_m, key);
+    const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
+    g0[0] = g0[1] = 0.0;
+    if (m->closed_b && !m->closed_m) g0[1] = -d->cap_m * m->side_m / d->M[1][1];
+    if (!m->closed_b && m->closed_m) g0[0] = -d->cap_b * m->side_b / mt;
+    if (!c) {
+        rw_modes2 E;
+        if (m->closed_b && m->closed_m) {
+            identity_modes(&E, 0.0, 0.0);
+        } else if (m->closed_b) {
+            identity_modes(&E, 0.0, 0.0);
+            E.lam[1] = d->K[1][1] / d->M[1][1];
+            E.ga[1] = d->pa[1] / d->M[1][1];
+            E.gu[1] = d->fu / d->M[1][1];
+        } else {
+            const double kt = d->K[0][0] + 2.0 * d->K[0][1] + d->K[1][1];
+            identity_modes(&E, 1.0, -1.0);
+            E.lam[0] = kt / mt;
+            E.ga[0] = (d->pa[0] + d->pa[1]) / mt;
+            E.gu[0] = 2.0 * d->fu / mt;
+        }
+        c = cache_add(e, m->closed_b, m->closed_m, key, &E);
+    }
+    return c;
+}
+
+/* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
+ * cannot decompose it (msg filled). */
+static rw_cache_entry *region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                 double g0[2])
+{
+    double Q[2], J[2][2], c[2], key[4];
+    rw_cache_entry *ce;
+    if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
+    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
+    e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
+    c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
+    c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+    key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
+    ce = cache_find(e, 0, 0, key);
+    if (!ce) {
+        rw_modes2 E;
+        if (modes_open(e, J, &E) != 0) {
+            snprintf(e->msg, sizeof e->msg, "a region of hinge law %s has complex or repeated modes: not supported",
+                     e->law->name);
+            return NULL;
+        }
+        ce = cache_add(e, 0, 0, key, &E);
+    }
+    modal_force(&ce->E, c, g0);
+    return ce;
+}
+
+/* ---- spans: a region with a linear input, from a start state ------------------------------- */
+typedef struct {
+    const rw_cache_entry *R;
+    double t0;
+    double eta[2], v[2]; /* modal state at t0 */
+    double f0[2], f1[2]; /* modal forcing at t0 and its rate */
+    double ag0, ag1, u0, u1; /* the input at t0 and its rate */
+    double x0[RW_NX];        /* the start state itself: the motion is x0 + P (eta(s) - eta(0)) */
+} rw_span;
+
+static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2], double t0, const double x[RW_NX],
+                       const rw_linear_input *in, double t_in)
+{
+    const rw_modes2 *E = &R->E;
+    int i;
+    sp->R = R;
+    sp->t0 = t0;
+    sp->ag0 = in->ag + in->ag_slope * (t0 - t_in);
+    sp->u0 = in->u_top + in->u_slope * (t0 - t_in);
+    sp->ag1 = in->ag_slope;
+    sp->u1 = in->u_slope;
+    memcpy(sp->x0, x, sizeof sp->x0);
+    for (i = 0; i < 2; i++) {
+        sp->eta[i] = E->Pi[i][0] * x[0] + E->Pi[i][1] * x[1];
+        sp->v[i] = E->Pi[i][0] * x[2] + E->Pi[i][1] * x[3];
+        sp->f0[i] = g0[i] + E->ga[i] * sp->ag0 + E->gu[i] * sp->u0;
+        sp->f1[i] = E->ga[i] * sp->ag1 + E->gu[i] * sp->u1;
+    }
+}
+
+/* Modal motion at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed), as
+ * changes from the start, deta = eta(s) - eta(0), dv = v(s) - v(0) (with c0 = 1 - z c2, free of
+ * cancellation), and the modal accelerations a. Written as changes, the state at s = 0 is the start
+ * state itself, not its image through P Pi: an indicator that set an event's state keeps its sign
+ * where the next span begins. fast[i] (fast may be NULL) leaves out the free oscillation of mode i:
+ * its exact particular solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
+static void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
+                       double dv[2], double a[2])
+{
+    int i;
+    for (i = 0; i < 2; i++) {
+        double c[4];
+        const double lam = sp->R->E.lam[i], eta0 = sp->eta[i], v0 = sp->v[i];
+        const double f0 = sp->f0[i], f1 = sp->f1[i];
+        if (fast && fast[i]) {
+            deta[i] = (f0 + f1 * s) / lam - eta0;
+            dv[i] = f1 / lam - v0;
+            a[i] = 0.0;
+            continue;
+        }
+        if (C) memcpy(c, C[i], sizeof c);
+        else stumpff(lam * s * s, c);
+        deta[i] = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
+        dv[i] = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
+        a[i] = -lam * (eta0 + deta[i]) + f0 + f1 * s;
+    }
+}
+
+static void to_physical(const rw_span *sp, const double deta[2], const double dv[2], double x[RW_NX])
+{
+    const rw_modes2 *E = &sp->R->E;
+    x[0] = sp->x0[0] + (E->P[0][0] * deta[0] + E->P[0][1] * deta[1]);
+    x[1] = sp->x0[1] + (E->P[1][0] * deta[0] + E->P[1][1] * deta[1]);
+    x[2] = sp->x0[2] + (E->P[0][0] * dv[0] + E->P[0][1] * dv[1]);
+    x[3] = sp->x0[3] + (E->P[1][0] * dv[0] + E->P[1][1] * dv[1]);
+}
+
+/* State x and its time derivative xd at t0 + s (span_eval_part: without the fast modes' free
+ * oscillation). */
+static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
+                           double xd[RW_NX])
+{
+    double deta[2], dv[2], a[2];
+    span_modal(sp, s, C, fast, deta, dv, a);
+    to_physical(sp, deta, dv, x);
+    if (xd) {
+        xd[0] = x[2];
+        xd[1] = x[3];
+        xd[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
+        xd[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
+    }
+}
+
+static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
+{
+    span_eval_part(sp, s, C, NULL, x, xd);
+}
+
+static rw_input span_input(const rw_span *sp, double s)
+{
+    rw_input in;
+    in.ag = sp->ag0 + sp->ag1 * s;
+    in.u_top = sp->u0 + sp->u1 * s;
+    return in;
+}
+
+/* The modes of a span, for bracketing: unstable modes always count; an oscillating mode counts
+ * when its free oscillation about the quasi-static solution is larger than 1e-12 of the toppling
+ * rotation (a stiff spring's mode driven quasi-statically is not), and it is `fast` when it turns
+ * more than 4 times faster than every other counted rate (including the wall's rocking rate, see
+ * substeps_for): its free oscillation is then bounded by its amplitude, amp_q, and handled as a
+ * band around the slow motion (rw_engine.c "fast modes") instead of setting the substeps. */
+typedef struct {
+    int fast[2], any_fast;
+    double slow_rate, fast_rate;
+    double amp_q[2]; /* bound of the fast modes' free oscillation in (q1, q2) */
+} rw_rates;
+
+static double mode_amplitude(const rw_span *sp, int i)
+{
+    const double lam = sp->R->E.lam[i];
+    return hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+}
+
+static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
+{
+    double w[2] = {0.0, 0.0};
+    int i;
+    memset(r, 0, sizeof *r);
+    for (i = 0; i < 2; i++) {
+        const double lam = sp->R->E.lam[i];
+        double col;
+        if (lam <= 0.0) { w[i] = sqrt(-lam); continue; }
+        col = fmax(fabs(sp->R->E.P[0][i]), fabs(sp->R->E.P[1][i]));
+        if (mode_amplitude(sp, i) * col > 1e-12 * e->D.q_topple) w[i] = sqrt(lam);
+    }
+    r->slow_rate = floor_rate;
+    for (i = 0; i < 2; i++) {
+        const double other = fmax(floor_rate, w[1 - i]);
+        if (sp->R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
+            const double amp = mode_amplitude(sp, i);
+            r->fast[i] = r->any_fast = 1;
+            r->fast_rate = fmax(r->fast_rate, w[i]);
+            r->amp_q[0] += amp * fabs(sp->R->E.P[0][i]);
+            r->amp_q[1] += amp * fabs(sp->R->E.P[1][i]);
+        } else {
+            r->slow_rate = fmax(r->slow_rate, w[i]);
+        }
+    }
+}
+
+/* ---- indicators along a span ---------------------------------------------------------------- */
+typedef struct {
+    double s;
+    double x[RW_NX];
+    double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
+} rw_point;
+
+static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
+                       rw_point *pt)
+{
+    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
+    const double dl = 1e-9; /* s: a difference along the exact motion (only signs are used) */
+    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
+    int i;
+    pt->s = s;
+    span_eval(sp, s, C, pt->x, xd);
+    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
+    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
+}
+
+static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+{
+    double x[RW_NX], z[RW_NZ];
+    rw_input in = span_input(sp, s);
+    span_eval(sp, s, NULL, x, NULL);
+    rw_event_indicators(&e->P, &e->D, m, &in, x, z);
+    return z[k];
+}
+
+/* rate of indicator k at s (for the extremum of a possible double crossing) */
+static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+{
+    rw_point pt;
+    eval_point(e, m, sp, s, NULL, &pt);
+    return pt.dz[k];
+}
+
+/* Safeguarded regula falsi (Illinois, a bisection every fourth step) for the first s in
+ * (lo, hi] where the boolean (value > 0) differs from its value at lo. Returns hi at convergence
+ * (to a few ulps of the absolute time), the first point known to be past the root. */
+typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s);
+
+static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double lo,
+                          double flo, double hi, double fhi, double rel_tol)
+{
+    const int blo = flo > 0.0;
+    const double tol_interval = rel_tol * (hi - lo);
+    int it, last = 0;
+    for (it = 0; it < 400; it++) {
+        const double tol = fmax(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
+        double s, fs;
+        if (hi - lo <= tol) break;
+        s = (it % 4 == 3 || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
+        if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+        if (!(s > lo && s < hi)) break; /* adjacent doubles */
+        fs = f(e, m, sp, k, s);
+        if ((fs > 0.0) != blo) {
+            hi = s;
+            fhi = fs;
+            if (last == -1) flo *= 0.5;
+            last = -1;
+        } else {
+            lo = s;
+            flo = fs;
+            if (last == 1) fhi *= 0.5;
+            last = 1;
+        }
+    }
+    return hi;
+}
+
+/* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
+ * margin larger than its error? The end values are exact; within a substep every significant mode
+ * turns by at most 1 rad, where the interpolation error is below 0.3 % of the swing, and the
+ * margin is 5 % of it. An interior extremum toward zero is what a dip needs. */
+static int hermite_keeps_sign(double za, double da, double zb, double db, double L)
+{
+    /* z(u) = h00 za + h10 L da + h01 zb + h11 L db, u in [0, 1]; z'(u) = A u^2 + B u + C */
+    const double ma = L * da, mb = L * db;
+    const double A = 6.0 * za + 3.0 * ma - 6.0 * zb + 3.0 * mb;
+    const double B = -6.0 * za - 4.0 * ma + 6.0 * zb - 2.0 * mb;
+    const double C = ma;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
+    const int sign = za + zb > 0.0;
+    double roots[2];
+    int n = 0, i;
+    if (fabs(A) > 1e-300) {
+        const double disc = B * B - 4.0 * A * C;
+        if (disc >= 0.0) {
+            const double r = sqrt(disc);
+            roots[n++] = (-B + r) / (2.0 * A);
+            roots[n++] = (-B - r) / (2.0 * A);
+        }
+    } else if (fabs(B) > 1e-300) {
+        roots[n++] = -C / B;
+    }
+    for (i = 0; i < n; i++) {
+        const double u = roots[i];
+        if (u > 0.0 && u < 1.0) {
+            const double u2 = u * u, u3 = u2 * u;
+            const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
+            if (sign ? z < margin : z > -margin) return 0;
+        }
+    }
+    return 1;
+}
+
+#define RW_DIP_DEPTH 3 /* a suspicious substep is split 4 ways, at most this many times */
+
+/* Does indicator k, on the same side of zero (state `was`) at both ends of [a, b], dip through
+ * zero in between? Only when it moves toward zero at an end and its Hermite interpolant does not
+ * clear zero; then the piece is split (a breakpoint indicator |w| - c has a kink at w = 0, so one
+ * piece can hold a dip and a turn), and at the finest level the extremum is located. On a dip,
+ * *lo, *hi bracket its first crossing. */
+static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, const rw_point *a,
+               const rw_point *b, int depth, double *lo, double *flo, double *hi, double *fhi)
+{
+    const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
+    const int leave = was ? b->dz[k] > 0.0 : b->dz[k] < 0.0;
+    rw_point p[2];
+    int i;
+    if (!approach && !leave) return 0;
+    if (hermite_keeps_sign(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s)) return 0;
+    if (depth == RW_DIP_DEPTH) {
+        double s_ext, z_ext;
+        if (!approach || !leave) return 0;
+        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9);
+        z_ext = indicator_at(e, m, sp, k, s_ext);
+        if ((z_ext > 0.0) == was) return 0;
+        *lo = a->s, *flo = a->z[k], *hi = s_ext, *fhi = z_ext;
+        return 1;
+    }
+    p[0] = *a;
+    for (i = 1; i <= 4; i++) {
+        rw_point *q = &p[i & 1];
+        const rw_point *prev = &p[(i - 1) & 1];
+        if (i == 4) *q = *b;
+        else eval_point(e, m, sp, a->s + 0.25 * i * (b->s - a->s), NULL, q);
+        if ((q->z[k] > 0.0) != was) {
+            *lo = prev->s, *flo = prev->z[k], *hi = q->s, *fhi = q->z[k];
+            return 1;
+        }
+        if (dip(e, m, sp, k, was, prev, q, depth + 1, lo, flo, hi, fhi)) return 1;
+    }
+    return 0;
+}
+
+/* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a dip
+ * through zero and back inside the substep. Returns 1 and *s_event, or 0. */
+static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
+                       double *s_event)
+{
+    int k, found = 0;
+    double best = b->s;
+    for (k = 0; k < RW_NZ; k++) {
+        const int was = e->b[k];
+        double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
+        if ((b->z[k] > 0.0) == was && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+        if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
+        if (found && lo >= best) continue;
+        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0);
+        if (!found || s < best) best = s;
+        found = 1;
+    }
+    *s_event = best;
+    return found;
+}
+
+/* ---- peaks and output grid along a span ----------------------------------------------------- */
+static double s_of(const rw_params *p, int which, const double x[RW_NX])
+{
+    return which == 0 ? rw_s1(p, x) : rw_s2(p, x);
+}
+
+static double rate_of_s(const rw_engine *e, const rw_mode *m, const rw_span *sp, int which, double s)
+{
+    double x[RW_NX], v[RW_NX] = {0, 0, 0, 0};
+    (void)m;
+    span_eval(sp, s, NULL, x, NULL);
+    v[0] = x[2];
+    v[1] = x[3];
+    return s_of(&e->P, which, v);
+}
+
+static void track_peak(rw_engine *e, int which, double value)
+{
+    double *peak = which == 0 ? &e->peak_s1 : &e->peak_s2;
+    if (fabs(value) > *peak) *peak = fabs(value);
+}
+
+/* peaks over [a, b] of the span: the ends and an interior turning point of s1, s2 */
+static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const double xa[RW_NX], double sa,
+                     const double xb[RW_NX], double sb)
+{
+    int w;
+    for (w = 0; w < 2; w++) {
+        double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
+        const double ra = s_of(&e->P, w, va), rb = s_of(&e->P, w, vb);
+        track_peak(e, w, s_of(&e->P, w, xb));
+        if ((ra > 0.0) != (rb > 0.0) && sb > sa) {
+            /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
+            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9);
+            double x[RW_NX];
+            span_eval(sp, s, NULL, x, NULL);
+            track_peak(e, w, s_of(&e->P, w, x));
+        }
+    }
+}
+
+static void record_output(rw_engine *e, const double x[RW_NX])
+{
+    size_t i = e->i_out;
+    if (e->x_out) memcpy(e->x_out + RW_NX * i, x, sizeof(double) * RW_NX);
+    if (e->s1_out) e->s1_out[i] = rw_s1(&e->P, x);
+    if (e->s2_out) e->s2_out[i] = rw_s2(&e->P, x);
+    e->i_out++;
+}
+
+/* grid times in (t0 + sa, t0 + sb] */
+static void outputs_on(rw_engine *e, const rw_span *sp, double sb)
+{
+    while (e->i_out < e->n_out && e->t_out[e->i_out] <= sp->t0 + sb) {
+        double x[RW_NX];
+        span_eval(sp, e->t_out[e->i_out] - sp->t0, NULL, x, NULL);
+        record_output(e, x);
+    }
+}
+
+/* ---- events ----------------------------------------------------------------------------------- */
+static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX])
+{
+    double z[RW_NZ];
+    int k;
+    rw_event_indicators(&e->P, &e->D, m, in, x, z);
+    for (k = 0; k < RW_NZ; k++) e->b[k] = z[k] > 0.0;
+}
+
+/* The model's event iteration at t (as the FMU's hosts run it), then its collapse test.
+ * Returns 0, 1 on collapse, or an error code + 1 (Zeno). */
+static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *in)
+{
+    rw_event_result r;
+    int rounds = 0;
+    e->events++;
+    if (t <= e->t_last_event + 1e-14 * fmax(1.0, fabs(t))) {
+        if (++e->same_instant > e->max_same_instant) {
+            snprintf(e->msg, sizeof e->msg, "more than %d events at t = %.17g (Zeno): stopped", e->max_same_instant, t);
+            return RW_ENGINE_ZENO + 1;
+        }
+    } else {
+        e->same_instant = 0;
+    }
+    e->t_last_event = t;
+    do {
+        const double energy = rw_energy(&e->P, &e->D, m, in, x);
+        rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
+        if (r.states_changed) e->dissipated += energy - rw_energy(&e->P, &e->D, m, in, x);
+        if (r.impacts && e->impact_t && (size_t)e->impacts < e->impact_cap) {
+            e->impact_t[e->impacts] = t;
+            e->impact_energy[e->impacts] = energy;
+        }
+        e->impacts += r.impacts;
+    } while ((r.modes_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
+    set_indicator_states(e, m, in, x);
+    e->reason = rw_collapse_reason(&e->P, &e->D, m, in, x);
+    if (e->reason != RW_STANDING) {
+        e->collapsed = 1;
+        e->t_collapse = t;
+        return 1;
+    }
+    return 0;
+}
+
+/* The direction that picks the region on a breakpoint: dq a moment later (the acceleration is
+ * continuous across a breakpoint, so this decides a grazing touch by its curvature). */
+static void selection_rate(const rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX],
+                           double dq_sel[2])
+{
+    double dx[RW_NX];
+    rw_derivatives(&e->P, &e->D, m, in, x, dx);
+    dq_sel[0] = x[2] + RW_SELECT_DT * dx[2];
+    dq_sel[1] = x[3] + RW_SELECT_DT * dx[3];
+}
+
+/* Stumpff coefficients of a full substep h, cached per region */
+static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
+{
+    int j, i;
+    for (j = 0; j < 2; j++)
+        if (c->h_valid[j] && c->h[j] == h) return (const double(*)[4])c->C[j];
+    j = c->h_next;
+    c->h_next ^= 1;
+    c->h[j] = h;
+    c->h_valid[j] = 1;
+    for (i = 0; i < 2; i++) stumpff(c->E.lam[i] * h * h, c->C[j][i]);
+    return (const double(*)[4])c->C[j];
+}
+
+/* ---- resolving a span ----------------------------------------------------------------------------- */
+/* Substeps: the counted rate turns by at most RW_PHASE_PER_SUBSTEP per substep, and none is
+ * longer than a quarter radian of the wall's own rocking rate p = sqrt(3g/4R) (Housner), which
+ * bounds the polynomial motion of zero-stiffness regions (a plateau, a closed hinge). A span
+ * longer than RW_MAX_SUBSTEPS substeps covers a part (*len shortened); the caller continues. */
+static double rocking_rate(const rw_engine *e)
+{
+    return sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25;
+}
+
+static int substeps_for(double rate, double *len)
+{
+    const double n = ceil(*len * rate / RW_PHASE_PER_SUBSTEP);
+    if (n <= RW_MAX_SUBSTEPS) return n < 1.0 ? 1 : (int)n;
+    *len *= RW_MAX_SUBSTEPS / n;
+    return (int)RW_MAX_SUBSTEPS;
+}
+
+/* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
+ * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
+ * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
+ * pieces of length len/n (NULL: computed). */
+static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+                   const rw_linear_input *in, double t_in, double len, int n, const double (*C)[4], double x[RW_NX],
+                   double *t)
+{
+    const double h = len / n, t_end = sp->t0 + len;
+    rw_point pa, pb;
+    int j;
+    eval_point(e, m, sp, 0.0, NULL, &pa);
+    for (j = 0; j < n; j++) {
+        double s_ev;
+        const double piece = j == n - 1 ? t_end - sp->t0 : h;
+        eval_point(e, m, sp, piece, piece == h ? C : NULL, &pb);
+        e->steps++;
+        if (first_event(e, m, sp, &pa, &pb, &s_ev)) {
+            rw_input ie = span_input(sp, s_ev);
+            int rc;
+            span_eval(sp, s_ev, NULL, x, NULL);
+            peaks_on(e, m, sp, pa.x, pa.s, x, s_ev);
+            outputs_on(e, sp, s_ev);
+            *t = sp->t0 + s_ev;
+            rc = apply_event(e, m, x, *t, &ie);
+            return rc ? rc : -1;
+        }
+        peaks_on(e, m, sp, pa.x, pa.s, pb.x, pb.s);
+        outputs_on(e, sp, pb.s);
+        memcpy(x, pb.x, sizeof pb.x);
+        if (j == n - 1) {
+            *t = t_end;
+        } else { /* the next piece starts here */
+            span_start(sp, R, g0, sp->t0 + h, pb.x, in, t_in);
+            *t = sp->t0;
+            pa = pb;
+            pa.s = 0.0;
+        }
+    }
+    return 0;
+}
+
+/* ---- fast modes: a band around the slow motion ---------------------------------------------------
+ * A stiff mode (a stiff spring: up to 1e5 rad/s) would set substeps of microseconds. Its free
+ * oscillation is a sinusoid of constant amplitude amp_q about its exact quasi-static solution, so
+ * over a substep of the slow modes the motion is the slow part (span_eval_part) within that band.
+ * A substep can hold no event when every indicator of the slow part stays farther from zero than
+ * what the band can change it by (evaluated at +-amp_q, doubled), and no new peak when |s1|, |s2|
+ * of the slow part plus the band stay below the peaks so far; otherwise the substep is resolved at
+ * the fast rate. The slow part between the substep's ends is bounded by its cubic Hermite
+ * interpolant with the margin of hermite_keeps_sign. */
+
+/* min and max over [0, 1] of the cubic Hermite interpolant of (z, dz) on [0, L], ends included */
+static void hermite_range(double za, double da, double zb, double db, double L, double *lo, double *hi)
+{
+    const double ma = L * da, mb = L * db;
+    const double A = 6.0 * za + 3.0 * ma - 6.0 * zb + 3.0 * mb;
+    const double B = -6.0 * za - 4.0 * ma + 6.0 * zb - 2.0 * mb;
+    const double C = ma, margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
+    double roots[2];
+    int n = 0, i;
+    *lo = fmin(za, zb);
+    *hi = fmax(za, zb);
+    if (fabs(A) > 1e-300) {
+        const double disc = B * B - 4.0 * A * C;
+        if (disc >= 0.0) {
+            roots[n++] = (-B + sqrt(disc)) / (2.0 * A);
+            roots[n++] = (-B - sqrt(disc)) / (2.0 * A);
+        }
+    } else if (fabs(B) > 1e-300) {
+        roots[n++] = -C / B;
+    }
+    for (i = 0; i < n; i++) {
+        const double u = roots[i], u2 = u * u, u3 = u2 * u;
+        if (u > 0.0 && u < 1.0) {
+            const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
+            *lo = fmin(*lo, z);
+            *hi = fmax(*hi, z);
+        }
+    }
+    *lo -= margin;
+    *hi += margin;
+}
+
+static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
+                            rw_point *pt)
+{
+    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
+    const double dl = 1e-9;
+    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
+    int i;
+    pt->s = s;
+    span_eval_part(sp, s, NULL, fast, pt->x, xd);
+    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
+    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
+}
+
+/* how much the band can change each indicator, near the slow point a */
+static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
+                    double band[RW_NZ])
+{
+    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+    rw_input in = span_input(sp, a->s);
+    int k;
+    memcpy(xp, a->x, sizeof xp);
+    memcpy(xm, a->x, sizeof xm);
+    for (k = 0; k < 2; k++) {
+        xp[k] += r->amp_q[k];
+        xm[k] -= r->amp_q[k];
+    }
+    rw_event_indicators(&e->P, &e->D, m, &in, xp, zp);
+    rw_event_indicators(&e->P, &e->D, m, &in, xm, zm);
+    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+}
+
+/* Can the substep [0, L] of the span hold no event (see above)? Then *peaks_full says whether a
+ * new peak is possible there: the band is then negligible (below 1e-9 of the peak) and the peaks
+ * are taken on the full motion at the substep's resolution; a new peak with a larger band makes
+ * the substep not quiet. */
+static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const rw_rates *r,
+                            int *peaks_full)
+{
+    rw_point a, b;
+    double band[RW_NZ], lo, hi;
+    int k, w;
+    *peaks_full = 0;
+    eval_slow_point(e, m, sp, 0.0, r->fast, &a);
+    eval_slow_point(e, m, sp, L, r->fast, &b);
+    band_of(e, m, sp, &a, r, band);
+    for (k = 0; k < RW_NZ; k++) {
+        hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
+        if (e->b[k] ? !(lo > band[k]) : !(hi < -band[k])) return 0;
+    }
+    for (w = 0; w < 2; w++) {
+        const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
+        const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
+        const double sb = 2.0 * fabs(s_of(&e->P, w, amp));
+        const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
+        hermite_range(s_of(&e->P, w, a.x), s_of(&e->P, w, va), s_of(&e->P, w, b.x), s_of(&e->P, w, vb), L, &lo, &hi);
+        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (sb > 1e-9 * fmax(fabs(lo), fabs(hi))) return 0;
+        *peaks_full = 1;
+    }
+    return 1;
+}
+
+/* A substep of a span with fast modes, from the span's start to t_to: accepted when quiet, else
+ * halved until its halves are quiet or short enough (8 pieces at the fast rate) to be resolved in
+ * full, so that only the neighbourhood of an event or a new peak is resolved at the fast rate.
+ * Returns as resolve(). */
+static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+                        const rw_linear_input *in, double t_in, double t_to, const rw_rates *r, double x[RW_NX],
+                        double *t, int depth)
+{
+    const double L = t_to - sp->t0;
+    int peaks_full, nf, rc;
+    double len = L;
+    if (substep_is_quiet(e, m, sp, L, r, &peaks_full)) {
+        double xa[RW_NX];
+        memcpy(xa, x, sizeof xa);
+        e->steps++;
+        span_eval(sp, L, NULL, x, NULL);
+        if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
+        outputs_on(e, sp, L);
+        *t = t_to;
+        return 0;
+    }
+    nf = substeps_for(r->fast_rate, &len);
+    if (nf <= 8 || depth >= 40) return resolve(e, m, sp, R, g0, in, t_in, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL, x, t);
+    rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, r, x, t, depth + 1);
+    if (rc) return rc;
+    span_start(sp, R, g0, *t, x, in, t_in);
+    return fast_substep(e, m, sp, R, g0, in, t_in, t_to, r, x, t, depth + 1);
+}
+
+/* ---- the stepper ------------------------------------------------------------------------------ */
+/* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
+ * (x, t at the collapse), or an error code + 1. */
+static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
+                   double t_in)
+{
+    while (*t < t_end) {
+        rw_span sp;
+        rw_rates r;
+        double g0[2], dq_sel[2], span_len, h, span_end;
+        rw_input now;
+        rw_cache_entry *R;
+        int n, j, rc = 0;
+        now.ag = in->ag + in->ag_slope * (*t - t_in);
+        now.u_top = in->u_top + in->u_slope * (*t - t_in);
+        selection_rate(e, m, &now, x, dq_sel);
+        R = region_of(e, m, x, dq_sel, g0);
+        if (!R) return RW_ENGINE_UNSUPPORTED + 1;
+        span_start(&sp, R, g0, *t, x, in, t_in);
+        span_rates(e, &sp, rocking_rate(e), &r);
+        span_len = t_end - *t;
+        n = substeps_for(r.slow_rate, &span_len);
+        h = span_len / n;
+        span_end = n * h < t_end - *t ? *t + span_len : t_end;
+        if (!r.any_fast) {
+            rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h), x, t);
+            if (rc > 0) return rc;
+            continue;
+        }
+        for (j = 0; j < n && rc == 0; j++) {
+            const double t_to = j == n - 1 ? span_end : sp.t0 + h;
+            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, &r, x, t, 0);
+            if (rc > 0) return rc;
+            if (rc == 0 && j < n - 1) span_start(&sp, R, g0, *t, x, in, t_in);
+        }
+    }
+    return 0;
+}
+
+/* ---- the engine object ---------------------------------------------------------------------- */
+int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
+{
+    if (!e || !p) {
+        snprintf(msg, n, "rw_engine_init: engine and parameters must not be NULL");
+        return 1;
+    }
+    if (rw_params_validate(p, msg, n)) return 1;
+    if (p->support == RW_PARAPET) {
+        snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+        return 1;
+    }
+    memset(e, 0, sizeof *e);
+    e->P = *p;
+    rw_derive(p, &e->D);
+    e->law = rw_hinge_law_of(p->hingeLaw);
+    e->rigid = rw_is_rigid(p);
+    e->max_same_instant = 100;
+    e->t_last_event = -INFINITY;
+    e->t_collapse = NAN;
+    return 0;
+}
+
+rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n)
+{
+    rw_engine *e = (rw_engine *)calloc(1, sizeof *e);
+    if (!e) {
+        snprintf(msg, n, "out of memory");
+        return NULL;
+    }
+    if (rw_engine_init(e, p, msg, n)) {
+        free(e);
+        return NULL;
+    }
+    return e;
+}
+
+void rw_engine_free(rw_engine *e)
+{
+    free(e);
+}
+
+/* Did the inputs jump at t (a new step's values) so that an indicator changed sign? Then the
+ * model's event iteration at t, as cs_cvode.c does at a communication point. */
+static int input_jump(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *now)
+{
+    double z[RW_NZ];
+    int k;
+    if (!e->b_valid) {
+        set_indicator_states(e, m, now, x);
+        e->b_valid = 1;
+        return 0;
+    }
+    rw_event_indicators(&e->P, &e->D, m, now, x, z);
+    for (k = 0; k < RW_NZ; k++)
+        if ((z[k] > 0.0) != e->b[k]) return apply_event(e, m, x, t, now);
+    return 0;
+}
+
+int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
+                   long *impacts, double *t_reached, char *msg, size_t n)
+{
+    const long before = e->impacts;
+    rw_input now;
+    int rc;
+    now.ag = in->ag;
+    now.u_top = in->u_top;
+    *t_reached = t;
+    rc = input_jump(e, m, x, t, &now);
+    if (rc == 0) rc = advance(e, m, x, t_reached, t + h, in, t);
+    *impacts += e->impacts - before;
+    if (rc > 1) snprintf(msg, n, "%s", e->msg);
+    return rc;
+}
+
+/* ---- the batch run ---------------------------------------------------------------------------- */
+static int check_increasing(const double *v, size_t n, const char *what, char *msg, size_t len)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        if (!isfinite(v[i])) {
+            snprintf(msg, len, "%s[%zu] is not finite", what, i);
+            return 1;
+        }
+        if (i > 0 && !(v[i] > v[i - 1])) {
+            snprintf(msg, len, "%s must be strictly increasing (%s[%zu] = %.17g after %.17g)", what, what, i, v[i],
+                     v[i - 1]);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static int check_finite(const double *v, size_t n, const char *what, char *msg, size_t len)
+{
+    size_t i;
+    for (i = 0; v && i < n; i++)
+        if (!isfinite(v[i])) {
+            snprintf(msg, len, "%s[%zu] is not finite", what, i);
+            return 1;
+        }
+    return 0;
+}
+
+static int check_run_arguments(const rw_params *p, const rw_record *rec, const rw_engine_options *o, char *msg,
+                               size_t n)
+{
+    if (!p || !rec || !o) {
+        snprintf(msg, n, "rw_engine_run: params, record and options must not be NULL");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (rec->n < 1 || !rec->t || !rec->ag) {
+        snprintf(msg, n, "the record needs n >= 1 samples with times t and accelerations ag");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (check_increasing(rec->t, rec->n, "t", msg, n) || check_finite(rec->ag, rec->n, "ag", msg, n) ||
+        check_finite(rec->u_top, rec->n, "u_top", msg, n))
+        return RW_ENGINE_BAD_ARGUMENT;
+    if (!isfinite(o->t_start) || !isfinite(o->t_end) || !(o->t_end > o->t_start)) {
+        snprintf(msg, n, "need finite t_start < t_end, got %g, %g", o->t_start, o->t_end);
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (check_finite(o->x0, o->x0 ? RW_NX : 0, "x0", msg, n)) return RW_ENGINE_BAD_ARGUMENT;
+    if (o->n_out > 0) {
+        if (!o->t_out || check_increasing(o->t_out, o->n_out, "t_out", msg, n)) {
+            if (!o->t_out) snprintf(msg, n, "n_out > 0 needs the output times t_out");
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+        if (o->t_out[0] < o->t_start || o->t_out[o->n_out - 1] > o->t_end) {
+            snprintf(msg, n, "output times must lie in [t_start, t_end]");
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+    }
+    return 0;
+}
+
+/* the input of the record on the segment starting at sample i (i = -1: before the first sample,
+ * i = n - 1: after the last; both held) */
+static rw_linear_input record_segment(const rw_record *rec, long i)
+{
+    rw_linear_input in;
+    memset(&in, 0, sizeof in);
+    if (i < 0 || (size_t)i >= rec->n - 1) {
+        const size_t k = i < 0 ? 0 : rec->n - 1;
+        in.ag = rec->ag[k];
+        in.u_top = rec->u_top ? rec->u_top[k] : 0.0;
+        return in;
+    }
+    {
+        const double dt = rec->t[i + 1] - rec->t[i];
+        in.ag = rec->ag[i];
+        in.ag_slope = (rec->ag[i + 1] - rec->ag[i]) / dt;
+        if (rec->u_top) {
+            in.u_top = rec->u_top[i];
+            in.u_slope = (rec->u_top[i + 1] - rec->u_top[i]) / dt;
+        }
+    }
+    return in;
+}
+
+/* the segment index whose interval [t_i, t_i+1) holds t (-1 before the first sample) */
+static long segment_of(const rw_record *rec, double t)
+{
+    size_t lo = 0, hi = rec->n;
+    if (t < rec->t[0]) return -1;
+    while (hi - lo > 1) { /* rec->t[lo] <= t < rec->t[hi] */
+        const size_t mid = (lo + hi) / 2;
+        if (rec->t[mid] <= t) lo = mid;
+        else hi = mid;
+    }
+    return (long)lo;
+}
+
+static void result_init(rw_engine_result *res)
+{
+    double *x_out = res->x_out, *s1 = res->s1_out, *s2 = res->s2_out;
+    double *it = res->impact_t, *ie = res->impact_energy;
+    const size_t cap = res->impact_cap;
+    memset(res, 0, sizeof *res);
+    res->impact_t = it;
+    res->impact_energy = ie;
+    res->impact_cap = cap;
+    res->x_out = x_out;
+    res->s1_out = s1;
+    res->s2_out = s2;
+    res->t_collapse = NAN;
+}
+
+/* Start: the modes from the start states, the hosts' initial event iteration, the collapse test. */
+static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_mode *m, double x[RW_NX])
+{
+    const rw_linear_input li = record_segment(rec, segment_of(rec, o->t_start));
+    const long seg = segment_of(rec, o->t_start);
+    rw_input in;
+    in.ag = li.ag + li.ag_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
+    in.u_top = li.u_top + li.u_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
+    if (o->x0) memcpy(x, o->x0, sizeof(double) * RW_NX);
+    else memset(x, 0, sizeof(double) * RW_NX);
+    memset(m, 0, sizeof *m);
+    rw_init_modes(&e->P, &e->D, &in, x, m, NULL, NULL);
+    e->t_last_event = o->t_start;
+    e->same_instant = 0;
+    e->events--; /* the initial iteration is not a located event */
+    if (e->n_out > 0 && e->t_out[0] <= o->t_start) record_output(e, x);
+    track_peak(e, 0, rw_s1(&e->P, x));
+    track_peak(e, 1, rw_s2(&e->P, x));
+    return apply_event(e, m, x, o->t_start, &in);
+}
+
+int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *o, rw_engine_result *res)
+{
+    rw_engine *e;
+    rw_mode m;
+    double x[RW_NX], t;
+    long seg;
+    int rc;
+    if (!res) return RW_ENGINE_BAD_ARGUMENT;
+    result_init(res);
+    rc = check_run_arguments(p, rec, o, res->message, sizeof res->message);
+    if (rc) return rc;
+    e = rw_engine_new(p, res->message, sizeof res->message);
+    if (!e) {
+        if (p->support == RW_PARAPET && !rw_params_validate(p, res->message, sizeof res->message)) {
+            snprintf(res->message, sizeof res->message,
+                     "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+            return RW_ENGINE_UNSUPPORTED;
+        }
+        return strstr(res->message, "memory") ? RW_ENGINE_NO_MEMORY : RW_ENGINE_BAD_PARAMETERS;
+    }
+    if (o->max_events_per_instant > 0) e->max_same_instant = o->max_events_per_instant;
+    e->t_out = o->t_out;
+    e->n_out = o->n_out;
+    e->x_out = res->x_out;
+    e->s1_out = res->s1_out;
+    e->s2_out = res->s2_out;
+    if (res->impact_t && res->impact_energy) {
+        e->impact_t = res->impact_t;
+        e->impact_energy = res->impact_energy;
+        e->impact_cap = res->impact_cap;
+    }
+    rc = run_start(e, rec, o, &m, x);
+    t = o->t_start;
+    seg = segment_of(rec, t);
+    while (rc == 0 && t < o->t_end) {
+        const rw_linear_input in = record_segment(rec, seg);
+        const double t_in = seg >= 0 ? rec->t[seg] : t;
+        double t_next = (seg + 1 < (long)rec->n) ? rec->t[seg + 1] : o->t_end;
+        if (t_next > o->t_end) t_next = o->t_end;
+        if (t_next > t) rc = advance(e, &m, x, &t, t_next, &in, t_in);
+        seg++;
+    }
+    while (e->i_out < e->n_out) { /* after a collapse or a Zeno stop: no values */
+        const double nan4[RW_NX] = {NAN, NAN, NAN, NAN};
+        record_output(e, nan4);
+    }
+    res->peak_s1 = e->peak_s1;
+    res->peak_s2 = e->peak_s2;
+    res->collapsed = e->collapsed;
+    res->collapse_reason = e->reason;
+    res->t_collapse = e->t_collapse;
+    res->impacts = e->impacts;
+    res->events = e->events;
+    res->steps = e->steps;
+    res->t_reached = t;
+    memcpy(res->x_end, x, sizeof x);
+    if (rc > 1) snprintf(res->message, sizeof res->message, "%s", e->msg);
+    rw_engine_free(e);
+    return rc > 1 ? rc - 1 : 0;
+}

@@ -1,0 +1,136 @@
+/* RockingWall exact event-driven engine (issue 12): advances the model from event to event on the
+ * closed-form solution of each linear region, over a piecewise-linear input record. No FMI types.
+ *
+ * Between two events every piecewise-linear hinge law gives M q'' + (K - J) q = p(ag) + f_u(u_top)
+ * + (Q - J q) with constant coefficients (rw_hinge_laws.c), the 1DOF and the closed rigid states
+ * are linear too, and the input is linear between samples. So each region decouples into two
+ * scalar modes eta'' + lam eta = f0 + f1 s whose solution is exact for any lam (Stumpff
+ * functions: cos/cosh/polynomial). Events are located on that exact solution with the model's own
+ * event indicators and applied with the model's own event update (rw_event_update): one copy of
+ * the event rules. The parapet (Housner's nonlinear block) is not covered: it stays on CVODE.
+ */
+#ifndef RW_ENGINE_H
+#define RW_ENGINE_H
+
+#include <stddef.h>
+
+#include "rw_physics.h"
+
+/* an input linear over a step or segment: value at its start and slope */
+typedef struct {
+    double ag, ag_slope, u_top, u_slope;
+} rw_linear_input;
+
+/* error codes of rw_engine_run (0 = ok) */
+enum {
+    RW_ENGINE_OK = 0,
+    RW_ENGINE_BAD_ARGUMENT = 1,   /* NULL pointer, bad record or grid, bad option */
+    RW_ENGINE_BAD_PARAMETERS = 2, /* rw_params_validate refused them */
+    RW_ENGINE_UNSUPPORTED = 3,    /* the parapet, or a region the engine cannot decompose */
+    RW_ENGINE_ZENO = 4,           /* too many events at one instant (result holds the run so far) */
+    RW_ENGINE_NO_MEMORY = 5
+};
+
+/* A piecewise-linear input record: n >= 1 samples at strictly increasing times t, linear between
+ * samples, end values held outside [t[0], t[n-1]] (as fmi2sim and the reference solver read an
+ * input table). u_top may be NULL (zero). */
+typedef struct {
+    size_t n;
+    const double *t;
+    const double *ag;    /* ground acceleration [m/s2], + toward +x */
+    const double *u_top; /* diaphragm displacement [m], NULL = 0 */
+} rw_record;
+
+typedef struct {
+    double t_start, t_end;       /* run interval (t_end > t_start) */
+    const double *x0;            /* start states (q1, q2, dq1, dq2); NULL = at rest */
+    size_t n_out;                /* optional output grid: n_out increasing times in [t_start, t_end] */
+    const double *t_out;
+    int max_events_per_instant;  /* Zeno guard; <= 0 means 100 */
+} rw_engine_options;
+
+typedef struct {
+    double peak_s1, peak_s2; /* max |s1|, |s2| over the run (exact, interior maxima located) */
+    int collapsed;           /* a collapse reason was reached (rw_collapse_reason) */
+    int collapse_reason;     /* RW_STANDING, RW_PAST_INSTABILITY, RW_PAST_TOPPLING_LIMIT */
+    double t_collapse;       /* time of the collapse event (NaN if none) */
+    long impacts;            /* base impacts applied */
+    long events;             /* located events (every indicator root) */
+    long steps;              /* closed-form propagation steps */
+    double t_reached;        /* t_end, or the collapse time, or where a Zeno stop happened */
+    double x_end[RW_NX];     /* states at t_reached */
+    /* optional time history on the grid, caller-allocated (n_out each) or NULL */
+    double *x_out;           /* n_out rows of RW_NX states (right limits at events) */
+    double *s1_out, *s2_out;
+    /* optional impact log, caller-allocated (impact_cap entries each) or NULL: the time of each
+     * impact and the energy (rw_energy) just before it */
+    double *impact_t, *impact_energy;
+    size_t impact_cap;
+    char message[256];       /* why a run failed or stopped early */
+} rw_engine_result;
+
+/* Runs the model from opt->t_start to opt->t_end (or collapse). Returns an error code (0 = ok)
+ * and fills res->message when not 0. */
+int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *opt, rw_engine_result *res);
+
+/* ---- the engine's state (public so that it can live inside the FMU's instance data) ------------
+ * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
+ * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top; decompositions are cached by region (the
+ * closed flags and J, or the 1DOF slope), with the Stumpff coefficients of the last two step
+ * lengths. */
+#define RW_CACHE_SIZE 48
+typedef struct {
+    double P[2][2], Pi[2][2], lam[2];
+    double ga[2], gu[2];
+    double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
+} rw_modes2;
+
+typedef struct {
+    int used, closed_b, closed_m;
+    double key[4]; /* J (2DOF) or the 1DOF slope */
+    rw_modes2 E;
+    double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
+    int h_valid[2], h_next;
+} rw_cache_entry;
+
+typedef struct rw_engine { /* by value in the FMU's data; use the functions, not the fields */
+    rw_params P;
+    rw_derived D;
+    const rw_hinge_law *law;
+    int rigid;
+    rw_cache_entry cache[RW_CACHE_SIZE];
+    int cache_next;
+    /* run bookkeeping */
+    int b[RW_NZ];               /* indicator states z > 0 */
+    double peak_s1, peak_s2;
+    long events, steps, impacts;
+    double dissipated;          /* energy taken out by the event maps (impacts, closings) */
+    int collapsed, reason;
+    double t_collapse;
+    double t_last_event;
+    int same_instant, max_same_instant;
+    const double *t_out;
+    size_t n_out, i_out;
+    double *x_out, *s1_out, *s2_out;
+    double *impact_t, *impact_energy;
+    size_t impact_cap;
+    int b_valid;                /* b holds the indicator states of the last step's end */
+    char msg[256];
+} rw_engine;
+
+/* ---- a stepper for callers that own the time loop (Co-Simulation) ---------------------------- */
+/* In place (e.g. inside the FMU's instance data): 0, or 1 with msg filled. */
+int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n);
+
+/* A heap engine over p (NULL with msg filled if p is refused or the parapet). */
+rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n);
+void rw_engine_free(rw_engine *e);
+/* Advance x, m (initialised by the caller: rw_init_modes and the initial event iteration) from t
+ * to t + h with the inputs linear over the step (value at t and slope). If the inputs jumped at t
+ * since the previous step so that an indicator changed sign, the model's event iteration runs at
+ * t first (an input can open a hinge at rest). Impacts are added to *impacts. Returns 0, 1 if the
+ * wall collapsed at *t_reached (<= t + h), or an error code + 1 (msg filled). */
+int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
+                   long *impacts, double *t_reached, char *msg, size_t n);
+
+#endif

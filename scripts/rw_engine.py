@@ -1,0 +1,147 @@
+"""Python binding of the exact event-driven engine (fmu_src/rw_engine.h, build/librwengine.so).
+
+    import rw_engine
+    r = rw_engine.run(t, ag, t_end=80.0, support=3, hingeLaw=4, Kd=5e4)
+    r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts
+
+`t`, `ag` (and optionally `u_top`) are the samples of a piecewise-linear record (unequal spacing
+allowed, ends held). Parameters are the FMU's, by name; the struct layout is read from the one
+parameter table, fmu_src/rw_parameters.h, so it cannot drift from the C side.
+"""
+import ctypes
+import math
+import os
+import pathlib
+import re
+
+import numpy as np
+
+REPO = pathlib.Path(__file__).resolve().parents[1]
+LIB_PATH = pathlib.Path(os.environ.get("RW_ENGINE_LIB", REPO / "build" / "librwengine.so"))
+NX = 4
+ERRORS = {1: "bad argument", 2: "bad parameters", 3: "unsupported", 4: "Zeno", 5: "no memory"}
+
+
+def _param_fields():
+    text = (REPO / "fmu_src" / "rw_parameters.h").read_text()
+    rows = re.findall(r"^P\((\w+),\s*\d+,\s*(Real|Integer),", text, re.M)
+    return [(name, ctypes.c_double if kind == "Real" else ctypes.c_int) for name, kind in rows]
+
+
+class Params(ctypes.Structure):
+    _fields_ = _param_fields()
+
+
+class _Record(ctypes.Structure):
+    _fields_ = [("n", ctypes.c_size_t), ("t", ctypes.POINTER(ctypes.c_double)),
+                ("ag", ctypes.POINTER(ctypes.c_double)), ("u_top", ctypes.POINTER(ctypes.c_double))]
+
+
+class _Options(ctypes.Structure):
+    _fields_ = [("t_start", ctypes.c_double), ("t_end", ctypes.c_double), ("x0", ctypes.POINTER(ctypes.c_double)),
+                ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(ctypes.c_double)),
+                ("max_events_per_instant", ctypes.c_int)]
+
+
+class _Result(ctypes.Structure):
+    _fields_ = [("peak_s1", ctypes.c_double), ("peak_s2", ctypes.c_double), ("collapsed", ctypes.c_int),
+                ("collapse_reason", ctypes.c_int), ("t_collapse", ctypes.c_double), ("impacts", ctypes.c_long),
+                ("events", ctypes.c_long), ("steps", ctypes.c_long), ("t_reached", ctypes.c_double),
+                ("x_end", ctypes.c_double * NX), ("x_out", ctypes.POINTER(ctypes.c_double)),
+                ("s1_out", ctypes.POINTER(ctypes.c_double)), ("s2_out", ctypes.POINTER(ctypes.c_double)),
+                ("impact_t", ctypes.POINTER(ctypes.c_double)), ("impact_energy", ctypes.POINTER(ctypes.c_double)),
+                ("impact_cap", ctypes.c_size_t), ("message", ctypes.c_char * 256)]
+
+
+class EngineError(RuntimeError):
+    def __init__(self, code, message):
+        super().__init__(f"rw_engine ({ERRORS.get(code, code)}): {message}")
+        self.code = code
+
+
+class Result:
+    """Peaks, collapse, counters, and the time history on the grid if one was asked for."""
+
+    def __init__(self, r, t_out, x_out, s1, s2, imp_t, imp_e):
+        self.peak_s1, self.peak_s2 = r.peak_s1, r.peak_s2
+        self.collapsed, self.collapse_reason = bool(r.collapsed), r.collapse_reason
+        self.t_collapse = r.t_collapse if r.collapsed else math.nan
+        self.impacts, self.events, self.steps = r.impacts, r.events, r.steps
+        self.t_reached, self.x_end = r.t_reached, np.array(r.x_end[:])
+        self.t, self.x, self.s1, self.s2 = t_out, x_out, s1, s2
+        n = min(r.impacts, imp_t.size) if imp_t is not None else 0
+        self.impact_t = imp_t[:n] if imp_t is not None else None
+        self.impact_energy = imp_e[:n] if imp_t is not None else None
+
+    def __repr__(self):
+        return (f"Result(peak_s1={self.peak_s1:.6g}, peak_s2={self.peak_s2:.6g}, collapsed={self.collapsed}, "
+                f"t_collapse={self.t_collapse:.6g}, impacts={self.impacts}, events={self.events})")
+
+
+_lib = None
+
+
+def library():
+    global _lib
+    if _lib is None:
+        if not LIB_PATH.exists():
+            raise FileNotFoundError(f"{LIB_PATH} is missing: build it (cmake --build build)")
+        lib = ctypes.CDLL(str(LIB_PATH))
+        lib.rw_params_default.argtypes = [ctypes.POINTER(Params)]
+        lib.rw_engine_run.argtypes = [ctypes.POINTER(Params), ctypes.POINTER(_Record), ctypes.POINTER(_Options),
+                                      ctypes.POINTER(_Result)]
+        lib.rw_engine_run.restype = ctypes.c_int
+        _lib = lib
+    return _lib
+
+
+def params(**values):
+    """The C parameter struct: the table's defaults, then `values` by name."""
+    p = Params()
+    library().rw_params_default(ctypes.byref(p))
+    names = {name for name, _ in Params._fields_}
+    for k, v in values.items():
+        if k not in names:
+            raise KeyError(f"unknown parameter {k!r} (known: {', '.join(sorted(names))})")
+        setattr(p, k, v)
+    return p
+
+
+def _ptr(a):
+    return a.ctypes.data_as(ctypes.POINTER(ctypes.c_double)) if a is not None else None
+
+
+def _array(a, n=None):
+    if a is None:
+        return None
+    a = np.ascontiguousarray(a, dtype=np.float64)
+    if a.ndim != 1 or (n is not None and a.size != n):
+        raise ValueError("record arrays must be 1-D and of the same length as t")
+    return a
+
+
+def run(t, ag, u_top=None, t_end=None, t_start=0.0, x0=None, t_out=None, max_events_per_instant=0, impact_log=0,
+        **param_values):
+    """One run of the engine. Raises EngineError for bad input (the C API's code and message).
+    impact_log > 0 keeps the time and the energy before each of the first impact_log impacts."""
+    t = _array(t)
+    ag, u_top = _array(ag, t.size), _array(u_top, t.size)
+    t_end = float(t[-1]) if t_end is None else float(t_end)
+    x0 = _array(x0, NX)
+    t_out = _array(t_out)
+    n_out = 0 if t_out is None else t_out.size
+    x_out = np.full((n_out, NX), np.nan) if n_out else None
+    s1 = np.full(n_out, np.nan) if n_out else None
+    s2 = np.full(n_out, np.nan) if n_out else None
+    p = params(**param_values)
+    rec = _Record(t.size, _ptr(t), _ptr(ag), _ptr(u_top))
+    opt = _Options(float(t_start), t_end, _ptr(x0), n_out, _ptr(t_out), int(max_events_per_instant))
+    res = _Result()
+    res.x_out, res.s1_out, res.s2_out = _ptr(x_out), _ptr(s1), _ptr(s2)
+    imp_t = np.full(impact_log, np.nan) if impact_log > 0 else None
+    imp_e = np.full(impact_log, np.nan) if impact_log > 0 else None
+    res.impact_t, res.impact_energy, res.impact_cap = _ptr(imp_t), _ptr(imp_e), max(0, int(impact_log))
+    code = library().rw_engine_run(ctypes.byref(p), ctypes.byref(rec), ctypes.byref(opt), ctypes.byref(res))
+    if code:
+        raise EngineError(code, res.message.decode(errors="replace"))
+    return Result(res, t_out, x_out, s1, s2, imp_t, imp_e)
