@@ -87,7 +87,7 @@ def fmpy_run(sig, params, t_end, rtol):
 def reference_run(sig, names, kd, t_end, rtol):
     from rwref import Params, simulate
     start = time.process_time()
-    res = simulate(Params(model=names[0], hinge_law=names[1], **WALL_1, Kd=kd), sig, t_end, method="DOP853",
+    res = simulate(Params(support=names[0], hinge_law=names[1], **WALL_1, Kd=kd), sig, t_end, method="DOP853",
                    rtol=rtol, atol=rtol * 1e-3, t_out=np.arange(0.0, t_end, 0.01))
     return np.max(np.abs(res.s1)), np.max(np.abs(res.s2)), time.process_time() - start
 
