@@ -10,6 +10,11 @@
 
 typedef struct cs_solver cs_solver;
 
+/* external names (prefixed under FMI2_FUNCTION_PREFIX, see fmu_symbol.h) */
+#define cs_new FMU_SYMBOL(cs_new)
+#define cs_free FMU_SYMBOL(cs_free)
+#define cs_step FMU_SYMBOL(cs_step)
+
 /* A Real input over the step: value + slope * (t - t_start). slope is 0 unless the master gave a
  * first derivative (fmi2SetRealInputDerivatives); the value is the one set before the step. */
 typedef struct {

@@ -9,6 +9,8 @@
 
 #include <stddef.h>
 
+#include "fmu_symbol.h"
+
 typedef enum { FMU_REAL, FMU_INTEGER, FMU_BOOLEAN } fmu_type;
 
 /* One row of the model's variable table. The wrapper derives from causality and initial when a
@@ -75,6 +77,8 @@ typedef struct {
     void (*event_update)(void *M, double time, const fmu_logger *log, fmu_event_result *r);
 } fmu_model;
 
+/* the model of this binary (FMU_SYMBOL: prefixed under FMI2_FUNCTION_PREFIX) */
+#define FMU_MODEL FMU_SYMBOL(FMU_MODEL)
 extern const fmu_model FMU_MODEL;
 
 #endif

@@ -11,6 +11,8 @@
 
 #include <stddef.h>
 
+#include "rw_symbols.h" /* the FMI2_FUNCTION_PREFIX of every external function (issue 15) */
+
 enum { RW_PARAPET = 1, RW_SIMPLY_SUPPORTED = 2, RW_FLEXIBLE_TOP = 3 };
 enum { RW_RIGID = 1, RW_SEMI_RIGID_PAPER = 2, RW_SEMI_RIGID_HINGE = 3 };
 
