@@ -39,6 +39,7 @@ struct cs_solver {
     size_t n_prev_in;
     int next_time_defined;
     double next_time;
+    int restart_pending; /* re-initialise CVODE at the next step (an FMU state was saved or restored) */
     char cvode_msg[256];
 };
 
@@ -232,6 +233,8 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     const double eps = 1e-12 * fmax(1.0, fabs(t_end));
     int terminated = 0, i;
     *t_reached = t;
+    if (s->restart_pending) /* the states of a saved or restored FMU state, not CVODE's */
+        s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
     if (inputs_jumped(s, in, n_in, t)) {
         int crossed = 0;
         s->in = in;
@@ -248,7 +251,10 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
         } else if (restart(s, t, msg, n) != 0) {
             return -1;
         }
+    } else if (s->restart_pending && restart(s, t, msg, n) != 0) {
+        return -1;
     }
+    s->restart_pending = 0;
     s->in = in;
     s->n_in = n_in;
     s->t_in = t;
@@ -274,5 +280,62 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     s->time = t_end;
     *t_reached = t_end;
     s->model->event_indicators(s->M, 0, s->z_before);
+    return 0;
+}
+
+/* ---- FMU state ----------------------------------------------------------------------------- */
+
+/* the scalars of the solver's part of an FMU state; then prev_in (nvars + 1 entries), z_before (nz) */
+typedef struct {
+    double time, t_in, next_time;
+    int next_time_defined;
+    unsigned n_prev_in;
+} cs_saved;
+
+static size_t n_prev_slots(const cs_solver *s) { return s->model->nvars + 1; }
+
+size_t cs_state_size(const cs_solver *s)
+{
+    return sizeof(cs_saved) + n_prev_slots(s) * sizeof(cs_input) + (size_t)s->nz * sizeof(double);
+}
+
+void cs_get_state(cs_solver *s, void *buf)
+{
+    unsigned char *p = (unsigned char *)buf;
+    cs_saved v;
+    memset(&v, 0, sizeof v);
+    v.time = s->time;
+    v.t_in = s->t_in;
+    v.next_time = s->next_time;
+    v.next_time_defined = s->next_time_defined;
+    v.n_prev_in = (unsigned)s->n_prev_in;
+    memcpy(p, &v, sizeof v);
+    memcpy(p + sizeof v, s->prev_in, n_prev_slots(s) * sizeof(cs_input));
+    memcpy(p + sizeof v + n_prev_slots(s) * sizeof(cs_input), s->z_before, (size_t)s->nz * sizeof(double));
+    s->restart_pending = 1; /* the step from here must not depend on CVODE's history */
+}
+
+int cs_set_state(cs_solver *s, const void *buf, size_t n, char *msg, size_t msg_n)
+{
+    const unsigned char *p = (const unsigned char *)buf;
+    cs_saved v;
+    if (n != cs_state_size(s)) {
+        snprintf(msg, msg_n, "the integrator part of the FMU state has %u bytes, expected %u", (unsigned)n,
+                 (unsigned)cs_state_size(s));
+        return -1;
+    }
+    memcpy(&v, p, sizeof v);
+    if (v.n_prev_in > n_prev_slots(s) || !isfinite(v.time) || !isfinite(v.t_in)) {
+        snprintf(msg, msg_n, "the integrator part of the FMU state is corrupt");
+        return -1;
+    }
+    s->time = v.time;
+    s->t_in = v.t_in;
+    s->next_time = v.next_time;
+    s->next_time_defined = v.next_time_defined;
+    s->n_prev_in = v.n_prev_in;
+    memcpy(s->prev_in, p + sizeof v, n_prev_slots(s) * sizeof(cs_input));
+    memcpy(s->z_before, p + sizeof v + n_prev_slots(s) * sizeof(cs_input), (size_t)s->nz * sizeof(double));
+    s->restart_pending = 1; /* CVODE from the restored model states at the next step */
     return 0;
 }

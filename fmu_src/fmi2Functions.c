@@ -119,6 +119,7 @@ typedef struct {
     cs_input *inputs;     /* every Real input, value refreshed before each step */
     size_t n_inputs;
     int terminated;       /* the model ended the run (fmi2Terminated status) */
+    int initialized;      /* fmi2ExitInitializationMode succeeded (until fmi2Reset) */
     double last_successful_time;
 } Inst;
 
@@ -520,12 +521,14 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
     ENTER(fmi2ExitInitializationMode);
     REQUIRE(S->model.exit_init(S->M, S->time, &S->log, msg, sizeof msg) == 0, "%s", msg);
     if (S->type == fmi2ModelExchange) {
+        S->initialized = 1;
         S->state = ME_EVENT;
         LEAVE(fmi2OK);
     }
     S->cs = cs_new(&S->model, S->M, S->time, S->rtol, &S->log, &S->terminated, msg, sizeof msg);
     REQUIRE(S->cs != NULL, "%s", msg);
     S->last_successful_time = S->time;
+    S->initialized = 1;
     S->state = CS_STEP;
     LEAVE(fmi2OK);
 }
@@ -543,6 +546,7 @@ fmi2Status fmi2Reset(fmi2Component c)
     cs_free(S->cs);
     S->cs = NULL;
     S->terminated = 0;
+    S->initialized = 0;
     S->time = 0.0;
     S->model.reset(S->M);
     S->state = PHASE(S, INSTANTIATED);
@@ -645,49 +649,210 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
     LEAVE(fail(S, "unknown value reference %u (the model has no String variables)", (unsigned)vr[0]));
 }
 
-/* ---- FMU state: not supported yet; directional derivatives: not supported ------------------ */
+/* ---- FMU state (canGetAndSetFMUstate, canSerializeFMUstate) -------------------------------- */
 
-fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *s)
+/* An FMU state is kept in its serialized form: one block of bytes, a header and then the model's
+ * data (a byte copy: fmu_model.h asks for plain data), the Real inputs' slopes and, in
+ * Co-Simulation after initialization, what re-creates the integrator exactly (cs_get_state).
+ * fmi2SerializeFMUstate is a copy; fmi2DeSerializeFMUstate checks everything before copying.
+ * The call-sequence state of the instance is not part of it: the master is in charge of that. */
+#define STATE_MAGIC "RWFMUS1" /* 8 bytes with the terminating zero; the last digit is the format */
+
+typedef struct {
+    char magic[8];
+    char guid[64];
+    unsigned long long size; /* of the whole block */
+    int type;                /* fmi2ModelExchange or fmi2CoSimulation */
+    int initialized;         /* taken after fmi2ExitInitializationMode */
+    int terminated;
+    double time, rtol, last_successful_time;
+    unsigned long long data_size, n_inputs, solver_size;
+} state_header;
+
+static size_t state_size(const state_header *h)
 {
+    return sizeof *h + (size_t)h->data_size + (size_t)h->n_inputs * sizeof(double) + (size_t)h->solver_size;
+}
+
+static void make_header(const Inst *S, state_header *h)
+{
+    memset(h, 0, sizeof *h);
+    memcpy(h->magic, STATE_MAGIC, sizeof h->magic);
+    snprintf(h->guid, sizeof h->guid, "%s", S->model.guid);
+    h->type = (int)S->type;
+    h->initialized = S->initialized;
+    h->terminated = S->terminated;
+    h->time = S->time;
+    h->rtol = S->rtol;
+    h->last_successful_time = S->last_successful_time;
+    h->data_size = S->model.data_size;
+    h->n_inputs = S->n_inputs;
+    h->solver_size = S->cs ? cs_state_size(S->cs) : 0;
+    h->size = state_size(h);
+}
+
+/* the instance's state into `block` (h->size bytes) */
+static void write_state(Inst *S, const state_header *h, unsigned char *block)
+{
+    unsigned char *p = block + sizeof *h;
+    size_t k;
+    memcpy(block, h, sizeof *h);
+    memcpy(p, S->M, S->model.data_size);
+    p += S->model.data_size;
+    for (k = 0; k < S->n_inputs; k++, p += sizeof(double)) memcpy(p, &S->inputs[k].slope, sizeof(double));
+    if (S->cs) cs_get_state(S->cs, p);
+}
+
+/* Is `block` (n bytes) an FMU state of this FMU and this binary? If not, log why. */
+static int compatible_state(Inst *S, const void *block, size_t n, state_header *h)
+{
+    state_header mine;
+    if (n < sizeof *h) return fail(S, "the FMU state has %u bytes, fewer than its header (%u)", (unsigned)n, (unsigned)sizeof *h), 0;
+    memcpy(h, block, sizeof *h);
+    if (memcmp(h->magic, STATE_MAGIC, sizeof h->magic) != 0) return fail(S, "not an FMU state of this FMU (bad magic number)"), 0;
+    h->guid[sizeof h->guid - 1] = '\0';
+    if (strcmp(h->guid, S->model.guid) != 0)
+        return fail(S, "the FMU state belongs to the FMU with GUID %s, this FMU has GUID %s", h->guid, S->model.guid), 0;
+    if (h->size != n) return fail(S, "the FMU state says it has %llu bytes, but %u were given", h->size, (unsigned)n), 0;
+    make_header(S, &mine);
+    if (h->data_size != mine.data_size || h->n_inputs != mine.n_inputs || state_size(h) != n)
+        return fail(S, "the FMU state's sizes (model data %llu, inputs %llu, total %llu) do not match this binary's "
+                       "(%llu, %llu)", h->data_size, h->n_inputs, h->size, mine.data_size, mine.n_inputs), 0;
+    return 1;
+}
+
+/* Can the instance take this compatible state now (same interface type, same phase)? */
+static int applicable_state(Inst *S, const state_header *h)
+{
+    state_header mine;
+    make_header(S, &mine);
+    if (h->type != mine.type)
+        return fail(S, "the FMU state is of a %s instance, this is a %s instance",
+                    h->type == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange",
+                    mine.type == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange"), 0;
+    if (h->initialized != mine.initialized)
+        return fail(S, "the FMU state was taken %s fmi2ExitInitializationMode, the instance is %s it",
+                    h->initialized ? "after" : "before", mine.initialized ? "past" : "before"), 0;
+    if (h->solver_size != mine.solver_size)
+        return fail(S, "the FMU state's integrator part has %llu bytes, expected %llu", h->solver_size, mine.solver_size), 0;
+    return 1;
+}
+
+/* a checked state block into the instance */
+static int read_state(Inst *S, const state_header *h, const unsigned char *block)
+{
+    const unsigned char *p = block + sizeof *h;
+    char msg[256];
+    size_t k;
+    if (S->cs && cs_set_state(S->cs, p + h->data_size + h->n_inputs * sizeof(double), (size_t)h->solver_size, msg, sizeof msg))
+        return fail(S, "%s", msg), 0;
+    memcpy(S->M, p, S->model.data_size);
+    p += S->model.data_size;
+    for (k = 0; k < S->n_inputs; k++, p += sizeof(double)) memcpy(&S->inputs[k].slope, p, sizeof(double));
+    S->time = h->time;
+    S->rtol = h->rtol;
+    S->terminated = h->terminated;
+    S->last_successful_time = h->last_successful_time;
+    return 1;
+}
+
+/* a block of n bytes for an FMU state, reusing *old when it has the size */
+static unsigned char *state_block(Inst *S, fmi2FMUstate old, size_t n)
+{
+    state_header h;
+    if (old) {
+        memcpy(&h, old, sizeof h);
+        if (h.size == n) return (unsigned char *)old;
+        release(&S->cb, old);
+    }
+    return (unsigned char *)alloc(&S->cb, n, 1);
+}
+
+/* the header of a state the master hands back, checked to be one of ours */
+static int own_state(Inst *S, fmi2FMUstate state, state_header *h)
+{
+    if (!state) return fail(S, "argument FMUstate must not be NULL"), 0;
+    memcpy(h, state, sizeof *h);
+    if (memcmp(h->magic, STATE_MAGIC, sizeof h->magic) != 0) return fail(S, "not an FMU state of this FMU (bad magic number)"), 0;
+    return 1;
+}
+
+fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
+{
+    state_header h;
+    unsigned char *block;
     ENTER(fmi2GetFMUstate);
-    (void)s;
-    LEAVE(fail(S, "not supported by this FMU"));
+    REQUIRE_NOT_NULL(FMUstate);
+    if (*FMUstate && !own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
+    make_header(S, &h);
+    block = state_block(S, *FMUstate, (size_t)h.size);
+    *FMUstate = block;
+    REQUIRE(block != NULL, "out of memory for an FMU state of %llu bytes", h.size);
+    write_state(S, &h, block);
+    LEAVE(fmi2OK);
 }
 
-fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate s)
+fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 {
+    state_header h;
     ENTER(fmi2SetFMUstate);
-    (void)s;
-    LEAVE(fail(S, "not supported by this FMU"));
+    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
+    if (!compatible_state(S, FMUstate, (size_t)h.size, &h) || !applicable_state(S, &h) ||
+        !read_state(S, &h, (const unsigned char *)FMUstate))
+        LEAVE(fmi2Error);
+    LEAVE(fmi2OK);
 }
 
-fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *s)
+fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
+    state_header h;
     ENTER(fmi2FreeFMUstate);
-    (void)s;
-    LEAVE(fail(S, "not supported by this FMU"));
+    REQUIRE_NOT_NULL(FMUstate);
+    if (!*FMUstate) LEAVE(fmi2OK);
+    if (!own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
+    release(&S->cb, *FMUstate);
+    *FMUstate = NULL;
+    LEAVE(fmi2OK);
 }
 
-fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate s, size_t *n)
+fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
 {
+    state_header h;
     ENTER(fmi2SerializedFMUstateSize);
-    (void)s; (void)n;
-    LEAVE(fail(S, "not supported by this FMU"));
+    REQUIRE_NOT_NULL(size);
+    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
+    *size = (size_t)h.size;
+    LEAVE(fmi2OK);
 }
 
-fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate s, fmi2Byte b[], size_t n)
+fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[], size_t size)
 {
+    state_header h;
     ENTER(fmi2SerializeFMUstate);
-    (void)s; (void)b; (void)n;
-    LEAVE(fail(S, "not supported by this FMU"));
+    REQUIRE_NOT_NULL(serializedState);
+    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
+    REQUIRE(size == h.size, "size = %u, but the FMU state has %llu bytes (fmi2SerializedFMUstateSize)", (unsigned)size, h.size);
+    memcpy(serializedState, FMUstate, size);
+    LEAVE(fmi2OK);
 }
 
-fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b[], size_t n, fmi2FMUstate *s)
+fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size, fmi2FMUstate *FMUstate)
 {
+    state_header h;
+    unsigned char *block;
     ENTER(fmi2DeSerializeFMUstate);
-    (void)s; (void)b; (void)n;
-    LEAVE(fail(S, "not supported by this FMU"));
+    REQUIRE_NOT_NULL(serializedState);
+    REQUIRE_NOT_NULL(FMUstate);
+    if (*FMUstate && !own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
+    if (!compatible_state(S, serializedState, size, &h)) LEAVE(fmi2Error);
+    block = state_block(S, *FMUstate, size);
+    *FMUstate = block;
+    REQUIRE(block != NULL, "out of memory for an FMU state of %u bytes", (unsigned)size);
+    memcpy(block, serializedState, size);
+    LEAVE(fmi2OK);
 }
+
+/* ---- directional derivatives: not supported ------------------------------------------------ */
 
 fmi2Status fmi2GetDirectionalDerivative(fmi2Component c, const fmi2ValueReference u[], size_t nu,
                                         const fmi2ValueReference z[], size_t nz, const fmi2Real dv[], fmi2Real dz[])
