@@ -461,23 +461,27 @@ static void test_finding14_functions_of_the_other_interface_type(void)
     printf("  %d calls of the other interface type rejected\n", rejected);
 }
 
-/* canGetAndSetFMUstate and providesDirectionalDerivative are false: each call is an error */
-static void test_unsupported_functions(void)
+/* providesDirectionalDerivative is false: each call is an error. canGetAndSetFMUstate and
+ * canSerializeFMUstate are true (issue 15, defect 7): in every state, a state taken can be
+ * serialized, read back and set (test_fmu_state.c tests what it restores). */
+static void test_unsupported_functions_and_fmu_state_in_every_state(void)
 {
     for (int s = 0; s < N_STATES; s++) {
         fmi2Component c = in_state(s);
-        fmi2FMUstate st = NULL;
+        fmi2FMUstate st = NULL, back = NULL;
         size_t n = 0;
-        fmi2Byte buf[8];
+        fmi2Byte buf[4096];
         fmi2ValueReference vr = RW_VR_s1, vu = RW_VR_ag;
         double dv = 1, dz;
-        n_logs = 0; CHECK(fmi2GetFMUstate(c, &st) == fmi2Error && n_logs, "GetFMUstate in %s", STATE_NAMES[s]);
-        n_logs = 0; CHECK(fmi2SetFMUstate(c, st) == fmi2Error && n_logs, "SetFMUstate");
-        n_logs = 0; CHECK(fmi2FreeFMUstate(c, &st) == fmi2Error && n_logs, "FreeFMUstate");
-        n_logs = 0; CHECK(fmi2SerializedFMUstateSize(c, st, &n) == fmi2Error && n_logs, "SerializedFMUstateSize");
-        n_logs = 0; CHECK(fmi2SerializeFMUstate(c, st, buf, sizeof buf) == fmi2Error && n_logs, "SerializeFMUstate");
-        n_logs = 0; CHECK(fmi2DeSerializeFMUstate(c, buf, sizeof buf, &st) == fmi2Error && n_logs, "DeSerializeFMUstate");
         n_logs = 0; CHECK(fmi2GetDirectionalDerivative(c, &vr, 1, &vu, 1, &dv, &dz) == fmi2Error && n_logs, "GetDirectionalDerivative");
+        fmi2FreeInstance(c);
+        c = in_state(s);
+        CHECK(fmi2GetFMUstate(c, &st) == fmi2OK, "GetFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2SerializedFMUstateSize(c, st, &n) == fmi2OK && n > 0 && n <= sizeof buf, "SerializedFMUstateSize %u", (unsigned)n);
+        CHECK(n <= sizeof buf && fmi2SerializeFMUstate(c, st, buf, n) == fmi2OK, "SerializeFMUstate in %s", STATE_NAMES[s]);
+        CHECK(fmi2DeSerializeFMUstate(c, buf, n, &back) == fmi2OK, "DeSerializeFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2SetFMUstate(c, back) == fmi2OK, "SetFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2FreeFMUstate(c, &st) == fmi2OK && fmi2FreeFMUstate(c, &back) == fmi2OK && !st && !back, "FreeFMUstate");
         fmi2FreeInstance(c);
     }
 }
@@ -491,7 +495,7 @@ int main(void)
     test_instantiate_arguments();
     test_invalid_parameters_and_inputs();
     test_value_references_and_sizes();
-    test_unsupported_functions();
+    test_unsupported_functions_and_fmu_state_in_every_state();
     test_finding14_functions_of_the_other_interface_type();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
