@@ -11,6 +11,8 @@ foreach(obj IN LISTS objects)
   string(REGEX MATCHALL "[^\n]+" lines "${out}")
   foreach(line IN LISTS lines)
     string(REGEX MATCH "^[^ ]+" name "${line}")
+    # AddressSanitizer's one-definition-rule indicator of a global X is __odr_asan.X
+    string(REGEX REPLACE "^__odr_asan\\." "" name "${name}")
     if(NOT name MATCHES "^${PREFIX}" AND NOT name MATCHES ":$")
       list(APPEND bad "${name} (${obj})")
     endif()
