@@ -39,6 +39,7 @@ struct cs_solver {
     size_t n_prev_in;
     int next_time_defined;
     double next_time;
+    int restart_pending; /* re-initialise CVODE at the next step (an FMU state was saved or restored) */
     char cvode_msg[256];
 };
 
@@ -76,14 +77,23 @@ static void cvode_error(int code, const char *module, const char *function, char
     snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
 }
 
+/* Did a CVODE call succeed (flags >= 0 are successes such as CV_ROOT_RETURN)? If not, msg says
+ * which call, CVODE's name of the flag and CVODE's own message. */
+static int cvode_ok(cs_solver *s, int flag, const char *call, double t, char *msg, size_t n)
+{
+    char *name;
+    if (flag >= 0) return 1;
+    name = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE (issue 14, finding 15) */
+    snprintf(msg, n, "%s failed at t = %.17g: %s (%s)", call, t, name ? name : "unknown flag", s->cvode_msg);
+    free(name);
+    return 0;
+}
+
 /* CVODE from the model's states at t. */
 static int restart(cs_solver *s, double t, char *msg, size_t n)
 {
     s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
-    if (CVodeReInit(s->mem, t, s->y) != CV_SUCCESS) {
-        snprintf(msg, n, "CVodeReInit at t = %.17g: %s", t, s->cvode_msg);
-        return -1;
-    }
+    if (!cvode_ok(s, CVodeReInit(s->mem, t, s->y), "CVodeReInit", t, msg, n)) return -1;
     s->time = t;
     return 0;
 }
@@ -128,57 +138,77 @@ void cs_free(cs_solver *s)
     free(s);
 }
 
-cs_solver *cs_new(const fmu_model *model, void *M, double t_start, double rtol, const fmu_logger *log,
-                  int *terminated, char *msg, size_t n)
+/* absolute tolerances: rtol times each state's nominal */
+static void set_abstol(cs_solver *s, double rtol)
+{
+    double *a = N_VGetArrayPointer(s->abstol);
+    int i;
+    for (i = 0; i < s->nx; i++) a[i] = 1.0;
+    s->model->nominals(a);
+    for (i = 0; i < s->nx; i++) a[i] = rtol * (a[i] > 0 ? a[i] : 1.0);
+}
+
+/* CVODE (BDF, dense Newton, root-finding) from the model's states at t_start: every call checked */
+static int setup_cvode(cs_solver *s, double t_start, double rtol, char *msg, size_t n)
+{
+    s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
+    set_abstol(s, rtol);
+    if (!cvode_ok(s, CVodeSetErrHandlerFn(s->mem, cvode_error, s), "CVodeSetErrHandlerFn", t_start, msg, n) ||
+        !cvode_ok(s, CVodeInit(s->mem, rhs, t_start, s->y), "CVodeInit", t_start, msg, n) ||
+        !cvode_ok(s, CVodeSetUserData(s->mem, s), "CVodeSetUserData", t_start, msg, n) ||
+        !cvode_ok(s, CVodeSVtolerances(s->mem, rtol, s->abstol), "CVodeSVtolerances", t_start, msg, n) ||
+        !cvode_ok(s, CVodeSetLinearSolver(s->mem, s->LS, s->A), "CVodeSetLinearSolver", t_start, msg, n) ||
+        !cvode_ok(s, CVodeSetMaxNumSteps(s->mem, CS_MAX_STEPS), "CVodeSetMaxNumSteps", t_start, msg, n) ||
+        !cvode_ok(s, CVodeSetNoInactiveRootWarn(s->mem), "CVodeSetNoInactiveRootWarn", t_start, msg, n))
+        return -1;
+    if (s->nz > 0 && !cvode_ok(s, CVodeRootInit(s->mem, s->nz, roots), "CVodeRootInit", t_start, msg, n)) return -1;
+    return 0;
+}
+
+/* the solver's memory; NULL when out of memory */
+static cs_solver *allocate_solver(const fmu_model *model, void *M, double t_start)
 {
     cs_solver *s = (cs_solver *)calloc(1, sizeof *s);
-    double *a;
-    int i;
-    if (!s) goto oom;
+    if (!s) return NULL;
     s->model = model;
     s->M = M;
     s->nx = model->nx;
     s->nz = model->nz;
     s->time = t_start;
-    if (rtol <= 0) rtol = 1e-6;
     s->z_before = (double *)calloc((size_t)s->nz + 1, sizeof(double));
     s->z_after = (double *)calloc((size_t)s->nz + 1, sizeof(double));
     s->prev_in = (cs_input *)calloc(model->nvars + 1, sizeof(cs_input));
-    if (!s->z_before || !s->z_after || !s->prev_in) goto oom;
-    if (SUNContext_Create(NULL, &s->ctx) != 0) goto oom;
-    s->y = N_VNew_Serial(s->nx, s->ctx);
-    s->abstol = N_VNew_Serial(s->nx, s->ctx);
-    s->mem = CVodeCreate(CV_BDF, s->ctx);
-    if (!s->y || !s->abstol || !s->mem) goto oom;
-    CVodeSetErrHandlerFn(s->mem, cvode_error, s);
-    model->get_states(M, 0, N_VGetArrayPointer(s->y));
-    if (CVodeInit(s->mem, rhs, t_start, s->y) != CV_SUCCESS) goto cvode_failed;
-    CVodeSetUserData(s->mem, s);
-    a = N_VGetArrayPointer(s->abstol);
-    model->nominals(a);
-    for (i = 0; i < s->nx; i++) a[i] = rtol * (a[i] > 0 ? a[i] : 1.0);
-    CVodeSVtolerances(s->mem, rtol, s->abstol);
-    s->A = SUNDenseMatrix(s->nx, s->nx, s->ctx);
-    s->LS = s->A ? SUNLinSol_Dense(s->y, s->A, s->ctx) : NULL;
-    if (!s->LS || CVodeSetLinearSolver(s->mem, s->LS, s->A) != CV_SUCCESS) goto cvode_failed;
-    CVodeSetMaxNumSteps(s->mem, CS_MAX_STEPS);
-    CVodeSetNoInactiveRootWarn(s->mem);
-    if (s->nz > 0 && CVodeRootInit(s->mem, s->nz, roots) != CV_SUCCESS) goto cvode_failed;
-    /* the initial event iteration a Model-Exchange master would run after initialization */
-    if (handle_event(s, t_start, log, terminated, msg, n) != 0) {
+    if (s->z_before && s->z_after && s->prev_in && SUNContext_Create(NULL, &s->ctx) == 0) {
+        s->y = N_VNew_Serial(s->nx, s->ctx);
+        s->abstol = N_VNew_Serial(s->nx, s->ctx);
+        s->mem = CVodeCreate(CV_BDF, s->ctx);
+        s->A = SUNDenseMatrix(s->nx, s->nx, s->ctx);
+        s->LS = (s->y && s->A) ? SUNLinSol_Dense(s->y, s->A, s->ctx) : NULL;
+    }
+    if (!s->y || !s->abstol || !s->mem || !s->LS) {
+        cs_free(s);
+        return NULL;
+    }
+    return s;
+}
+
+cs_solver *cs_new(const fmu_model *model, void *M, double t_start, double rtol, const fmu_logger *log,
+                  int *terminated, char *msg, size_t n)
+{
+    cs_solver *s = allocate_solver(model, M, t_start);
+    *terminated = 0;
+    if (!s) {
+        snprintf(msg, n, "out of memory setting up CVODE");
+        return NULL;
+    }
+    /* then the initial event iteration a Model-Exchange master would run after initialization */
+    if (setup_cvode(s, t_start, rtol > 0 ? rtol : 1e-6, msg, n) != 0 ||
+        handle_event(s, t_start, log, terminated, msg, n) != 0) {
         cs_free(s);
         return NULL;
     }
     model->event_indicators(M, 0, s->z_before);
     return s;
-oom:
-    snprintf(msg, n, "out of memory setting up CVODE");
-    cs_free(s);
-    return NULL;
-cvode_failed:
-    snprintf(msg, n, "setting up CVODE failed: %s", s->cvode_msg);
-    cs_free(s);
-    return NULL;
 }
 
 /* Did the master move the inputs away from where the previous step left them? */
@@ -203,6 +233,8 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     const double eps = 1e-12 * fmax(1.0, fabs(t_end));
     int terminated = 0, i;
     *t_reached = t;
+    if (s->restart_pending) /* the states of a saved or restored FMU state, not CVODE's */
+        s->model->get_states(s->M, 0, N_VGetArrayPointer(s->y));
     if (inputs_jumped(s, in, n_in, t)) {
         int crossed = 0;
         s->in = in;
@@ -219,7 +251,10 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
         } else if (restart(s, t, msg, n) != 0) {
             return -1;
         }
+    } else if (s->restart_pending && restart(s, t, msg, n) != 0) {
+        return -1;
     }
+    s->restart_pending = 0;
     s->in = in;
     s->n_in = n_in;
     s->t_in = t;
@@ -229,12 +264,9 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
         double t_stop = t_end, tret = s->time;
         int flag, time_event;
         if (s->next_time_defined && s->next_time < t_stop) t_stop = fmax(s->next_time, s->time);
-        CVodeSetStopTime(s->mem, t_stop);
+        if (!cvode_ok(s, CVodeSetStopTime(s->mem, t_stop), "CVodeSetStopTime", s->time, msg, n)) return -1;
         flag = t_stop > s->time ? CVode(s->mem, t_stop, s->y, &tret, CV_NORMAL) : CV_TSTOP_RETURN;
-        if (flag < 0) {
-            snprintf(msg, n, "CVODE failed at t = %.17g: %s (%s)", tret, CVodeGetReturnFlagName(flag), s->cvode_msg);
-            return -1;
-        }
+        if (!cvode_ok(s, flag, "CVode", tret, msg, n)) return -1;
         s->time = tret;
         apply_inputs(s, tret);
         s->model->set_states(s->M, N_VGetArrayPointer(s->y));
@@ -248,5 +280,62 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     s->time = t_end;
     *t_reached = t_end;
     s->model->event_indicators(s->M, 0, s->z_before);
+    return 0;
+}
+
+/* ---- FMU state ----------------------------------------------------------------------------- */
+
+/* the scalars of the solver's part of an FMU state; then prev_in (nvars + 1 entries), z_before (nz) */
+typedef struct {
+    double time, t_in, next_time;
+    int next_time_defined;
+    unsigned n_prev_in;
+} cs_saved;
+
+static size_t n_prev_slots(const cs_solver *s) { return s->model->nvars + 1; }
+
+size_t cs_state_size(const cs_solver *s)
+{
+    return sizeof(cs_saved) + n_prev_slots(s) * sizeof(cs_input) + (size_t)s->nz * sizeof(double);
+}
+
+void cs_get_state(cs_solver *s, void *buf)
+{
+    unsigned char *p = (unsigned char *)buf;
+    cs_saved v;
+    memset(&v, 0, sizeof v);
+    v.time = s->time;
+    v.t_in = s->t_in;
+    v.next_time = s->next_time;
+    v.next_time_defined = s->next_time_defined;
+    v.n_prev_in = (unsigned)s->n_prev_in;
+    memcpy(p, &v, sizeof v);
+    memcpy(p + sizeof v, s->prev_in, n_prev_slots(s) * sizeof(cs_input));
+    memcpy(p + sizeof v + n_prev_slots(s) * sizeof(cs_input), s->z_before, (size_t)s->nz * sizeof(double));
+    s->restart_pending = 1; /* the step from here must not depend on CVODE's history */
+}
+
+int cs_set_state(cs_solver *s, const void *buf, size_t n, char *msg, size_t msg_n)
+{
+    const unsigned char *p = (const unsigned char *)buf;
+    cs_saved v;
+    if (n != cs_state_size(s)) {
+        snprintf(msg, msg_n, "the integrator part of the FMU state has %u bytes, expected %u", (unsigned)n,
+                 (unsigned)cs_state_size(s));
+        return -1;
+    }
+    memcpy(&v, p, sizeof v);
+    if (v.n_prev_in > n_prev_slots(s) || !isfinite(v.time) || !isfinite(v.t_in)) {
+        snprintf(msg, msg_n, "the integrator part of the FMU state is corrupt");
+        return -1;
+    }
+    s->time = v.time;
+    s->t_in = v.t_in;
+    s->next_time = v.next_time;
+    s->next_time_defined = v.next_time_defined;
+    s->n_prev_in = v.n_prev_in;
+    memcpy(s->prev_in, p + sizeof v, n_prev_slots(s) * sizeof(cs_input));
+    memcpy(s->z_before, p + sizeof v + n_prev_slots(s) * sizeof(cs_input), (size_t)s->nz * sizeof(double));
+    s->restart_pending = 1; /* CVODE from the restored model states at the next step */
     return 0;
 }

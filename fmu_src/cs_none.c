@@ -25,3 +25,14 @@ int cs_step(cs_solver *s, double t, double h, const cs_input *in, size_t n_in, c
     snprintf(msg, n, "Co-Simulation is not available in this binary");
     return -1;
 }
+
+size_t cs_state_size(const cs_solver *s) { (void)s; return 0; }
+
+void cs_get_state(cs_solver *s, void *buf) { (void)s; (void)buf; }
+
+int cs_set_state(cs_solver *s, const void *buf, size_t n, char *msg, size_t msg_n)
+{
+    (void)s; (void)buf; (void)n;
+    snprintf(msg, msg_n, "Co-Simulation is not available in this binary");
+    return -1;
+}

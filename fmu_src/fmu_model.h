@@ -9,6 +9,8 @@
 
 #include <stddef.h>
 
+#include "fmu_symbol.h"
+
 typedef enum { FMU_REAL, FMU_INTEGER, FMU_BOOLEAN } fmu_type;
 
 /* One row of the model's variable table. The wrapper derives from causality and initial when a
@@ -38,35 +40,40 @@ typedef struct {
     double next_time;
 } fmu_event_result;
 
+/* The callbacks marked "optional" may be NULL: the FMI layer then uses a default that does what a
+ * model without such variables or events needs (no Integer/Boolean variables, nothing settable
+ * of that type, nothing to check at the end of initialization, no event indicators, no events,
+ * nominal 1 for every state). The others are required. */
 typedef struct {
     const char *identifier;
     const char *guid;
     int nx, nz;
     const fmu_var *vars;
     size_t nvars;
-    size_t data_size; /* bytes of model data the wrapper allocates per instance */
+    size_t data_size; /* bytes of model data the wrapper allocates per instance; plain data: the
+                         FMU state (fmi2GetFMUstate) is a byte copy of it */
 
     /* start values of everything (fmi2Instantiate, fmi2Reset) */
     void (*reset)(void *M);
     /* Getters for a list of value references already checked to be of the right type.
      * `initializing` is 1 before fmi2ExitInitializationMode (modes not decided yet). */
     void (*get_real)(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[]);
-    void (*get_integer)(void *M, int initializing, const unsigned vr[], size_t n, int v[]);
-    void (*get_boolean)(void *M, const unsigned vr[], size_t n, int v[]);
+    void (*get_integer)(void *M, int initializing, const unsigned vr[], size_t n, int v[]); /* optional */
+    void (*get_boolean)(void *M, const unsigned vr[], size_t n, int v[]);                   /* optional */
     /* Setters for one settable variable with a finite value: 0 = stored, else msg says why not. */
-    int (*set_real)(void *M, unsigned vr, double v, char *msg, size_t n);
-    int (*set_integer)(void *M, unsigned vr, int v, char *msg, size_t n);
+    int (*set_real)(void *M, unsigned vr, double v, char *msg, size_t n);   /* optional */
+    int (*set_integer)(void *M, unsigned vr, int v, char *msg, size_t n);   /* optional */
     /* fmi2ExitInitializationMode: validate the parameters together, decide the modes.
-     * 0 = ok, else msg says why not. */
+     * 0 = ok, else msg says why not. Optional. */
     int (*exit_init)(void *M, double time, const fmu_logger *log, char *msg, size_t n);
 
     /* continuous-time evaluation (x has nx entries, z nz) */
     void (*get_states)(void *M, int initializing, double x[]);
     void (*set_states)(void *M, const double x[]);
     void (*derivatives)(void *M, double dx[]);
-    void (*event_indicators)(void *M, int initializing, double z[]);
-    void (*nominals)(double x[]);
-    /* one event-mode update at `time` */
+    void (*event_indicators)(void *M, int initializing, double z[]); /* optional when nz = 0 */
+    void (*nominals)(double x[]);  /* optional: x holds 1 for every state on entry */
+    /* one event-mode update at `time`; optional (no events: nothing changes) */
     void (*event_update)(void *M, double time, const fmu_logger *log, fmu_event_result *r);
 
     /* Optional (NULL, or FMU_NOT_EXACT returned: the CVODE step of cs_cvode.c). A Co-Simulation
@@ -80,6 +87,8 @@ typedef struct {
 
 #define FMU_NOT_EXACT 2
 
+/* the model of this binary (FMU_SYMBOL: prefixed under FMI2_FUNCTION_PREFIX) */
+#define FMU_MODEL FMU_SYMBOL(FMU_MODEL)
 extern const fmu_model FMU_MODEL;
 
 #endif

@@ -1012,6 +1012,9 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     const long before = e->impacts;
     rw_input now;
     int rc;
+    /* the engine may be a byte copy restored from a serialized FMU state (fmi2SetFMUstate), made
+     * by another process: its one reference into this binary, the law, is taken again */
+    e->law = rw_hinge_law_of(e->P.hingeLaw);
     now.ag = in->ag;
     now.u_top = in->u_top;
     *t_reached = t;

@@ -243,9 +243,25 @@ static void event_update(void *M, double time, const fmu_logger *log, fmu_event_
 }
 
 const fmu_model FMU_MODEL = {
-    RW_MODEL_IDENTIFIER, RW_GUID, RW_NX, RW_NZ,
-    VARS, sizeof VARS / sizeof VARS[0], sizeof(rw_data),
-    reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
-    get_states, set_states, derivatives, event_indicators, nominals, event_update,
-    rw_exact_step, /* Co-Simulation through the exact engine (cs_exact.c) */
+    .identifier = RW_MODEL_IDENTIFIER,
+    .guid = RW_GUID,
+    .nx = RW_NX,
+    .nz = RW_NZ,
+    .vars = VARS,
+    .nvars = sizeof VARS / sizeof VARS[0],
+    .data_size = sizeof(rw_data),
+    .reset = reset,
+    .get_real = get_real,
+    .get_integer = get_integer,
+    .get_boolean = get_boolean,
+    .set_real = set_real,
+    .set_integer = set_integer,
+    .exit_init = exit_init,
+    .get_states = get_states,
+    .set_states = set_states,
+    .derivatives = derivatives,
+    .event_indicators = event_indicators,
+    .nominals = nominals,
+    .event_update = event_update,
+    .exact_step = rw_exact_step, /* Co-Simulation through the exact engine (cs_exact.c) */
 };

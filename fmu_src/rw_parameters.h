@@ -17,6 +17,8 @@
 
 #include <stddef.h>
 
+#include "rw_symbols.h" /* the FMI2_FUNCTION_PREFIX of every external symbol */
+
 /* clang-format off */
 #define RW_PARAMETERS(P) \
 P(h,           1, Real,    "m",     2.5,    0.3,   30.0, "Wall height") \

@@ -12,6 +12,7 @@
 #include <stddef.h>
 
 #include "rw_parameters.h"
+#include "rw_symbols.h" /* the FMI2_FUNCTION_PREFIX of every external function */
 
 /* values of the parameter `support` (rw_parameters.h) */
 enum { RW_PARAPET = 1, RW_SIMPLY_SUPPORTED = 2, RW_FLEXIBLE_TOP = 3 };

@@ -155,7 +155,7 @@ def generate(name="RockingWall"):
     w(f'  <ModelExchange modelIdentifier="{defines["RW_MODEL_IDENTIFIER"]}" '
       'needsExecutionTool="false" completedIntegratorStepNotNeeded="true" '
       'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="false" '
-      'canGetAndSetFMUstate="false" canSerializeFMUstate="false" providesDirectionalDerivative="false">')
+      'canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false">')
     w('    <SourceFiles>')
     for f in model["sources"]:
         w(f'      <File name="{f}"/>')
@@ -167,7 +167,7 @@ def generate(name="RockingWall"):
       'needsExecutionTool="false" canHandleVariableCommunicationStepSize="true" '
       'canInterpolateInputs="true" maxOutputDerivativeOrder="0" canRunAsynchronuously="false" '
       'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="false" '
-      'canGetAndSetFMUstate="false" canSerializeFMUstate="false" providesDirectionalDerivative="false"/>')
+      'canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>')
     w('  <UnitDefinitions>')
     for name in sorted({v["unit"] for v in variables if v["unit"]}):
         exps = UNITS[name]

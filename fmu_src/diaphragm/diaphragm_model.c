@@ -68,16 +68,6 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
     }
 }
 
-static void get_integer(void *M, int initializing, const unsigned vr[], size_t n, int v[])
-{
-    (void)M; (void)initializing; (void)vr; (void)n; (void)v; /* no Integer variables */
-}
-
-static void get_boolean(void *M, const unsigned vr[], size_t n, int v[])
-{
-    (void)M; (void)vr; (void)n; (void)v; /* no Boolean variables */
-}
-
 static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
 {
     dg_data *S = (dg_data *)M;
@@ -105,19 +95,6 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
     }
 }
 
-static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
-{
-    (void)M; (void)vr; (void)value;
-    snprintf(msg, n, "the Diaphragm has no Integer variables");
-    return 1;
-}
-
-static int exit_init(void *M, double time, const fmu_logger *log, char *msg, size_t n)
-{
-    (void)M; (void)time; (void)log; (void)msg; (void)n; /* each parameter was checked when set */
-    return 0;
-}
-
 static void get_states(void *M, int initializing, double x[])
 {
     (void)initializing;
@@ -133,24 +110,27 @@ static void derivatives(void *M, double dx[])
     dx[1] = acceleration(S);
 }
 
-static void event_indicators(void *M, int initializing, double z[]) { (void)M; (void)initializing; (void)z; }
-
 static void nominals(double x[])
 {
     x[0] = 0.01; /* diaphragm drifts of the order of 1 cm */
     x[1] = 0.1;
 }
 
-static void event_update(void *M, double time, const fmu_logger *log, fmu_event_result *r)
-{
-    (void)M; (void)time; (void)log;
-    memset(r, 0, sizeof *r); /* no events: nothing changes */
-}
-
+/* no Integer or Boolean variables, no events, each parameter checked when set: the FMI layer's
+ * defaults stand for the callbacks left out */
 const fmu_model FMU_MODEL = {
-    DG_MODEL_IDENTIFIER, DG_GUID, DG_NUMBER_OF_STATES, DG_NUMBER_OF_EVENT_INDICATORS,
-    VARS, sizeof VARS / sizeof VARS[0], sizeof(dg_data),
-    reset, get_real, get_integer, get_boolean, set_real, set_integer, exit_init,
-    get_states, set_states, derivatives, event_indicators, nominals, event_update,
-    NULL, /* no exact Co-Simulation step: CVODE */
+    .identifier = DG_MODEL_IDENTIFIER,
+    .guid = DG_GUID,
+    .nx = DG_NUMBER_OF_STATES,
+    .nz = DG_NUMBER_OF_EVENT_INDICATORS,
+    .vars = VARS,
+    .nvars = sizeof VARS / sizeof VARS[0],
+    .data_size = sizeof(dg_data),
+    .reset = reset,
+    .get_real = get_real,
+    .set_real = set_real,
+    .get_states = get_states,
+    .set_states = set_states,
+    .derivatives = derivatives,
+    .nominals = nominals,
 };

@@ -31,9 +31,12 @@ X(P_wall,    36, "P_wall",     Real, "output",    "continuous", "calculated", 0,
 enum { DG_VARIABLES(DG_VR_ENUM) DG_VR_MAX_PLUS_ONE_DUMMY };
 #undef DG_VR_ENUM
 
+/* ModelStructure: what each output and state derivative depends on. A state that is also an
+ * output depends on itself (importers read "" as "depends on nothing"; issue 15, defect 1);
+ * tests/python/test_model_structure.py checks every entry by finite differences. */
 #define DG_DEPENDENCIES(D) \
-D(u,         "") \
-D(v,         "") \
+D(u,         "u") \
+D(v,         "v") \
 D(der_v,     "u v ag F_top") \
 D(energy,    "u v") \
 D(P_ground,  "v ag") \

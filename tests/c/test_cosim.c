@@ -117,11 +117,31 @@ static void test_cs_call_sequence(void)
     fmi2FreeInstance(me);
 }
 
+/* Issue 14, finding 15: a CVODE failure inside fmi2DoStep is an fmi2Error whose message names the
+ * CVODE call and CVODE's flag, and leaks nothing (CVodeGetReturnFlagName's string is freed; the
+ * ASan build's leak check sees it). A tolerance of 1e-300 asks CVODE for more accuracy than
+ * doubles have. */
+static void test_finding15_cvode_failure_reported_without_leak(void)
+{
+    fmi2Component c = cs_instance(1, 0.02, 1e-300);
+    fmi2Status st;
+    CHECK(c != NULL, "instantiate");
+    if (!c) return;
+    n_logs = 0;
+    st = fmi2DoStep(c, 0.0, 0.5, fmi2True);
+    CHECK(st == fmi2Error, "finding 15: DoStep at rtol 1e-300: status %d, expected fmi2Error", (int)st);
+    printf("  %s\n", last_message);
+    CHECK(n_logs > 0 && strstr(last_message, "fmi2DoStep") && strstr(last_message, "CV_"),
+          "finding 15: the message names CVODE's flag: '%s'", last_message);
+    fmi2FreeInstance(c);
+}
+
 int main(void)
 {
     test_step_size_independence();
     test_collapse_discards();
     test_cs_call_sequence();
+    test_finding15_cvode_failure_reported_without_leak();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }

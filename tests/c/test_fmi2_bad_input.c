@@ -382,23 +382,106 @@ static void test_value_references_and_sizes(void)
     }
 }
 
-/* canGetAndSetFMUstate and providesDirectionalDerivative are false: each call is an error */
-static void test_unsupported_functions(void)
+/* ---- issue 14, finding 14: a function of the other interface type ------------------------ */
+
+/* Co-Simulation states, reached the same way as in_state's */
+enum { CS_INST, CS_INIT, CS_STEP, CS_TERM, CS_ERROR, N_CS_STATES };
+static const char *CS_STATE_NAMES[] = {"instantiated", "initializationMode", "stepComplete", "terminated", "error"};
+
+static fmi2Component in_cs_state(int s)
+{
+    fmi2Component c = fmi2Instantiate("bad", fmi2CoSimulation, RW_GUID, "", &CB, fmi2False, fmi2False);
+    fmi2ValueReference nosuch = 999;
+    double v = 0;
+    if (!c) return NULL;
+    if (s == CS_ERROR) { fmi2SetReal(c, &nosuch, 1, &v); return c; }
+    if (s == CS_INST) return c;
+    fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0);
+    fmi2EnterInitializationMode(c);
+    if (s == CS_INIT) return c;
+    fmi2ExitInitializationMode(c);
+    if (s == CS_TERM) fmi2Terminate(c);
+    return c;
+}
+
+static fmi2Status c_real_in_der(fmi2Component c)
+{
+    fmi2ValueReference vr = RW_VR_ag;
+    fmi2Integer order = 1;
+    double v = 0.0;
+    return fmi2SetRealInputDerivatives(c, &vr, 1, &order, &v);
+}
+static fmi2Status c_do_step(fmi2Component c) { return fmi2DoStep(c, 0.0, 0.01, fmi2True); }
+static fmi2Status c_status(fmi2Component c) { fmi2Status v; return fmi2GetStatus(c, fmi2DoStepStatus, &v); }
+static fmi2Status c_real_status(fmi2Component c) { double v; return fmi2GetRealStatus(c, fmi2LastSuccessfulTime, &v); }
+static fmi2Status c_bool_status(fmi2Component c) { fmi2Boolean v; return fmi2GetBooleanStatus(c, fmi2Terminated, &v); }
+static fmi2Status c_string_status(fmi2Component c) { fmi2String v; return fmi2GetStringStatus(c, fmi2PendingStatus, &v); }
+
+/* every Model-Exchange-only function of API[] (fmi2EnterEventMode onwards) */
+#define FIRST_ME_ONLY 9
+static const Api CS_ONLY[] = {
+    {"fmi2SetRealInputDerivatives", c_real_in_der, 0}, {"fmi2DoStep", c_do_step, 0},
+    {"fmi2GetStatus", c_status, 0}, {"fmi2GetRealStatus", c_real_status, 0},
+    {"fmi2GetBooleanStatus", c_bool_status, 0}, {"fmi2GetStringStatus", c_string_status, 0},
+};
+
+/* Issue 14, finding 14: 7 of 147 forbidden calls returned fmi2OK with nothing logged, all of them
+ * Model-Exchange functions on a Co-Simulation instance in a state where Model Exchange allows
+ * them (fmi2GetNominalsOfContinuousStates when instantiated; fmi2GetEventIndicators,
+ * fmi2GetContinuousStates in initialization; fmi2GetDerivatives and others when terminated).
+ * Every function of one interface type on an instance of the other, in every state, must fail
+ * with a logged reason that names the function and says which interface it belongs to. */
+static void test_finding14_functions_of_the_other_interface_type(void)
+{
+    int rejected = 0;
+    for (size_t f = FIRST_ME_ONLY; f < N_API; f++)
+        for (int s = 0; s < N_CS_STATES; s++) {
+            char what[160];
+            fmi2Component c = in_cs_state(s);
+            if (!c) { CHECK(0, "instantiate CS"); continue; }
+            snprintf(what, sizeof what, "finding 14: %s on a Co-Simulation instance in %s", API[f].name, CS_STATE_NAMES[s]);
+            n_logs = 0;
+            expect_error(NULL, API[f].call(c), what, API[f].name);
+            CHECK(strstr(last_message, "Model Exchange function"), "%s: log '%s' does not say why", what, last_message);
+            fmi2FreeInstance(c);
+            rejected++;
+        }
+    for (size_t f = 0; f < sizeof CS_ONLY / sizeof CS_ONLY[0]; f++)
+        for (int s = 0; s < N_STATES; s++) {
+            char what[160];
+            fmi2Component c = in_state(s);
+            if (!c) { CHECK(0, "instantiate ME"); continue; }
+            snprintf(what, sizeof what, "finding 14: %s on a Model Exchange instance in %s", CS_ONLY[f].name, STATE_NAMES[s]);
+            n_logs = 0;
+            expect_error(NULL, CS_ONLY[f].call(c), what, CS_ONLY[f].name);
+            CHECK(strstr(last_message, "Co-Simulation function"), "%s: log '%s' does not say why", what, last_message);
+            fmi2FreeInstance(c);
+            rejected++;
+        }
+    printf("  %d calls of the other interface type rejected\n", rejected);
+}
+
+/* providesDirectionalDerivative is false: each call is an error. canGetAndSetFMUstate and
+ * canSerializeFMUstate are true (issue 15, defect 7): in every state, a state taken can be
+ * serialized, read back and set (test_fmu_state.c tests what it restores). */
+static void test_unsupported_functions_and_fmu_state_in_every_state(void)
 {
     for (int s = 0; s < N_STATES; s++) {
         fmi2Component c = in_state(s);
-        fmi2FMUstate st = NULL;
+        fmi2FMUstate st = NULL, back = NULL;
         size_t n = 0;
-        fmi2Byte buf[8];
+        static fmi2Byte buf[1 << 16]; /* the state holds the exact engine with its cache, ~18 KiB */
         fmi2ValueReference vr = RW_VR_s1, vu = RW_VR_ag;
         double dv = 1, dz;
-        n_logs = 0; CHECK(fmi2GetFMUstate(c, &st) == fmi2Error && n_logs, "GetFMUstate in %s", STATE_NAMES[s]);
-        n_logs = 0; CHECK(fmi2SetFMUstate(c, st) == fmi2Error && n_logs, "SetFMUstate");
-        n_logs = 0; CHECK(fmi2FreeFMUstate(c, &st) == fmi2Error && n_logs, "FreeFMUstate");
-        n_logs = 0; CHECK(fmi2SerializedFMUstateSize(c, st, &n) == fmi2Error && n_logs, "SerializedFMUstateSize");
-        n_logs = 0; CHECK(fmi2SerializeFMUstate(c, st, buf, sizeof buf) == fmi2Error && n_logs, "SerializeFMUstate");
-        n_logs = 0; CHECK(fmi2DeSerializeFMUstate(c, buf, sizeof buf, &st) == fmi2Error && n_logs, "DeSerializeFMUstate");
         n_logs = 0; CHECK(fmi2GetDirectionalDerivative(c, &vr, 1, &vu, 1, &dv, &dz) == fmi2Error && n_logs, "GetDirectionalDerivative");
+        fmi2FreeInstance(c);
+        c = in_state(s);
+        CHECK(fmi2GetFMUstate(c, &st) == fmi2OK, "GetFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2SerializedFMUstateSize(c, st, &n) == fmi2OK && n > 0 && n <= sizeof buf, "SerializedFMUstateSize %u", (unsigned)n);
+        CHECK(n <= sizeof buf && fmi2SerializeFMUstate(c, st, buf, n) == fmi2OK, "SerializeFMUstate in %s", STATE_NAMES[s]);
+        CHECK(fmi2DeSerializeFMUstate(c, buf, n, &back) == fmi2OK, "DeSerializeFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2SetFMUstate(c, back) == fmi2OK, "SetFMUstate in %s: %s", STATE_NAMES[s], last_message);
+        CHECK(fmi2FreeFMUstate(c, &st) == fmi2OK && fmi2FreeFMUstate(c, &back) == fmi2OK && !st && !back, "FreeFMUstate");
         fmi2FreeInstance(c);
     }
 }
@@ -412,7 +495,8 @@ int main(void)
     test_instantiate_arguments();
     test_invalid_parameters_and_inputs();
     test_value_references_and_sizes();
-    test_unsupported_functions();
+    test_unsupported_functions_and_fmu_state_in_every_state();
+    test_finding14_functions_of_the_other_interface_type();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }

@@ -5,6 +5,24 @@ import sys
 
 import pytest
 
+import fmpy.logging
+
+# fmpy 0.3.32's native logger proxy keeps ONE global pointer to the Python logger of the last
+# addLoggerProxy call (logging.so: s_logger), while the ctypes closure it points to lives only as
+# long as that call's callbacks struct. After a simulate_fmu(..., logger=f) returns, its struct is
+# collected, and the next FMU message through fmpy's proxy calls freed memory: SIGILL/SIGSEGV in
+# a later test, depending on what reused the memory. Keep every proxied struct alive.
+_PROXIED_CALLBACKS = []
+_add_logger_proxy = fmpy.logging.addLoggerProxy
+
+
+def _add_logger_proxy_keeping_the_logger(callbacks):
+    _PROXIED_CALLBACKS.append(callbacks)
+    return _add_logger_proxy(callbacks)
+
+
+fmpy.logging.addLoggerProxy = _add_logger_proxy_keeping_the_logger
+
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
 

@@ -40,6 +40,8 @@ def test_model_exchange_and_co_simulation_declared(build_dir, name):
     assert md.coSimulation.canHandleVariableCommunicationStepSize
     assert md.coSimulation.canInterpolateInputs
     assert md.modelExchange.canBeInstantiatedOnlyOncePerProcess is False
+    for interface in (md.modelExchange, md.coSimulation):  # issue 15, defect 7
+        assert interface.canGetAndSetFMUstate and interface.canSerializeFMUstate
 
 
 def test_variables_match_the_c_table(rockingwall_fmu):

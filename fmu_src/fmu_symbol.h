@@ -1,0 +1,16 @@
+/* FMU_SYMBOL(name): the name of an external symbol of an FMU. When the FMU is built from its
+ * sources with -DFMI2_FUNCTION_PREFIX=Name_ (how importers combine source-code FMUs in one
+ * binary), every external symbol carries the prefix, not only the fmi2 functions, so that two
+ * FMUs of this repository link into one binary (issue 15, defect 2). */
+#ifndef FMU_SYMBOL_H
+#define FMU_SYMBOL_H
+
+#ifdef FMI2_FUNCTION_PREFIX
+#define FMU_SYMBOL_PASTE_(a, b) a##b
+#define FMU_SYMBOL_PASTE(a, b) FMU_SYMBOL_PASTE_(a, b)
+#define FMU_SYMBOL(name) FMU_SYMBOL_PASTE(FMI2_FUNCTION_PREFIX, name)
+#else
+#define FMU_SYMBOL(name) name
+#endif
+
+#endif

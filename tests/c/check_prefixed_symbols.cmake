@@ -1,0 +1,26 @@
+# Every external symbol defined in the object files OBJECTS ("|"-separated) starts with PREFIX
+# (issue 15, defect 2): cmake -DNM=nm -DPREFIX=Name_ -DOBJECTS=a.o|b.o -P check_prefixed_symbols.cmake
+string(REPLACE "|" ";" objects "${OBJECTS}")
+set(bad "")
+foreach(obj IN LISTS objects)
+  execute_process(COMMAND ${NM} -g --defined-only --format=posix ${obj}
+                  OUTPUT_VARIABLE out RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "${NM} failed on ${obj}")
+  endif()
+  string(REGEX MATCHALL "[^\n]+" lines "${out}")
+  foreach(line IN LISTS lines)
+    string(REGEX MATCH "^[^ ]+" name "${line}")
+    # AddressSanitizer's one-definition-rule indicator of a global X is __odr_asan.X
+    string(REGEX REPLACE "^__odr_asan\\." "" name "${name}")
+    if(NOT name MATCHES "^${PREFIX}" AND NOT name MATCHES ":$")
+      list(APPEND bad "${name} (${obj})")
+    endif()
+  endforeach()
+endforeach()
+list(LENGTH objects n)
+if(bad)
+  string(REPLACE ";" "\n  " bad "${bad}")
+  message(FATAL_ERROR "external symbols without the prefix ${PREFIX}:\n  ${bad}")
+endif()
+message(STATUS "${n} object files: every external symbol starts with ${PREFIX}")
