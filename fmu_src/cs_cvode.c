@@ -83,7 +83,7 @@ static int cvode_ok(cs_solver *s, int flag, const char *call, double t, char *ms
 {
     char *name;
     if (flag >= 0) return 1;
-    name = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE (issue 14, finding 15) */
+    name = CVodeGetReturnFlagName(flag); /* malloc'ed by CVODE */
     snprintf(msg, n, "%s failed at t = %.17g: %s (%s)", call, t, name ? name : "unknown flag", s->cvode_msg);
     free(name);
     return 0;

@@ -1,7 +1,7 @@
 /* FMU_SYMBOL(name): the name of an external symbol of an FMU. When the FMU is built from its
  * sources with -DFMI2_FUNCTION_PREFIX=Name_ (how importers combine source-code FMUs in one
  * binary), every external symbol carries the prefix, not only the fmi2 functions, so that two
- * FMUs of this repository link into one binary (issue 15, defect 2). */
+ * FMUs of this repository link into one binary. */
 #ifndef FMU_SYMBOL_H
 #define FMU_SYMBOL_H
 

@@ -1,5 +1,5 @@
 /* The FMU binaries load on glibc 2.17 (the manylinux2014 baseline: RHEL/CentOS 7 and 8, Ubuntu
- * 18.04), although they are built on a newer glibc (issue 15, defect 4).
+ * 18.04), although they are built on a newer glibc.
  *
  * glibc 2.29 gave exp, exp2, log, log2 and pow new symbol versions (new implementations without
  * the SVID error handling), and glibc 2.35 hypot (used by the exact engine); a binary linked

@@ -1,4 +1,4 @@
-/* RockingWall exact event-driven engine (issue 12): advances the model from event to event on the
+/* RockingWall exact event-driven engine: advances the model from event to event on the
  * closed-form solution of each linear region, over a piecewise-linear input record. No FMI types.
  *
  * Between two events every piecewise-linear hinge law gives M q'' + (K - J) q = p(ag) + f_u(u_top)

@@ -5,7 +5,7 @@
  *
  * The laws that come from a potential write Q = (-cap_b*mu_b + cap_m*mu_m, -cap_m*mu_m), where
  * mu_b(q1) and mu_m(x), x = q2 - q1, are the normalised moments of the base and mid-height hinge
- * (MODEL.md's A_i, B_i for mu = +-1, the paper's Eq. 3.5-3.8 corrected). */
+ * (the A_i, B_i of docs/model.md for mu = +-1: the paper's Eq. 3.5-3.8 corrected). */
 #include "rw_physics.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Lagrange derivation of the 2DOF rocking wall (paper Eq. 3.1-3.8, MODEL.md corrections) with sympy.
+"""Lagrange derivation of the 2DOF rocking wall (paper Eq. 3.1-3.8, with the corrections of docs/model.md) with sympy.
 
 Geometry: two rigid bodies of height h/2 and thickness b; the lower body rocks on a pivot at a face
 of its base (face sign(q1)), the upper body on a pivot at a face of the mid-height joint (face

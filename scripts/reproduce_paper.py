@@ -30,7 +30,7 @@ from rwref import Params, simulate, inputs, table_5_1, TABLE_5_1_PAPER, WALLS  #
 HEADER = ["table", "wall", "input", "model", "Kd_kN_per_m", "quantity", "ours", "paper"]
 G_AMPL = {1: 0.040, 2: 0.040, 3: 0.050}
 KD_5_2 = [1000, 100, 50, 10]
-# Table 5.2 as printed; wall 2 Kd=1000 s1 is printed "0,613", read as 0.061 (MODEL.md: a typo)
+# Table 5.2 as printed; wall 2 Kd=1000 s1 is printed "0,613", read as 0.061 (a typo: docs/model.md)
 PAPER_5_2 = {
     1: {"1DOF": 0.064, 1000: (0.066, 0.002), 100: (0.069, 0.021), 50: (0.073, 0.040), 10: (0.053, 0.085)},
     2: {"1DOF": 0.040, 1000: (0.061, 0.003), 100: (0.093, 0.036), 50: (0.058, 0.047), 10: (0.033, 0.073)},

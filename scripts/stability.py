@@ -1,4 +1,4 @@
-"""Run the stability matrix of issue #6 (scripts/stability_cases.py says what it covers and why),
+"""Run the stability matrix (scripts/stability_cases.py says what it covers and why),
 print one row per case, write results/stability.csv and the table between
 '<!-- BEGIN stability -->' and '<!-- END stability -->' in README.md.
 

@@ -1,4 +1,4 @@
-"""The stability matrix of issue #6: case definitions, one run of a case through fmi2sim and
+"""The stability matrix: case definitions, one run of a case through fmi2sim and
 through fmpy, and the checks every case must pass. scripts/stability.py runs the whole matrix;
 tests/python/test_stability.py runs a quick subset. Both import from here, so the cases and the
 bounds have one source.
@@ -30,7 +30,7 @@ reported and bounded. The semiRigidPaper law is not derived from a potential (it
 moments depend on the hinge sides), so its `energy` output is not conserved and the gain is
 reported for it but not bounded.
 
-Energy loss (issue 14, finding 7): where no loss is physical, free rocking with e_r = 1 and no
+Energy loss: where no loss is physical, free rocking with e_r = 1 and no
 input, the energy E(t) + dissipated(t) (what hinge closings remove, zero for the semi-rigid hinge)
 must stay at E(0). CVODE's error per step accumulates in the energy, mostly as a loss (BDF damps
 oscillations a little at every step; released from q1 = 0.01 rad at rtol 1e-6 the wall gained

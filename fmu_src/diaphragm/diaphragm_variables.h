@@ -32,7 +32,7 @@ enum { DG_VARIABLES(DG_VR_ENUM) DG_VR_MAX_PLUS_ONE_DUMMY };
 #undef DG_VR_ENUM
 
 /* ModelStructure: what each output and state derivative depends on. A state that is also an
- * output depends on itself (importers read "" as "depends on nothing"; issue 15, defect 1);
+ * output depends on itself (importers read "" as "depends on nothing");
  * tests/python/test_model_structure.py checks every entry by finite differences. */
 #define DG_DEPENDENCIES(D) \
 D(u,         "u") \

@@ -50,7 +50,7 @@ class Signal:
 
 class GaussianPulse:
     """Ground acceleration of the Gaussian displacement impulse of paper Section 5.3:
-    u_g = D exp(-(t - t0)^2 / (2 sigma^2)), sigma = T/8, t0 = T/2 (MODEL.md), a_g = u_g''."""
+    u_g = D exp(-(t - t0)^2 / (2 sigma^2)), sigma = T/8, t0 = T/2 (docs/model.md), a_g = u_g''."""
 
     def __init__(self, D, T, t0=None):
         if not T > 0:
@@ -124,7 +124,7 @@ def as_function(x):
 
 def el_centro(scale=1.0, g=G_STD):
     """El Centro 1940 as shipped by quakeio (quakeio.elcentro.accel, dt = 0.02 s, in g),
-    times `scale` ("times the record as given", MODEL.md), in m/s^2."""
+    times `scale` ("times the record as given", docs/model.md), in m/s^2."""
     import quakeio.elcentro as ec
 
     acc = ec.accel

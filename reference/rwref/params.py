@@ -144,7 +144,7 @@ class Params:
         return np.array([1.0, 1.0]) * self.Kd * self.h / 2
 
     def conditions(self):
-        """A_i, B_i of the four conditions (Eq. 3.5-3.8 as corrected in MODEL.md)."""
+        """A_i, B_i of the four conditions (Eq. 3.5-3.8 as corrected in docs/model.md)."""
         out = {}
         for c, (sb, sm) in {1: (1, -1), 2: (-1, 1), 3: (1, 1), 4: (-1, -1)}.items():
             out[c] = (-self.cap_b * sb + self.cap_m * sm, -self.cap_m * sm)
@@ -178,7 +178,7 @@ TABLE_5_1_PAPER = {1: dict(R_el=1.192, Delta_u=0.150, F0_over_W=0.180, Delta_u_o
 def table_5_1():
     """Table 5.1 from the formulas: {wall: {R_el [kN/m], Delta_u [m], F0_over_W, Delta_u_over_b}}.
 
-    The paper's "F0/W" column is R_el/W (MODEL.md)."""
+    The paper's "F0/W" column is R_el/W (docs/model.md, "Corrections to the paper")."""
     out = {}
     for wall, kw in WALLS.items():
         p = Params(**kw)

@@ -1,5 +1,5 @@
 # Every GLIBC symbol version the shared objects FILES ("|"-separated) need is at most MAX
-# (issue 15, defect 4: the FMU binaries load on glibc 2.17, the manylinux2014 baseline).
+# (the FMU binaries load on glibc 2.17, the manylinux2014 baseline).
 #   cmake -DOBJDUMP=objdump -DMAX=2.17 -DFILES=a.so|b.so -P check_glibc_versions.cmake
 string(REPLACE "|" ";" files "${FILES}")
 set(bad "")

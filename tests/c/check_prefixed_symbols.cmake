@@ -1,5 +1,5 @@
 # Every external symbol defined in the object files OBJECTS ("|"-separated) starts with PREFIX
-# (issue 15, defect 2): cmake -DNM=nm -DPREFIX=Name_ -DOBJECTS=a.o|b.o -P check_prefixed_symbols.cmake
+# Usage: cmake -DNM=nm -DPREFIX=Name_ -DOBJECTS=a.o|b.o -P check_prefixed_symbols.cmake
 string(REPLACE "|" ";" objects "${OBJECTS}")
 set(bad "")
 foreach(obj IN LISTS objects)

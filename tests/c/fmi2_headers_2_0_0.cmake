@@ -3,9 +3,9 @@
 # No registry ships the original 2.0.0 headers (no Debian package; the PyPI packages that ship
 # FMI headers carry modified ones), so the tests make them. Two differences matter to an FMU:
 #  - 2.0.0 declares the five members of fmi2CallbackFunctions const (removed in 2.0.1, #216), so
-#    an FMU that assigns a copy of the struct does not compile (issue 15, defect 3);
+#    an FMU that assigns a copy of the struct does not compile;
 #  - 2.0.0 prefixes every fmi2 function name with FMI2_FUNCTION_PREFIX when it is defined, the
-#    way importers combine source-code FMUs (issue 15, defect 2); fmpy's copy drops the prefix.
+#    way importers combine source-code FMUs; fmpy's copy drops the prefix.
 # Each edit must match exactly once, else the script fails: a changed input cannot pass silently.
 function(replace_once text_var old new)
   string(FIND "${${text_var}}" "${old}" pos)

@@ -1,4 +1,4 @@
-/* Issue 15, defect 2: both FMUs' sources compiled into one shared object, each with its own
+/* Both FMUs' sources compiled into one shared object, each with its own
  * FMI2_FUNCTION_PREFIX (RockingWall_, Diaphragm_), as importers combine source-code FMUs. Each FMU
  * is simulated in Co-Simulation through the combined object and through its own binary; the
  * outputs must agree bitwise (same sources, same compiler flags). The combined object must not

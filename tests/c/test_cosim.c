@@ -117,7 +117,7 @@ static void test_cs_call_sequence(void)
     fmi2FreeInstance(me);
 }
 
-/* Issue 14, finding 15: a CVODE failure inside fmi2DoStep is an fmi2Error whose message names the
+/* A CVODE failure inside fmi2DoStep is an fmi2Error whose message names the
  * CVODE call and CVODE's flag, and leaks nothing (CVodeGetReturnFlagName's string is freed; the
  * ASan build's leak check sees it). A tolerance of 1e-300 asks CVODE for more accuracy than
  * doubles have. */

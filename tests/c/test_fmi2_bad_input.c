@@ -1,4 +1,4 @@
-/* Bad input to the FMI 2.0 Model Exchange API (issue #6): every ME function called in every state
+/* Bad input to the FMI 2.0 Model Exchange API: every ME function called in every state
  * where the standard (FMI 2.0.x, section 3.2.3, the state machine of Model Exchange) forbids it,
  * unknown value references, NULL pointers, invalid, NaN and infinite parameters and inputs.
  * Each must return fmi2Error with a reason passed to the logger (captured here), must not crash,
@@ -382,7 +382,7 @@ static void test_value_references_and_sizes(void)
     }
 }
 
-/* ---- issue 14, finding 14: a function of the other interface type ------------------------ */
+/* ---- a function of the other interface type ------------------------ */
 
 /* Co-Simulation states, reached the same way as in_state's */
 enum { CS_INST, CS_INIT, CS_STEP, CS_TERM, CS_ERROR, N_CS_STATES };
@@ -425,7 +425,7 @@ static const Api CS_ONLY[] = {
     {"fmi2GetBooleanStatus", c_bool_status, 0}, {"fmi2GetStringStatus", c_string_status, 0},
 };
 
-/* Issue 14, finding 14: 7 of 147 forbidden calls returned fmi2OK with nothing logged, all of them
+/* Found by a hostile-input pass: 7 of 147 forbidden calls returned fmi2OK with nothing logged, all of them
  * Model-Exchange functions on a Co-Simulation instance in a state where Model Exchange allows
  * them (fmi2GetNominalsOfContinuousStates when instantiated; fmi2GetEventIndicators,
  * fmi2GetContinuousStates in initialization; fmi2GetDerivatives and others when terminated).
@@ -462,7 +462,7 @@ static void test_finding14_functions_of_the_other_interface_type(void)
 }
 
 /* providesDirectionalDerivative is false: each call is an error. canGetAndSetFMUstate and
- * canSerializeFMUstate are true (issue 15, defect 7): in every state, a state taken can be
+ * canSerializeFMUstate are true: in every state, a state taken can be
  * serialized, read back and set (test_fmu_state.c tests what it restores). */
 static void test_unsupported_functions_and_fmu_state_in_every_state(void)
 {

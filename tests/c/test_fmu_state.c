@@ -1,4 +1,4 @@
-/* Issue 15, defect 7: fmi2GetFMUstate / fmi2SetFMUstate and their serialization, for one FMU
+/* fmi2GetFMUstate / fmi2SetFMUstate and their serialization, for one FMU
  * (compiled twice: -DTEST_ROCKINGWALL against rw_fmi2_static, -DTEST_DIAPHRAGM against
  * dg_fmi2_static).
  *  - Co-Simulation: a step taken after fmi2GetFMUstate and the same step taken again after

@@ -1,4 +1,4 @@
-/* fmi2sim's output files and cleanup registry (host/output_file.c, host/cleanup.c), issue 14:
+/* fmi2sim's output files and cleanup registry (host/output_file.c, host/cleanup.c):
  * finding 1 (a failed write is reported, never a cut file left in place), finding 8 (an existing
  * output survives a failed run; a symlink stays a symlink) and finding 9 (what is registered is
  * removed, what is forgotten is not). Works in a fresh folder under TMPDIR. */

@@ -1,4 +1,4 @@
-"""Issue 14, couple.py: a slave that fails or an FMU that crashes ends the coupled run with a
+"""couple.py under hostile use: a slave that fails or an FMU that crashes ends the coupled run with a
 non-zero exit and the real error first, under both masters; absurd macro steps are refused with
 their range; no extracted FMU is left in the temporary folder. The hostile FMUs are built here
 from the Diaphragm's own sources with one callback replaced, not stored as binaries. Each test is

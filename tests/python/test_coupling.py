@@ -1,5 +1,5 @@
 """RockingWall coupled to the Diaphragm FMU through Co-Simulation (scripts/couple.py), RockingWall
-as a Co-Simulation FMU on its own, and the FMUs' self-containment (issue #5)."""
+as a Co-Simulation FMU on its own, and the FMUs' self-containment."""
 import json
 import os
 import pathlib

@@ -182,7 +182,7 @@ CSV_CASES = {
     "unknown_column": ("time,nosuch\n0,0\n", "column 'nosuch' is not a variable"),
     "huge": ("time,ag\n0,0\n0.1,1e999\n", ":3: column 2: '1e999' is out of range"),
     "binary": ("time,ag\n0,0\x00\x01\x02\n", ":2: binary data"),
-    # issue #6: finite but absurd values would overflow inside the model, far from their line
+    # finite but absurd values would overflow inside the model, far from their line
     "huge_finite": ("time,ag\n0,0\n0.1,1e300\n", ":3: column 2: '1e300' is out of range"),
     "huge_time": ("time,ag\n0,0\n-1e300,0\n", ":3: column 1: '-1e300' is out of range"),
     "nan_time": ("time,ag\nnan,0\n", ":2: column 1: 'nan' is out of range"),

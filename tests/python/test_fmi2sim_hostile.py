@@ -1,6 +1,6 @@
-"""fmi2sim against hostile input (issue 14): full disks, outputs that are inputs, hostile FMUs
+"""fmi2sim against hostile input: full disks, outputs that are inputs, hostile FMUs
 (generated here from the built ones, never stored), absurd options, signals, closed standard
-streams. Each test names the finding of issue 14 it guards; each saw the old fmi2sim fail."""
+streams. Each test names the finding it guards (test_findingNN_...); each saw the old fmi2sim fail."""
 import os
 import pathlib
 import re

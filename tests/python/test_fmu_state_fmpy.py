@@ -1,4 +1,4 @@
-"""FMU state through fmpy's FMU2Slave on the packaged binaries (issue 15, defect 7): a rolled-back
+"""FMU state through fmpy's FMU2Slave on the packaged binaries: a rolled-back
 Co-Simulation step reproduces itself bitwise, and a serialized state set into a second instance
 makes it step identically."""
 import shutil

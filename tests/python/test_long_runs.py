@@ -1,4 +1,4 @@
-"""Long free rocking through fmi2sim (a first piece of issue #6's stability checks): 600 s with
+"""Long free rocking through fmi2sim (a first piece of the stability checks): 600 s with
 e_r = 1 keeps the energy (the drift measured when this was written was 2.5e-5 .. 3.4e-4 at
 rtol 1e-8; the bound leaves a factor 3), and with e_r = 0 a one-hinge wall stops at its first
 impact. The two-body wall does not: restitution acts at the base only, so after the first

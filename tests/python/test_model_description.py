@@ -40,7 +40,7 @@ def test_model_exchange_and_co_simulation_declared(build_dir, name):
     assert md.coSimulation.canHandleVariableCommunicationStepSize
     assert md.coSimulation.canInterpolateInputs
     assert md.modelExchange.canBeInstantiatedOnlyOncePerProcess is False
-    for interface in (md.modelExchange, md.coSimulation):  # issue 15, defect 7
+    for interface in (md.modelExchange, md.coSimulation):  # FMU state
         assert interface.canGetAndSetFMUstate and interface.canSerializeFMUstate
 
 

@@ -1,4 +1,4 @@
-"""ModelStructure of both FMUs against finite differences (issue 15, defect 1).
+"""ModelStructure of both FMUs against finite differences.
 
 For every output and every state derivative, each continuous state and each Real input is
 perturbed in turn through fmpy's low-level FMU2Model API (Model Exchange, continuous-time mode)

@@ -1,4 +1,4 @@
-"""The quick part of issue #6's stability matrix: cases picked from scripts/stability_cases.py
+"""The quick part of the stability matrix: cases picked from scripts/stability_cases.py
 (the full matrix is scripts/stability.py) and judged by its check(): finish within the stated
 bounds of steps and events, no NaN or infinity, no energy gain beyond the input work, collapse
 reported, fmpy and fmi2sim peaks within what rtol implies. About 30 s."""
@@ -25,13 +25,13 @@ QUICK = [
     "2dof-rigid amp_g=3", "2dof-semiRigidHinge dt=0.0005", "2dof-semiRigidHinge dt=0.05",
     "2dof-semiRigidHinge rtol=0.001", "2dof-semiRigidHinge rtol=1e-08", "2dof-semiRigidHinge Kd=1e12 rtol=1e-3",
     "ss-semiRigidHinge El Centro x0.5",
-    # issue 14, finding 7: no energy lost where none is physical
+    # no energy lost where none is physical
     "2dof-semiRigidHinge free er=1 100 s",
 ]
 
 
 def test_the_matrix_covers_every_listed_value():
-    """Each value of each axis of issue #6 is run with every model / hinge-law pair it applies to."""
+    """Each value of each axis  is run with every model / hinge-law pair it applies to."""
     for model, law in sc.PAIRS:
         for axis, values in sc.AXES.items():
             if axis == "Kd" and model != "flexibleTop":
@@ -90,7 +90,7 @@ def test_input_work_is_what_balances_the_energy(fmi2sim_exe, rockingwall_fmu):
 
 
 def test_finding07_default_rtol_keeps_the_energy_of_free_rocking(fmi2sim_exe, rockingwall_fmu, tmp_path):
-    """Issue 14, finding 7: released from q1 = 0.03 rad with e_r = 1 and no input, the wall (FMU
+    """released from q1 = 0.03 rad with e_r = 1 and no input, the wall (FMU
     defaults: 2DOF, semi-rigid hinge, K_d = 1e6) keeps its energy within ENERGY_LOSS_PER_100S over
     100 s at fmi2sim's default rtol; at the old default 1e-6 it lost 2.6 %."""
     out = tmp_path / "free.csv"

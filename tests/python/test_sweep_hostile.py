@@ -1,4 +1,4 @@
-"""Issue 14, the sweeps: resumed results are never reused from other inputs, killed runs are never
+"""The sweeps under hostile use: resumed results are never reused from other inputs, killed runs are never
 counted as finished, a damaged results line costs that line only, one sweep per results file,
 absurd options and hostile files are refused with a message, and nothing is left in the temporary
 folder. Each test is named after its finding and failed on the code before the fix."""
