@@ -86,8 +86,8 @@ def test_finding01_full_disk_exits_nonzero(fmi2sim_exe, rockingwall_fmu, tmp_pat
     out = tmp_path / "out.csv"
     out.write_text("precious\n")
     with zipfile.ZipFile(rockingwall_fmu) as z:
-        room = z.getinfo(SO).file_size + (1 << 20)  # the binary is unpacked, the CSV (~5 MB) is not
-    proc = run(fmi2sim_exe, rockingwall_fmu, "--stop-time", 10, "--output-interval", 1e-4, "--output", out,
+        room = z.getinfo(SO).file_size + (1 << 20)  # the binary is unpacked, the CSV (500 000 rows, > 15 MB) is not
+    proc = run(fmi2sim_exe, rockingwall_fmu, "--stop-time", 10, "--output-interval", 2e-5, "--output", out,
                limits={resource.RLIMIT_FSIZE: room})
     assert_one_clear_error(proc, out, "write failed", "File too large")
     assert out.read_text() == "precious\n"
