@@ -46,7 +46,7 @@ def by_hand(exe, fmu, rec, scale, stop, kd_kN, tmp_path, rtol=1e-6):
     """One fmi2sim run typed out in full, not through rwsweep."""
     out = tmp_path / "hand.json"
     args = [exe, fmu, "--ag", rec, "--ag-scale", repr(scale), "--stop-time", repr(stop), "--rtol", repr(rtol),
-            "--summary", out, "--set", "support=3", "--set", "hingeLaw=3", "--set", "er=0.86", "--set", f"Kd={kd_kN * 1e3!r}"]
+            "--summary", out, "--set", "support=3", "--set", "hingeLaw=4", "--set", "er=0.86", "--set", f"Kd={kd_kN * 1e3!r}"]
     args += [a for k, v in WALL_1.items() for a in ("--set", f"{k}={v!r}")]
     subprocess.run(list(map(str, args)), check=True, capture_output=True, timeout=60)
     return json.loads(out.read_text())["outputs"]
@@ -87,7 +87,9 @@ def test_sweep_peaks_match_the_time_history(fmi2sim_exe, rockingwall_fmu, suite_
         for q in ("s1", "s2"):
             from_th = th[q].abs().max()
             assert from_th > 1e-3  # the wall rocks
-            assert from_th * (1 - 1e-9) <= d.loc[s.record, f"peak_{q}"] <= from_th * 1.005
+            # the summary's max runs over output rows and solver steps: a peak between two steps
+            # of the summary run, which the 0.5 ms grid samples, is missed by at most ~rtol
+            assert from_th * (1 - 1e-4) <= d.loc[s.record, f"peak_{q}"] <= from_th * 1.005
 
 
 def test_resume_skips_finished_runs_and_completes_a_cut_file(fmi2sim_exe, rockingwall_fmu, suite_dir, tmp_path):

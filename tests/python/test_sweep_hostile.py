@@ -197,7 +197,7 @@ def test_finding04_analysis_keeps_every_good_row(tmp_path, capsys):
     lines = path.read_text().splitlines(keepends=True)
     lines[5] = lines[5].replace(",ok,", ',"ok,', 1)
     path.write_text("".join(lines))
-    rows_read = ida.load(path, 1, "flexibleTop", "semiRigidHinge")
+    rows_read = ida.load(path, 1, "flexibleTop", "dohertyHinge")
     assert len(rows_read) == len(lines) - 2
     assert f"{path}:6: " in capsys.readouterr().err
 
@@ -283,7 +283,7 @@ def test_finding16_ida_counts_a_run_once(tmp_path):
     path = synthetic_results(tmp_path)
     lines = path.read_text().splitlines(keepends=True)
     path.write_text("".join(lines + lines[1:4]))  # two sweeps wrote three runs twice
-    assert len(ida.load(path, 1, "flexibleTop", "semiRigidHinge")) == len(lines) - 1
+    assert len(ida.load(path, 1, "flexibleTop", "dohertyHinge")) == len(lines) - 1
 
 
 def test_finding16_finished_sweep_run_again_says_nothing_to_do(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path,
@@ -402,8 +402,8 @@ def synthetic_results(tmp_path):
     for rec in ("r1", "r2"):
         for kd in (5.0, 50.0):
             for pga in (0.1, 0.2, 0.3, 0.4):
-                spec = dict(run_id=f"w1|flexibleTop|semiRigidHinge|kd{kd:g}|{rec}|pga{pga:g}", wall=1,
-                            model="flexibleTop", hinge_law="semiRigidHinge", kd_kN=kd, record=rec, record_pga_g=0.3,
+                spec = dict(run_id=f"w1|flexibleTop|dohertyHinge|kd{kd:g}|{rec}|pga{pga:g}", wall=1,
+                            model="flexibleTop", hinge_law="dohertyHinge", kd_kN=kd, record=rec, record_pga_g=0.3,
                             scale=pga / 0.3, pga_g=pga, key="0" * 16)
                 out.append(runner._row(spec, "ok", peak_s1=0.1 * pga + (kd == 5.0) * 0.01, peak_s2=0.05 * pga,
                                        peak_F_top=10.0, collapsed=pga > 0.3 + 0.05 * (rec == "r2"), impacts=3,
