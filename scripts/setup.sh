@@ -40,6 +40,15 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
   echo "$want" > "$stamp"
 fi
 
+# The package rockingwall (python/rockingwall) and the reference solver rwref (reference/), both
+# editable: the package finds the compiled parts in build/ (rockingwall/_paths.py). `pip install .`
+# (without -e) is what a user elsewhere runs: it builds with CMake and installs the binaries too.
+if ! .venv/bin/python -c "import rockingwall, rwref" 2>/dev/null; then
+  echo "setup: installing the packages rockingwall and rwref into .venv (editable)"
+  .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e . -Cwheel.cmake=false
+  .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e reference
+fi
+
 # The CMake build (Debian's cmake, not the one fmpy pulls into the venv).
 /usr/bin/cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
 /usr/bin/cmake --build build -j2 >> build.log 2>&1 || { cat build.log; exit 1; }

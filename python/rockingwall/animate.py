@@ -1,5 +1,5 @@
 """An animated GIF of the two-body wall rocking under a record, restrained at the top by the
-diaphragm spring K_d, drawn from an fmi2sim run, with the ground acceleration below. The wall is
+diaphragm spring K_d, drawn from a run of the exact engine, with the ground acceleration below. The wall is
 drawn to scale but its rotations are exaggerated (--exaggerate, stated in the title): tens of
 millimetres on a 2.5 m wall are invisible otherwise.
 
@@ -8,41 +8,21 @@ the base corner it rocks on (side sign(q1)), the upper body by q2 about the mid-
 which the joint closes (side -sign(q2 - q1)), as in docs/model.md. The diaphragm is drawn fixed
 (u_top = 0, as in the run), the ground moves with the record.
 
-  .venv/bin/python scripts/animate_wall.py --record ff01a --pga 0.2 --kd 50 --out docs/img/rocking_wall.gif
+  rockingwall animate --wall paper1 --Kd 50kN/m/m --pga 0.2 RECORD.AT2 --out docs/img/rocking_wall.gif
 """
-import argparse
-import os
 import pathlib
-import subprocess
 import sys
-import tempfile
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-import pandas as pd
 from matplotlib import animation
 from tqdm import tqdm
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "reference"))
-sys.path.insert(0, str(REPO / "scripts"))
-from rwsweep import grid, records  # noqa: E402
-
-BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
-
-
-def simulate(args, rec, geometry, t_end):
-    scale = args.pga / rec.pga_g if args.pga else args.scale
-    sets = dict(geometry, Kd=args.kd * 1e3, support=3, hingeLaw=4, er=0.86)
-    with tempfile.TemporaryDirectory() as tmp:
-        out = pathlib.Path(tmp) / "run.csv"
-        cmd = [args.fmi2sim, args.fmu, "--ag", rec.path, "--ag-scale", repr(scale), "--stop-time", repr(t_end),
-               "--output-interval", repr(args.speed / args.fps / 4), "--output", str(out)]
-        cmd += [a for k, v in sets.items() for a in ("--set", f"{k}={v!r}")]
-        subprocess.run(cmd, check=True, capture_output=True, text=True)
-        return pd.read_csv(out), scale
+from . import cli_common as cc
+from .api import simulate
+from .units import format_kd
 
 
 def rotate(points, pivot, angle):
@@ -74,32 +54,22 @@ def spring(x0, x1, y, coils=6, amp=0.04):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--record", default="ff01a", help="FEMA P695 far-field component, or an .AT2 file")
-    p.add_argument("--pga", type=float, default=0.2, help="scale the record to this PGA [g] (0: use --scale)")
-    p.add_argument("--scale", type=float, default=1.0)
-    p.add_argument("--kd", type=float, default=50.0, help="K_d [kN/m per m]")
-    p.add_argument("--wall", type=int, default=1)
+    p = cc.Parser(prog="rockingwall animate", description=__doc__)
+    cc.add_wall_arguments(p)
+    cc.add_record_arguments(p)
     p.add_argument("--t-end", type=float, default=20.0, help="seconds of the record shown")
     p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per second of GIF")
     p.add_argument("--fps", type=int, default=12)
     p.add_argument("--exaggerate", type=float, default=5.0, help="factor on the drawn rotations")
-    p.add_argument("--out", default=str(REPO / "results" / "rocking_wall.gif"))
-    p.add_argument("--fmi2sim", default=str(BUILD / "fmi2sim"))
-    p.add_argument("--fmu", default=str(BUILD / "RockingWall.fmu"))
+    p.add_argument("--out", default="results/rocking_wall.gif")
     args = p.parse_args(argv)
 
-    if args.record.lower().endswith(".at2"):
-        rec = records.read_at2(args.record)
-    else:
-        rec = {r.name: r for r in records.fema_farfield(REPO / "results" / "records" / "fema_farfield")}[args.record]
-    geometry = grid.wall_parameters(args.wall)
-    b, h = geometry["b"], geometry["h"]
+    wall = cc.wall_from_args(args)
+    rec = cc.record_from_args(args.record, args)
+    b, h = wall.params["b"], wall.params["h"]
     t_end = min(args.t_end, rec.duration)
-    run, scale = simulate(args, rec, geometry, t_end)
-    body = pathlib.Path(rec.path).read_text().splitlines()[4:]  # after the 4 header lines, in g
-    acc = np.array(" ".join(body).split(), dtype=float) * scale
-    t_acc = np.arange(acc.size) * (rec.duration / (acc.size - 1))
+    run = simulate(wall, rec, stop_time=t_end, output_interval=args.speed / args.fps / 4).history
+    t_acc, acc = rec.t, rec.ag / 9.81
 
     frames = np.arange(0.0, t_end, args.speed / args.fps)
     s1 = np.interp(frames, run.time, run.s1)
@@ -120,7 +90,7 @@ def main(argv=None):
     ax.add_patch(upper_patch)
     (spring_line,) = ax.plot([], [], color="tab:blue", lw=1.2)
     label = ax.text(-0.58, -0.08, "", fontsize=7, va="top")
-    ax.set_title(f"wall {args.wall}, K_d = {args.kd:g} kN/m, {rec.name} at PGA {scale * rec.pga_g:.2f} g\n"
+    ax.set_title(f"b = {b:g} m, h = {h:g} m, K_d = {format_kd(wall.params['Kd'])}, {rec.name}\n"
                  f"rotations drawn x{args.exaggerate:g}", fontsize=7)
     ax_ag.plot(t_acc[t_acc <= t_end], acc[t_acc <= t_end], color="0.4", lw=0.5)
     (marker,) = ax_ag.plot([], [], "o", color="tab:red", ms=3)
@@ -142,7 +112,7 @@ def main(argv=None):
 
     anim = animation.FuncAnimation(fig, draw, frames=len(frames), blit=True)
     out = pathlib.Path(args.out)
-    out.parent.mkdir(parents=True, exist_ok=True)
+    cc.output_dir(out.parent)
     with tqdm(total=len(frames), desc="frames") as bar:
         anim.save(out, writer=animation.PillowWriter(fps=args.fps), progress_callback=lambda i, n: bar.update(1))
     print(f"wrote {out} ({out.stat().st_size / 1e6:.2f} MB, {len(frames)} frames); peaks in the clip: "

@@ -16,9 +16,9 @@ fmpy (FMU2Slave) and libcosim (libcosimpy). The command line runs each master in
 the master and the signal, not a dead interpreter; every file the child unpacks goes into a
 temporary folder removed afterwards. The ground motion is held over each step in both.
 
-    scripts/couple.py                                  # wall 1, El Centro x 0.5, fmpy master
-    scripts/couple.py --master both                    # fmpy and libcosim, and their difference
-    scripts/couple.py --macro-step 0.005 --t-end 20 --Kd 1e5 --m 2000 --k 7e5 --zeta 0.05
+    rockingwall couple                                  # wall 1, El Centro x 0.5, fmpy master
+    rockingwall couple --master both                    # fmpy and libcosim, and their difference
+    rockingwall couple --macro-step 0.005 --t-end 20 --Kd 1e5 --m 2000 --k 7e5 --zeta 0.05
 
 Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms) and results/couple.png.
 """
@@ -34,16 +34,11 @@ import tempfile
 
 import numpy as np
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "reference"))
-
-from rwref.inputs import el_centro, read_at2  # noqa: E402
-from rwref.params import WALLS  # noqa: E402
+from . import _paths, records
+from .names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
 
 WALL_OUT = ["s1", "s2", "F_top", "energy", "P_ground", "dissipated"]
 DIA_OUT = ["u", "v", "energy", "P_ground", "P_damping"]
-MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
 
 
 # Meaningful ranges of the master's own options (low, high); the macro step is also at most t_end.
@@ -165,13 +160,13 @@ def _close_slaves(slaves):
 
 def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86):
     """Real and Integer start values of RockingWall for one of the paper's walls."""
-    real = dict(WALLS[wall], Kd=Kd, er=er)
+    real = dict(paper_wall(wall), Kd=Kd, er=er)
     return real, {"support": MODELS["flexibleTop"], "hingeLaw": LAWS[hinge_law]}
 
 
 def ground_motion(record="elcentro", scale=0.5):
-    sig = el_centro(scale) if record == "elcentro" else read_at2(record, scale=scale)
-    return np.asarray(sig.t, float), np.asarray(sig.a, float)
+    rec = records.load(record).scaled(scale)
+    return np.asarray(rec.t, float), np.asarray(rec.ag, float)
 
 
 class CoupledResult(dict):
@@ -337,7 +332,7 @@ def run_master_subprocess(master, args_list, out_json):
     """Run one master of this script in a fresh process (an FMU that crashes, or libcosim aborting,
     ends that process only) with its own temporary folder, removed afterwards with whatever the
     child unpacked, even when it was killed. Returns the CompletedProcess."""
-    cmd = [sys.executable, str(pathlib.Path(__file__).resolve()), "--master", master, "--json", str(out_json)]
+    cmd = [sys.executable, "-m", "rockingwall", "couple", "--master", master, "--json", str(out_json)]
     with tempfile.TemporaryDirectory(prefix="couple_") as tmp:
         return subprocess.run(cmd + list(args_list), capture_output=True, text=True, errors="replace",
                               timeout=1800, env=dict(os.environ, TMPDIR=tmp))
@@ -408,11 +403,11 @@ def plot(r, path, title, other=None):
 
 def parse_args(argv):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--wall-fmu", default=str(REPO / "build" / "RockingWall.fmu"))
-    ap.add_argument("--diaphragm-fmu", default=str(REPO / "build" / "Diaphragm.fmu"))
+    ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
+    ap.add_argument("--diaphragm-fmu", help="default: the installed Diaphragm.fmu")
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")
     ap.add_argument("--scale", type=float, default=0.5)
-    ap.add_argument("--wall", type=int, default=1, choices=sorted(WALLS))
+    ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
     ap.add_argument("--Kd", type=float, default=1e5, help="wall-to-diaphragm spring, N/m per m")
     ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(LAWS))
     ap.add_argument("--m", type=float, default=2000.0, help="diaphragm mass, kg per m of wall")
@@ -423,11 +418,14 @@ def parse_args(argv):
     ap.add_argument("--t-end", type=float, default=30.0, help=f"[s], in [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}]")
     ap.add_argument("--rtol", type=float, default=1e-6, help=f"the slaves' tolerance, in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]")
     ap.add_argument("--master", choices=["fmpy", "libcosim", "both"], default="fmpy")
-    ap.add_argument("--out", default=str(REPO / "results" / "couple.csv"))
-    ap.add_argument("--plot", default=str(REPO / "results" / "couple.png"))
+    ap.add_argument("--out", default="results/couple.csv")
+    ap.add_argument("--plot", default="results/couple.png")
     ap.add_argument("--json", help="run one master in this process and write its result arrays as JSON "
                                    "(how the command line runs each master in a child process)")
-    return ap.parse_args(argv)
+    a = ap.parse_args(argv)
+    a.wall_fmu = a.wall_fmu or str(_paths.wall_fmu())
+    a.diaphragm_fmu = a.diaphragm_fmu or str(_paths.diaphragm_fmu())
+    return a
 
 
 def run_here(a):

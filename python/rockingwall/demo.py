@@ -1,24 +1,22 @@
 """The main job: wall 1 of the paper under El Centro 1940 at 50 %, simulated through the
-RockingWall FMU (fmpy, CVode) as the simply supported wall and with a flexible diaphragm
+exact engine (or --engine fmi2sim / fmpy: the FMU) as the simply supported wall and with a flexible diaphragm
 (K_d = 500, 50, 5 kN/m per metre of wall, the cases of the paper's Table 5.4 / Fig. 5.4), with
 the default hinge law (dohertyHinge).
 
 Prints the peak mid-height and top displacements beside the paper's, writes the time histories
 to a CSV and draws them (results/main_elcentro.csv, results/main_elcentro.png)."""
-import argparse
-import pathlib
 import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from tqdm import tqdm
+import pandas as pd
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "reference"))
-import rw_fmu  # noqa: E402
-from rwref import inputs  # noqa: E402
+from . import cli_common as cc
+from . import records
+from .api import ENGINES, simulate
+from .wall import Wall
 
 # Table 5.4, El Centro at 50 %: (label, model, K_d in kN/m, paper s1, paper s2) [m]
 CASES = [
@@ -27,39 +25,22 @@ CASES = [
     ("2DOF Kd=50 kN/m per m", "flexibleTop", 50.0, 0.137, 0.019),
     ("2DOF Kd=5 kN/m per m", "flexibleTop", 5.0, 0.050, 0.109),
 ]
-WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0, er=0.86)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--fmu", default=str(REPO / "build" / "RockingWall.fmu"))
+def main(argv=None):
+    parser = cc.Parser(prog="rockingwall demo", description=__doc__)
     parser.add_argument("--scale", type=float, default=0.5, help="factor on the record as given (default 0.5)")
-    parser.add_argument("--out", default=str(REPO / "results"))
-    parser.add_argument("--rtol", type=float, default=1e-6)
-    args = parser.parse_args()
+    parser.add_argument("--engine", default="exact", choices=ENGINES)
+    parser.add_argument("--out", default="results", help="folder for the CSV and the plot (created if missing)")
+    args = parser.parse_args(argv)
 
-    record = inputs.el_centro(args.scale)
-    t_in, ag_in = record.t, record.a
-    t_end = float(t_in[-1])
-    out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
-
+    record = records.el_centro().scaled(args.scale)
+    out = cc.output_dir(args.out)
     runs = {}
-    with tqdm(total=round(len(CASES) * t_end), unit="s", desc="simulated time", mininterval=1.0,
-              bar_format="{l_bar}{bar}| {n:.0f}/{total:.0f} s") as bar:
-        for label, model, kd, _, _ in CASES:
-            done = bar.n
-
-            def progress(time, done=done):
-                step = int(done + time) - bar.n  # whole seconds only: tqdm redraws at most once a second
-                if step > 0:
-                    bar.update(step)
-            params = dict(WALL_1, support=model, hinge_law="dohertyHinge")
-            if kd is not None:
-                params["Kd"] = kd * 1e3  # kN/m per m -> N/m per m
-            runs[label] = rw_fmu.simulate(args.fmu, t_end, t_in, ag_in, rtol=args.rtol,
-                                          output_interval=0.01, progress=progress, **params)
-            bar.update(round(done + t_end) - bar.n)
+    for label, support, kd, _, _ in CASES:
+        extra = {} if kd is None else {"Kd": kd * 1e3}  # kN/m per m -> N/m per m
+        wall = Wall.make("paper1", support=support, hingeLaw="dohertyHinge", er=0.86, **extra)
+        runs[label] = simulate(wall, record, engine=args.engine)
 
     lines = [f"Wall 1 (b = 0.15 m, h = 2.5 m, W = 6.622 kN/m), El Centro 1940 x {args.scale}, e_r = 0.86, "
              "hinge law dohertyHinge",
@@ -73,32 +54,30 @@ def main():
     (out / "main_job.txt").write_text("\n".join(lines) + "\n")
 
     csv_path = out / "main_elcentro.csv"
-    grid = np.arange(0.0, t_end + 1e-9, 0.01)
-    columns = [grid, np.interp(grid, t_in, ag_in)]
-    header = ["time", "ag"]
+    grid = runs[CASES[0][0]].history["time"]
+    table = {"time_s": grid, "ag_m_s2": runs[CASES[0][0]].history["ag"]}
     for label, run in runs.items():
         key = label.split(" kN")[0].replace(" ", "_").replace("=", "")
         for name in ("s1", "s2"):
-            columns.append(rw_fmu.on_grid(run.t, getattr(run, name), grid, right=np.nan))
-            header.append(f"{name}_{key}")
-    np.savetxt(csv_path, np.column_stack(columns), delimiter=",", header=",".join(header), comments="", fmt="%.6g")
+            table[f"{name}_m_{key}"] = run.history[name]
+    cc.write_atomic(csv_path, lambda tmp: pd.DataFrame(table).to_csv(tmp, index=False, float_format="%.6g"))
 
     png_path = out / "main_elcentro.png"
     fig, axes = plt.subplots(len(runs), 1, figsize=(9, 2.2 * len(runs)), sharex=True)
     for ax, (label, run) in zip(axes, runs.items()):
-        ax.plot(run.t, run.s1, lw=0.8, label="s1 (mid-height)")
-        ax.plot(run.t, run.s2, lw=0.8, label="s2 (top)")
+        ax.plot(run.history.time, run.history.s1, lw=0.8, label="s1 (mid-height)")
+        ax.plot(run.history.time, run.history.s2, lw=0.8, label="s2 (top)")
         ax.set_ylabel("m")
         ax.set_title(label, fontsize=9, loc="left")
         ax.grid(alpha=0.3)
     axes[0].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel("time [s]")
-    fig.suptitle(f"Wall 1, El Centro 1940 x {args.scale} (RockingWall FMU, fmpy CVode)")
+    fig.suptitle(f"Wall 1, El Centro 1940 x {args.scale} ({args.engine} engine)")
     fig.tight_layout()
-    fig.savefig(png_path, dpi=110)
-    print(f"\nwrote {csv_path.relative_to(REPO) if csv_path.is_relative_to(REPO) else csv_path}"
-          f" and {png_path.relative_to(REPO) if png_path.is_relative_to(REPO) else png_path}")
+    cc.write_atomic(png_path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"))
+    print(f"\nwrote {csv_path} and {png_path}")
+    return 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

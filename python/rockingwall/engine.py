@@ -1,35 +1,74 @@
-"""Python binding of the exact event-driven engine (fmu_src/rw_engine.h, build/librwengine.so).
+"""Python binding of the exact event-driven engine (fmu_src/rw_engine.h, librwengine.so).
 
-    import rw_engine
-    r = rw_engine.run(t, ag, t_end=80.0, support=3, hingeLaw=4, Kd=5e4)
+    from rockingwall import engine
+    r = engine.run(t, ag, t_end=80.0, support=3, hingeLaw=4, Kd=5e4)
     r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts
 
 `t`, `ag` (and optionally `u_top`) are the samples of a piecewise-linear record (unequal spacing
-allowed, ends held). Parameters are the FMU's, by name; the struct layout is read from the one
-parameter table, fmu_src/rw_parameters.h, so it cannot drift from the C side.
+allowed, ends held). Parameters are the FMU's, by name; the struct layout, defaults, units and
+ranges are read from the library's own parameter table (RW_PARAM_INFO, generated from
+fmu_src/rw_parameters.h), so they cannot drift from the C side.
 """
 import ctypes
+import dataclasses
+import functools
 import math
-import os
-import pathlib
-import re
 
 import numpy as np
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-LIB_PATH = pathlib.Path(os.environ.get("RW_ENGINE_LIB", REPO / "build" / "librwengine.so"))
+from . import _paths
+
 NX = 4
 ERRORS = {1: "bad argument", 2: "bad parameters", 3: "unsupported", 4: "Zeno", 5: "no memory"}
 
 
-def _param_fields():
-    text = (REPO / "fmu_src" / "rw_parameters.h").read_text()
-    rows = re.findall(r"^P\((\w+),\s*\d+,\s*(Real|Integer),", text, re.M)
-    return [(name, ctypes.c_double if kind == "Real" else ctypes.c_int) for name, kind in rows]
+class _ParamInfo(ctypes.Structure):
+    _fields_ = [("name", ctypes.c_char_p), ("vr", ctypes.c_uint), ("is_integer", ctypes.c_int),
+                ("unit", ctypes.c_char_p), ("default", ctypes.c_double), ("lo", ctypes.c_double),
+                ("hi", ctypes.c_double), ("offset", ctypes.c_size_t), ("description", ctypes.c_char_p)]
 
 
-class Params(ctypes.Structure):
-    _fields_ = _param_fields()
+@dataclasses.dataclass(frozen=True)
+class Parameter:
+    """One row of the parameter table: unit is the SI unit values are given in."""
+    name: str
+    vr: int
+    is_integer: bool
+    unit: str
+    default: float
+    lo: float
+    hi: float
+    offset: int
+    description: str
+
+    def check(self, value):
+        """ValueError naming the parameter, the value and its closed range."""
+        ok = math.isfinite(value) and self.lo <= value <= self.hi and (not self.is_integer or value == int(value))
+        if not ok:
+            kind = "an integer in" if self.is_integer else "in"
+            raise ValueError(f"{self.name} = {value!r} {self.unit}: must be {kind} [{self.lo:g}, {self.hi:g}]")
+
+
+@functools.cache
+def parameter_table():
+    """{name: Parameter} in the order of the C table."""
+    lib = library()
+    n = ctypes.c_size_t.in_dll(lib, "RW_NUMBER_OF_PARAMETERS").value
+    rows = (_ParamInfo * n).in_dll(lib, "RW_PARAM_INFO")
+    return {r.name.decode(): Parameter(r.name.decode(), r.vr, bool(r.is_integer), r.unit.decode(), r.default,
+                                       r.lo, r.hi, r.offset, r.description.decode()) for r in rows}
+
+
+@functools.cache
+def _params_struct():
+    """The ctypes twin of struct rw_params, checked field by field against the C offsets."""
+    table = parameter_table()
+    cls = type("Params", (ctypes.Structure,), {"_fields_": [
+        (name, ctypes.c_int if row.is_integer else ctypes.c_double) for name, row in table.items()]})
+    for name, row in table.items():
+        if getattr(cls, name).offset != row.offset:
+            raise RuntimeError(f"rw_params layout differs from the library at {name}")
+    return cls
 
 
 class _Record(ctypes.Structure):
@@ -84,11 +123,8 @@ _lib = None
 def library():
     global _lib
     if _lib is None:
-        if not LIB_PATH.exists():
-            raise FileNotFoundError(f"{LIB_PATH} is missing: build it (cmake --build build)")
-        lib = ctypes.CDLL(str(LIB_PATH))
-        lib.rw_params_default.argtypes = [ctypes.POINTER(Params)]
-        lib.rw_engine_run.argtypes = [ctypes.POINTER(Params), ctypes.POINTER(_Record), ctypes.POINTER(_Options),
+        lib = ctypes.CDLL(str(_paths.engine_library()))
+        lib.rw_engine_run.argtypes = [ctypes.c_void_p, ctypes.POINTER(_Record), ctypes.POINTER(_Options),
                                       ctypes.POINTER(_Result)]
         lib.rw_engine_run.restype = ctypes.c_int
         _lib = lib
@@ -97,13 +133,13 @@ def library():
 
 def params(**values):
     """The C parameter struct: the table's defaults, then `values` by name."""
-    p = Params()
+    p = _params_struct()()
     library().rw_params_default(ctypes.byref(p))
-    names = {name for name, _ in Params._fields_}
+    names = {name for name, _ in p._fields_}
     for k, v in values.items():
         if k not in names:
             raise KeyError(f"unknown parameter {k!r} (known: {', '.join(sorted(names))})")
-        setattr(p, k, v)
+        setattr(p, k, int(v) if parameter_table()[k].is_integer else float(v))
     return p
 
 

@@ -1,6 +1,7 @@
 """Run the RockingWall FMU with fmpy: one place that maps the reference solver's parameter names
 onto the FMU's variables, turns an acceleration signal into fmpy's input table and returns the
 outputs as plain numpy arrays."""
+import contextlib
 from dataclasses import dataclass
 
 import numpy as np
@@ -12,9 +13,10 @@ from fmpy import simulate_fmu
 # the time and the states but never applies the inputs; only the root function g does. So inside
 # a step the FMU sees the input of the last root evaluation (a lag of up to one step), which for a
 # rocking wall under an accelerogram changes peaks and can exhaust CVODE's steps (mxstep).
-# fmpy_input_in_rhs() installs a right-hand side that applies the input first; it is on by default
-# here and tests/python/test_fmpy_known_issues.py shows the difference, so it will tell us when
-# fmpy is fixed.
+# fmpy_input_in_rhs() installs, for the duration of a `with` block, a right-hand side that applies
+# the input first. simulate() uses it unless told not to (fmpy_input_fix=False); nothing is patched
+# on import, and tests/python/test_fmpy_known_issues.py shows the difference, so it will tell us
+# when fmpy is fixed.
 _FMPY_RHS = fmpy.sundials.CVodeSolver.f
 
 
@@ -23,15 +25,18 @@ def _rhs_applying_input(self, t, y, ydot, user_data):
     return _FMPY_RHS(self, t, y, ydot, user_data)
 
 
+@contextlib.contextmanager
 def fmpy_input_in_rhs(enabled=True):
-    """Apply inputs in fmpy's CVode right-hand side (True) or restore fmpy's own f (False)."""
+    """Within the block, fmpy's CVode right-hand side applies the inputs (enabled) or is fmpy's own."""
+    saved = fmpy.sundials.CVodeSolver.f
     fmpy.sundials.CVodeSolver.f = _rhs_applying_input if enabled else _FMPY_RHS
+    try:
+        yield
+    finally:
+        fmpy.sundials.CVodeSolver.f = saved
 
 
-fmpy_input_in_rhs(True)
-
-SUPPORTS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
+from .names import HINGE_LAWS, SUPPORTS  # noqa: E402  (the one copy of the name maps)
 
 # reference-solver (Python) name -> FMU variable name
 PARAMETER_NAMES = {
@@ -71,10 +76,10 @@ def on_grid(t, x, grid, right=None):
 
 
 def start_values(support="flexibleTop", hinge_law="dohertyHinge", q0=None, dq0=None, **params):
-    """FMU start values from reference-solver style keyword arguments."""
+    """FMU start values from keyword arguments named as the reference solver or as the FMU names them."""
     values = {"support": SUPPORTS[support], "hingeLaw": HINGE_LAWS[hinge_law]}
     for name, value in params.items():
-        values[PARAMETER_NAMES[name]] = float(value)
+        values[PARAMETER_NAMES.get(name, name)] = float(value)
     if q0 is not None:
         values["q1"], values["q2"] = map(float, q0)
     if dq0 is not None:
@@ -91,21 +96,29 @@ def input_table(t, ag, u_top=None):
 
 
 def simulate(fmu, t_end, t_in=None, ag_in=None, rtol=1e-6, output_interval=1e-3,
-             solver="CVode", step_size=None, logger=None, progress=None, fmi_type="ModelExchange", **kwargs):
+             solver="CVode", step_size=None, logger=None, progress=None, fmi_type="ModelExchange",
+             fmpy_input_fix=True, **kwargs):
     """Simulate the FMU from 0 to t_end with fmpy; kwargs are start_values() arguments.
     fmi_type "CoSimulation" runs the FMU's own CVODE (fmi2DoStep) with communication steps of
-    output_interval; rtol then goes to fmi2SetupExperiment and `solver` is not used."""
+    output_interval; rtol then goes to fmi2SetupExperiment and `solver` is not used.
+    fmpy_input_fix: apply the inputs in fmpy's CVode right-hand side during this run (see above)."""
     inputs = None if t_in is None else input_table(np.asarray(t_in), np.asarray(ag_in))
     callback = None
     if progress is not None:
         def callback(time, recorder):
             progress(time)
             return True
-    result = simulate_fmu(
+    with fmpy_input_in_rhs(fmpy_input_fix):
+        result = _simulate_fmu(fmu, t_end, solver, step_size, rtol, output_interval, kwargs, inputs, logger,
+                               callback, fmi_type)
+    return FmuRun(t=result["time"], s1=result["s1"], s2=result["s2"], F_top=result["F_top"],
+                  q1=result["q1"], q2=result["q2"], impacts=int(result["impacts"][-1]),
+                  collapsed=bool(result["collapsed"][-1]))
+
+
+def _simulate_fmu(fmu, t_end, solver, step_size, rtol, output_interval, kwargs, inputs, logger, callback, fmi_type):
+    return simulate_fmu(
         str(fmu), start_time=0.0, stop_time=t_end, solver=solver, step_size=step_size,
         relative_tolerance=rtol, output_interval=output_interval,
         start_values=start_values(**kwargs), input=inputs, output=OUTPUTS,
         logger=logger, debug_logging=logger is not None, step_finished=callback, fmi_type=fmi_type)
-    return FmuRun(t=result["time"], s1=result["s1"], s2=result["s2"], F_top=result["F_top"],
-                  q1=result["q1"], q2=result["q2"], impacts=int(result["impacts"][-1]),
-                  collapsed=bool(result["collapsed"][-1]))

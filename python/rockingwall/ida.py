@@ -1,5 +1,5 @@
 """Incremental dynamic analysis, collapse fragility and the K_d x intensity map, from the results
-CSV of scripts/sweep.py (one wall, model and hinge law at a time).
+CSV of `rockingwall sweep` (one wall, model and hinge law at a time).
 
 Writes three PNGs to --out and prints the fragility fits:
   ida_curves.png   peak s1 and s2 against PGA for every record, one column per K_d
@@ -19,9 +19,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rwsweep import fragility, store  # noqa: E402
-from rwsweep.runner import ERROR, OK, RETRIED  # noqa: E402
+from .sweep import fragility, store
+from .sweep.runner import ERROR, OK, RETRIED
 
 def report_not_ok(d, path):
     """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the
@@ -30,7 +29,7 @@ def report_not_ok(d, path):
     if len(unfinished):
         print(f"{path}: {len(unfinished)} runs were killed or timed out and are NOT in the plots (often the runs "
               f"nearest collapse), e.g. {unfinished.run_id.iloc[0]}: {unfinished.message.iloc[0]}; "
-              "resume the sweep (the same sweep.py command) to run them again", file=sys.stderr)
+              "resume the sweep (the same rockingwall sweep command) to run them again", file=sys.stderr)
     failed = d[d.status == ERROR]
     if len(failed):
         print(f"{path}: {len(failed)} runs failed and are left out, e.g. {failed.record.iloc[0]}: "
@@ -139,7 +138,7 @@ def kd_map(d, path):
 
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("results", help="results CSV of scripts/sweep.py")
+    p.add_argument("results", help="results CSV of `rockingwall sweep`")
     p.add_argument("--out", default="results")
     p.add_argument("--wall", type=int, default=1)
     p.add_argument("--model", default="flexibleTop")

@@ -6,8 +6,6 @@ between samples and the end values HELD outside the sampled range (before the fi
 last sample), the same convention as a zero-order-hold-free FMU input that keeps its last value.
 """
 import math
-import os
-import re
 
 import numpy as np
 
@@ -132,82 +130,3 @@ def el_centro(scale=1.0, g=G_STD):
     dt = float(acc.time_step)
     t = np.arange(data.size) * dt
     return Signal(t, data * g * scale, name=f"El Centro 1940 x{scale}")
-
-
-_FLOAT = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?"
-
-
-def _float(tok, path, lineno):
-    try:
-        v = float(tok.replace("D", "E").replace("d", "e"))
-    except ValueError:
-        raise ValueError(f"{path}:{lineno}: cannot read {tok!r} as a number") from None
-    if not math.isfinite(v):
-        raise ValueError(f"{path}:{lineno}: non-finite value {tok!r}")
-    return v
-
-
-def read_csv(path, units="g", scale=1.0, g=G_STD):
-    """Two columns ``time, accel`` (comma, semicolon, tab or blank separated).  Blank lines and
-    lines starting with '#' are skipped; one non-numeric header line is allowed as the first
-    data line.  units: "g" or "m/s2".  Returns a Signal in m/s^2 times `scale`."""
-    if units not in ("g", "m/s2"):
-        raise ValueError(f"read_csv: units must be 'g' or 'm/s2', got {units!r}")
-    path = os.fspath(path)
-    ts, acc = [], []
-    seen_data = False
-    with open(path, encoding="utf-8-sig") as fh:
-        for lineno, line in enumerate(fh, 1):
-            s = line.strip()
-            if not s or s.startswith("#"):
-                continue
-            toks = [x for x in re.split(r"[,;\s]+", s) if x]
-            if not seen_data and not re.fullmatch(_FLOAT, toks[0]):
-                seen_data = True  # header line
-                continue
-            seen_data = True
-            if len(toks) != 2:
-                raise ValueError(f"{path}:{lineno}: expected 2 columns (time, accel), found {len(toks)}")
-            t, a = _float(toks[0], path, lineno), _float(toks[1], path, lineno)
-            if ts and t <= ts[-1]:
-                raise ValueError(f"{path}:{lineno}: time {t} is not strictly increasing (previous {ts[-1]})")
-            ts.append(t)
-            acc.append(a)
-    if len(ts) < 2:
-        raise ValueError(f"{path}: need at least 2 data lines, found {len(ts)}")
-    k = (g if units == "g" else 1.0) * scale
-    return Signal(np.array(ts), np.array(acc) * k, name=os.path.basename(path))
-
-
-def read_at2(path, scale=1.0, g=G_STD):
-    """PEER NGA .AT2: 4 header lines (line 3 states units of g, line 4 gives NPTS and DT, either
-    "NPTS=  n, DT=  dt SEC" or the old "n  dt  NPTS, DT"), then the values in g.  Time starts at 0.
-    Returns a Signal in m/s^2 times `scale`."""
-    path = os.fspath(path)
-    with open(path, encoding="latin-1") as fh:
-        lines = fh.read().splitlines()
-    if len(lines) < 4:
-        raise ValueError(f"{path}:{len(lines) + 1}: file ends inside the 4-line AT2 header")
-    if not re.search(r"\bG\b", lines[2].upper()):
-        raise ValueError(f"{path}:3: expected the units line to say the values are in G, got {lines[2].strip()!r}")
-    hdr = lines[3]
-    m_n = re.search(r"NPTS\s*=\s*(\d+)", hdr, re.I)
-    m_dt = re.search(r"DT\s*=\s*(" + _FLOAT + ")", hdr, re.I)
-    if m_n and m_dt:
-        npts, dt = int(m_n.group(1)), _float(m_dt.group(1), path, 4)
-    else:
-        toks = re.split(r"[,\s]+", hdr.strip())
-        try:
-            npts, dt = int(toks[0]), _float(toks[1], path, 4)
-        except (ValueError, IndexError):
-            raise ValueError(f"{path}:4: cannot find NPTS and DT in the header line {hdr.strip()!r}") from None
-    if npts <= 0 or not dt > 0:
-        raise ValueError(f"{path}:4: need NPTS > 0 and DT > 0, got NPTS={npts}, DT={dt}")
-    vals = []
-    for lineno, line in enumerate(lines[4:], 5):
-        for tok in line.replace(",", " ").split():
-            vals.append(_float(tok, path, lineno))
-    if len(vals) != npts:
-        raise ValueError(f"{path}:{len(lines)}: header (line 4) announces NPTS={npts} but the file has {len(vals)} values")
-    t = np.arange(npts) * dt
-    return Signal(t, np.array(vals) * g * scale, name=os.path.basename(path))

@@ -26,8 +26,8 @@ fmpy.logging.addLoggerProxy = _add_logger_proxy_keeping_the_logger
 REPO = pathlib.Path(__file__).resolve().parents[2]
 BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
 
-# The reference solver is a plain package under reference/ (no install step needed).
-sys.path.insert(0, str(REPO / "reference"))
+# rockingwall and the reference solver rwref are installed into the venv (scripts/setup.sh); the
+# developer generators (gen_model_description, stability_cases) are scripts run by path.
 sys.path.insert(0, str(REPO / "scripts"))
 
 

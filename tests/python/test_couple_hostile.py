@@ -11,9 +11,8 @@ import zipfile
 
 import pytest
 
-import couple
+from rockingwall import couple
 
-SCRIPT = pathlib.Path(__file__).resolve().parents[2] / "scripts" / "couple.py"
 
 # After 300 right-hand-side evaluations (t = 0.033 s at the defaults) the diaphragm's
 # derivatives become NaN (CVODE fails: fmi2DoStep returns fmi2Error) or it writes to address 0.
@@ -84,7 +83,7 @@ def private_tmp(tmp_path, monkeypatch):
 
 
 def couple_cli(tmp_path, *args):
-    return subprocess.run([sys.executable, str(SCRIPT), "--out", str(tmp_path / "c.csv"), "--plot",
+    return subprocess.run([sys.executable, "-m", "rockingwall", "couple", "--out", str(tmp_path / "c.csv"), "--plot",
                            str(tmp_path / "c.png"), *map(str, args)], capture_output=True, text=True, timeout=600)
 
 

@@ -10,8 +10,8 @@ import sys
 import numpy as np
 import pytest
 
-import couple
-import rw_fmu
+from rockingwall import couple
+from rockingwall import fmu as rw_fmu
 from rwref.inputs import el_centro
 from rwref.params import WALLS
 

@@ -28,7 +28,7 @@ import numpy as np
 import pytest
 
 import engine_scenes as es
-import rw_engine
+from rockingwall import engine as rw_engine
 from rwref import inputs
 
 N_SCENES = 200

@@ -10,7 +10,7 @@ import zipfile
 import numpy as np
 import pytest
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, inputs, simulate
 
 ASAN_BUILD = "asan" in str(os.environ.get("RW_BUILD_DIR", ""))

@@ -1,23 +1,19 @@
 """Known problems of fmpy that this project works around, shown rather than hidden.
 
 fmpy 0.3.32's CVodeSolver.f does not apply inputs (only the root function does), so the FMU's
-right-hand side sees a lagged ground acceleration. scripts/rw_fmu.py installs a right-hand side
+right-hand side sees a lagged ground acceleration. rockingwall.fmu installs (for the duration of its own runs) a right-hand side
 that applies the input; this test shows that it matters. If it starts failing because the two
-runs agree, fmpy has been fixed: drop the workaround in rw_fmu.py.
+runs agree, fmpy has been fixed: drop the workaround in rockingwall/fmu.py.
 """
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, simulate, inputs
 
 
 def test_fmpy_rhs_ignores_inputs_and_the_workaround_fixes_it(rockingwall_fmu):
     signal = inputs.sampled(inputs.gaussian(0.04, 1.0), 6.0, 0.002)  # Table 5.2's impulse, rigid 1DOF
     kw = dict(support="simplySupported", hinge_law="rigid", rtol=1e-6, output_interval=0.01)
-    try:
-        rw_fmu.fmpy_input_in_rhs(False)
-        plain = rw_fmu.simulate(rockingwall_fmu, 6.0, signal.t, signal.a, **kw)
-    finally:
-        rw_fmu.fmpy_input_in_rhs(True)
+    plain = rw_fmu.simulate(rockingwall_fmu, 6.0, signal.t, signal.a, fmpy_input_fix=False, **kw)
     fixed = rw_fmu.simulate(rockingwall_fmu, 6.0, signal.t, signal.a, **kw)
     ref = simulate(Params(support="simplySupported", hinge_law="rigid"), signal, 6.0,
                    method="DOP853", rtol=1e-9, atol=1e-12)

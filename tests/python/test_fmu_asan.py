@@ -29,9 +29,8 @@ for mod in (fmpy, fmpy.fmi2, fmpy.simulation):
     mod.calloc, mod.free = g.calloc, g.free
 fmpy.fmi2.defaultCallbacks.allocateMemory = fmpy.fmi2.fmi2CallbackAllocateMemoryTYPE(g.calloc)
 fmpy.fmi2.defaultCallbacks.freeMemory = fmpy.fmi2.fmi2CallbackFreeMemoryTYPE(g.free)
-sys.path[:0] = [{scripts!r}, {reference!r}]
 import numpy as np
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import inputs
 fmu = {fmu!r}
 sig = inputs.sampled(inputs.gaussian(0.04, 1.0), 4.0, 0.002)

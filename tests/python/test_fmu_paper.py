@@ -1,7 +1,7 @@
 """The paper's numbers reproduced through the FMU (fmpy, CVode), not only through the reference."""
 import pytest
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import inputs
 
 # Table 5.2, 1DOF column: wall (psi, Gaussian amplitude D [m], paper's peak s1 [m]); T = 1 s.

@@ -9,7 +9,7 @@ more than 5 % of the peak, and that time is reported.
 import numpy as np
 import pytest
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, simulate, inputs
 
 MODEL_LAWS = [

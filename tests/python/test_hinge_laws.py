@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 import gen_model_description as gen
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, WALLS, inputs, simulate
 from rwref.params import RANGES
 

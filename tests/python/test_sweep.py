@@ -8,9 +8,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-import sweep
-from rwsweep import fragility, grid, records
-from rwsweep.execute import execute
+from rockingwall.sweep import command as sweep
+from rockingwall.sweep import fragility, grid, records
+from rockingwall.sweep.execute import execute
 
 WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0)  # the paper's wall 1, written out independently
 

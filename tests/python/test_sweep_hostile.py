@@ -14,11 +14,10 @@ import pandas as pd
 import pytest
 
 import ida
-import sweep
-from rwsweep import records, runner
+from rockingwall.sweep import command as sweep
+from rockingwall.sweep import records, runner
 from test_sweep import pulse_record
 
-SCRIPTS = os.path.join(os.path.dirname(__file__), "..", "..", "scripts")
 
 
 @pytest.fixture()
@@ -213,7 +212,7 @@ def test_finding09_interrupted_sweep_leaves_no_temporary_files(fmi2sim_exe, rock
     # the sweep process is the stand-in's parent; the sleep stands for a long run
     fake_fmi2sim(exe, fmi2sim_exe, f'mkdir "$TMPDIR/fmi2sim_unpacked"; kill -{sig} $PPID; exec sleep 30')
     out = tmp_path / "res.csv"
-    proc = subprocess.run([sys.executable, os.path.join(SCRIPTS, "sweep.py"),
+    proc = subprocess.run([sys.executable, "-m", "rockingwall", "sweep",
                            *sweep_args(one_record, out, exe, rockingwall_fmu)],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 130, proc.stderr[-2000:]
@@ -261,7 +260,7 @@ def test_finding16_second_sweep_on_the_same_file_is_refused(fmi2sim_exe, rocking
     fake_fmi2sim(exe, fmi2sim_exe, f'touch "{started}"; sleep 4')
     out = tmp_path / "res.csv"
     args = sweep_args(one_record, out, exe, rockingwall_fmu)
-    first = subprocess.Popen([sys.executable, os.path.join(SCRIPTS, "sweep.py"), *args],
+    first = subprocess.Popen([sys.executable, "-m", "rockingwall", "sweep", *args],
                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     try:
         deadline = time.monotonic() + 60
@@ -307,12 +306,12 @@ def test_finding16_absurd_options_are_refused_with_the_range(one_record, tmp_pat
     argv = ["--suite", str(one_record), "--out", str(tmp_path / "res.csv"), "--dry-run", option, value]
     assert sweep.main(argv) == 2
     err = capsys.readouterr().err
-    assert err.startswith("sweep.py: error: ") and range_text in err and "Traceback" not in err
+    assert err.startswith("rockingwall sweep: error: ") and range_text in err and "Traceback" not in err
 
 
 def test_finding16_fifo_record_is_refused_before_planning(one_record, tmp_path):
     os.mkfifo(one_record / "x.AT2")
-    proc = subprocess.run([sys.executable, os.path.join(SCRIPTS, "sweep.py"), "--suite", str(one_record),
+    proc = subprocess.run([sys.executable, "-m", "rockingwall", "sweep", "--suite", str(one_record),
                            "--out", str(tmp_path / "res.csv"), "--dry-run"], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2
     assert f"{one_record / 'x.AT2'}: not a regular file (a FIFO)" in proc.stderr

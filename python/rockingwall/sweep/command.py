@@ -1,13 +1,15 @@
-"""Parametric sweep of the RockingWall FMU through fmi2sim, on Dask.
+"""Parametric sweep of the wall model on Dask: the exact engine in each worker's process (default),
+or the RockingWall FMU through fmi2sim (--engine fmi2sim).
 
 The grid is walls x models x hinge laws x K_d x records x intensities, from a TOML file's [grid]
 table (--config) and/or the flags below (flags win). Intensities are scale factors on the records
 as given (--scales) or target PGAs (--pga, in g: each record is scaled to each). Records are the
 FEMA P695 far-field set (--suite fema, 44 components, converted once to AT2 files under
-results/records/) or a folder of PEER .AT2 files (--suite DIR).
+~/.cache/rockingwall/) or a folder of PEER .AT2 files (--suite DIR).
 
 Runs go to a LocalCluster on this machine (--workers) or to a running Dask scheduler
-(--scheduler ADDRESS; its workers must see fmi2sim, the FMU and the records at the same paths).
+(--scheduler ADDRESS; its workers need the rockingwall package installed: the records travel
+with the tasks; with --engine fmi2sim they must also see fmi2sim, the FMU and the records at the same paths).
 Each finished run is appended to one CSV (--out); run the same command again to resume: runs
 already in the file, computed from the same inputs (record content, FMU, fmi2sim, settings), are
 not repeated; killed or timed-out runs are. A run that fails (e.g. a damaged record) becomes a row
@@ -17,7 +19,7 @@ runs were killed or timed out (run the command again) or the file had damaged li
 into FILE.set-aside-<time>, named line by line), 2 for a refused command or file.
 
 Example (the measured sweep of the README):
-  .venv/bin/python scripts/sweep.py --config scripts/sweeps/fema_ida.toml --out results/sweep_fema.csv
+  rockingwall sweep --config examples/fema_ida.toml --out results/sweep_fema.csv
 """
 import argparse
 import os
@@ -26,22 +28,21 @@ import subprocess
 import sys
 import time
 
-REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "reference"))
-sys.path.insert(0, str(REPO / "scripts"))
-from rwsweep import grid, records, store  # noqa: E402
-from rwsweep.execute import check_options, describe as describe_outcome, execute  # noqa: E402
-from rwsweep.execute import Terminated  # noqa: E402
-from rwsweep.lock import Busy  # noqa: E402
+from .. import _paths
+from . import grid, records, store
+from .execute import check_options, describe as describe_outcome, execute
+from .execute import Terminated
+from .lock import Busy
 
-BUILD = pathlib.Path(os.environ.get("RW_BUILD_DIR", REPO / "build"))
-FEMA_CACHE = REPO / "results" / "records" / "fema_farfield"
+FEMA_CACHE = pathlib.Path(os.environ.get("RW_RECORDS_CACHE", pathlib.Path.home() / ".cache" / "rockingwall")) / "fema_farfield"
 
 
 def parse_args(argv=None):
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = argparse.ArgumentParser(prog="rockingwall sweep", description=__doc__,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--config", help="TOML file with a [grid] table (keys: " + ", ".join(grid.DEFAULTS) + ")")
-    p.add_argument("--walls", type=int, nargs="+", help="the paper's walls, 1-3")
+    p.add_argument("--walls", nargs="+", help="walls: presets paper1, paper2, paper3 (or 1, 2, 3), or the names of "
+                                              "[walls.NAME] tables (b, h, W, psi) of the --config file")
     p.add_argument("--models", nargs="+", help=", ".join(grid.MODELS))
     p.add_argument("--hinge-laws", dest="hinge_laws", nargs="+", help=", ".join(grid.HINGE_LAWS))
     p.add_argument("--kd", dest="kd_kN", type=float, nargs="+", help="diaphragm stiffness K_d [kN/m per m]")
@@ -52,9 +53,12 @@ def parse_args(argv=None):
     p.add_argument("--er", type=float, help="coefficient of restitution (default 0.86)")
     p.add_argument("--tail", type=float, help="seconds simulated after the record ends (default 5)")
     p.add_argument("--rtol", type=float, help="fmi2sim --rtol (default 1e-6)")
-    p.add_argument("--out", default=str(REPO / "results" / "sweep.csv"), help="results CSV (appended, resumable)")
-    p.add_argument("--fmi2sim", default=str(BUILD / "fmi2sim"), help="default $RW_BUILD_DIR/fmi2sim or build/")
-    p.add_argument("--fmu", default=str(BUILD / "RockingWall.fmu"))
+    p.add_argument("--out", default="results/sweep.csv", help="results CSV (appended, resumable)")
+    p.add_argument("--engine", default="exact", choices=["exact", "fmi2sim"],
+                   help="exact: the event-driven engine in each worker's process (default); fmi2sim: CVODE, a "
+                        "subprocess per run (then every worker must see fmi2sim, the FMU and the records)")
+    p.add_argument("--fmi2sim", help="with --engine fmi2sim (default: the installed one)")
+    p.add_argument("--fmu", help="with --engine fmi2sim (default: the installed RockingWall.fmu)")
     p.add_argument("--scheduler", help="address of a running Dask scheduler, or 'synchronous' (no Dask)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="LocalCluster workers (default: cores)")
     p.add_argument("--batch", type=int, default=4, help="runs per Dask task (default 4)")
@@ -99,6 +103,11 @@ def describe(cfg, suite, specs):
 
 
 def check_artefacts(args):
+    if args.engine == "exact":
+        _paths.engine_library()
+        return
+    args.fmi2sim = args.fmi2sim or str(_paths.fmi2sim())
+    args.fmu = args.fmu or str(_paths.wall_fmu())
     for path in (args.fmi2sim, args.fmu):
         if not pathlib.Path(path).is_file():
             raise FileNotFoundError(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
@@ -138,10 +147,10 @@ def main(argv=None):
     try:
         return run(args)
     except (ValueError, OSError, ImportError, Busy) as exc:  # ResultsError, RecordError are ValueErrors
-        print(f"sweep.py: error: {exc}", file=sys.stderr)
+        print(f"rockingwall sweep: error: {exc}", file=sys.stderr)
         return 2
     except (KeyboardInterrupt, Terminated) as exc:
-        print(f"sweep.py: interrupted ({type(exc).__name__} {exc}): the rows written so far are kept; "
+        print(f"rockingwall sweep: interrupted ({type(exc).__name__} {exc}): the rows written so far are kept; "
               "run the same command again to resume", file=sys.stderr)
         return 130
 
@@ -155,7 +164,7 @@ def run(args):
     check_artefacts(args)
     print("load:", subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip())
     common = dict(fmi2sim=args.fmi2sim, fmu=args.fmu, rtol=cfg["rtol"], scheduler=args.scheduler,
-                  batch=args.batch, progress=not args.no_progress, timeout=args.timeout)
+                  batch=args.batch, progress=not args.no_progress, timeout=args.timeout, engine=args.engine)
     if not args.scan_workers:
         t0 = time.perf_counter()
         outcome = execute(specs, args.out, workers=args.workers, **common)

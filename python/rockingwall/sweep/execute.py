@@ -13,7 +13,7 @@ import time
 import cloudpickle
 from tqdm import tqdm
 
-from . import provenance, runner
+from . import exact_runner, provenance, runner
 from .store import ResultsFile
 
 # Workers get the run function by value, so a Dask cluster started elsewhere (--scheduler) needs
@@ -77,9 +77,9 @@ def _batches(items, size):
     return [items[i:i + size] for i in range(0, len(items), size)]
 
 
-def keyed(specs, fmi2sim, fmu, rtol):
+def keyed(specs, fmi2sim, fmu, rtol, engine="fmi2sim"):
     """The specs as dicts with the columns that say what each row is computed from."""
-    eng = provenance.engine(fmi2sim, fmu, rtol)
+    eng = provenance.engine(fmi2sim, fmu, rtol) if engine == "fmi2sim" else provenance.exact_engine()
     out = []
     for s in specs:
         d = dataclasses.asdict(s)
@@ -110,16 +110,26 @@ def _signals_unwind():
             signal.signal(s, h)
 
 
-def _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout):
+def _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
     for s in todo:
-        yield [runner.run(s, fmi2sim, fmu, rtol, tmp_root, timeout)]
+        if recs is None:
+            yield [runner.run(s, fmi2sim, fmu, rtol, tmp_root, timeout)]
+        else:
+            yield exact_runner.run_batch([s], recs)
 
 
-def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout):
+def _submit(client, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
+    if recs is None:
+        return client.submit(runner.run_batch, batch, fmi2sim, fmu, rtol, tmp_root, timeout, pure=False)
+    used = {s["record_sha256"]: recs[s["record_sha256"]] for s in batch if s["record_sha256"] in recs}
+    return client.submit(exact_runner.run_batch, batch, used, pure=False)
+
+
+def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
     """Rows as batches finish. A batch whose worker died (Dask gives up after its retries) becomes
     'killed' rows, which the next resume runs again, instead of ending the sweep."""
     from dask.distributed import as_completed
-    futures = {client.submit(runner.run_batch, b, fmi2sim, fmu, rtol, tmp_root, timeout, pure=False): b
+    futures = {_submit(client, b, fmi2sim, fmu, rtol, tmp_root, timeout, recs): b
                for b in _batches(todo, max(1, batch))}
     for f in as_completed(futures):
         try:
@@ -174,26 +184,29 @@ def _rm_tree(path):
         shutil.rmtree(path, ignore_errors=True)
 
 
-def execute(specs, results_path, fmi2sim, fmu, rtol, scheduler=None, workers=2, batch=1, progress=True,
-            timeout=None):
-    """scheduler: None -> a LocalCluster of `workers` single-threaded worker processes;
+def execute(specs, results_path, fmi2sim=None, fmu=None, rtol=None, scheduler=None, workers=2, batch=1, progress=True,
+            timeout=None, engine="fmi2sim"):
+    """engine: 'fmi2sim' (a subprocess per run, fmi2sim and the FMU at the same paths on every
+    worker) or 'exact' (the exact engine in the worker's process; records travel with the tasks).
+    scheduler: None -> a LocalCluster of `workers` single-threaded worker processes;
     'synchronous' -> one after another in this process; else the address of a running Dask
     scheduler, used as it is. Holds the results file's lock throughout."""
     check_options(workers if scheduler is None else 1, batch, timeout)
-    planned = keyed(specs, fmi2sim, fmu, rtol)
+    planned = keyed(specs, fmi2sim, fmu, rtol, engine)
     with _signals_unwind(), ResultsFile(results_path) as store:
         resume = store.resume({d["run_id"]: {c: d.get(c, "") for c in runner.PROVENANCE} for d in planned})
         todo = [d for d in planned if d["run_id"] not in resume.done]
         counts = dict(errors=0, unfinished=0)
         startup = seconds = 0.0
         if todo:
+            recs = exact_runner.load_records(todo) if engine == "exact" else None
             startup, seconds = _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
-                                        progress, timeout)
+                                        progress, timeout, recs)
     return Outcome(len(specs), len(specs) - len(todo), len(todo), counts["errors"], counts["unfinished"],
                    seconds, startup, resume)
 
 
-def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch, progress, timeout):
+def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch, progress, timeout, recs):
     """Runs todo, appending rows; returns (start-up seconds, running seconds)."""
     tmp_root = tempfile.mkdtemp(prefix="rw_sweep_")  # every run's files, whatever ends the sweep
     bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, smoothing=0.05)
@@ -202,11 +215,11 @@ def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
         with contextlib.ExitStack() as stack:
             if scheduler == "synchronous":
                 startup, t0 = 0.0, time.perf_counter()
-                stream = _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout)
+                stream = _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout, recs)
             else:
                 client = stack.enter_context(_client(scheduler, workers, tmp_root))
                 startup, t0 = time.perf_counter() - t_start, time.perf_counter()
-                stream = _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout)
+                stream = _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs)
             for rows in stream:
                 for row in rows:
                     store.append(row)

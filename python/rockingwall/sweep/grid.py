@@ -7,8 +7,9 @@ import math
 import tomllib
 
 
-MODELS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
-HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
+from ..names import HINGE_LAWS, PAPER_WALLS, SUPPORTS as MODELS, paper_wall
+
+WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units, or strings with units)
 
 # The defaults of a grid; a TOML file's [grid] table and the flags replace them key by key.
 DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], kd_kN=[50.0],
@@ -19,7 +20,7 @@ DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], 
 @dataclasses.dataclass(frozen=True)
 class RunSpec:
     run_id: str
-    wall: int
+    wall: str           # a preset (1, 2, 3 = paper1..3) or the name of a [walls.NAME] table
     model: str
     hinge_law: str
     kd_kN: float        # NaN for models without the top spring
@@ -35,7 +36,8 @@ class RunSpec:
 
 
 def load_config(path):
-    """The [grid] table of a TOML file (an empty dict without a file)."""
+    """The [grid] table of a TOML file (an empty dict without a file), with the walls the file
+    defines ([walls.NAME] tables of b, h, W, psi) under the key 'wall_table'."""
     if not path:
         return {}
     try:
@@ -46,13 +48,28 @@ def load_config(path):
     unknown = set(cfg.get("grid", {})) - set(DEFAULTS)
     if unknown:
         raise ValueError(f"{path}: unknown [grid] keys {sorted(unknown)}; known: {sorted(DEFAULTS)}")
-    return cfg.get("grid", {})
+    out = dict(cfg.get("grid", {}))
+    out["wall_table"] = {name: _wall_table(path, name, t) for name, t in cfg.get("walls", {}).items()}
+    return out
+
+
+def _wall_table(path, name, table):
+    from ..units import parse
+    if not isinstance(table, dict):
+        raise ValueError(f"{path}: [walls.{name}] must be a table of {', '.join(WALL_KEYS)}")
+    missing, extra = set(WALL_KEYS) - set(table), set(table) - set(WALL_KEYS)
+    if missing or extra:
+        raise ValueError(f"{path}: [walls.{name}] needs exactly {', '.join(WALL_KEYS)}"
+                         + (f"; missing {sorted(missing)}" if missing else "") + (f"; unknown {sorted(extra)}" if extra else ""))
+    units = {"b": "m", "h": "m", "W": "N/m", "psi": "1"}
+    return {k: parse(v, units[k], f"[walls.{name}] {k}") for k, v in table.items()}
 
 
 def merge(config, flags):
     """DEFAULTS, then the file's values, then the flags that were given (not None)."""
     out = dict(DEFAULTS)
-    out.update(config)
+    out.update({k: v for k, v in config.items() if k != "wall_table"})
+    out["wall_table"] = dict(config.get("wall_table", {}))
     out.update({k: v for k, v in flags.items() if v is not None and k in DEFAULTS})
     check(out)
     bad = [m for m in out["models"] if m not in MODELS]
@@ -94,20 +111,25 @@ def check(cfg):
     for key, (low, high, low_ok) in RANGES.items():
         for v in cfg[key] if isinstance(cfg[key], list) else [cfg[key]]:
             in_range(key, v, low, high, low_ok)
-    from rwref.params import WALLS
-    bad = [w for w in cfg["walls"] if isinstance(w, bool) or w not in WALLS]
-    if bad:
-        raise ValueError(f"walls {bad}: the paper's walls are {sorted(WALLS)}")
+    for w in cfg["walls"]:
+        wall_parameters(w, cfg["wall_table"])
     if not isinstance(cfg["suite"], str) or not cfg["suite"]:
         raise ValueError(f"suite = {cfg['suite']!r}: 'fema' or a folder of .AT2 files")
 
 
-def wall_parameters(wall):
-    """b, h, W, psi of the paper's walls 1-3 (reference/rwref/params.py is the one table)."""
-    from rwref.params import WALLS
-    if wall not in WALLS:
-        raise ValueError(f"wall {wall}: the paper's walls are {sorted(WALLS)}")
-    return WALLS[wall]
+def wall_parameters(wall, table=None):
+    """b, h, W, psi of a wall: one the TOML file defines ([walls.NAME]) or a preset of the paper
+    (1, 2, 3 or paper1, paper2, paper3)."""
+    table = table or {}
+    if isinstance(wall, bool) or not isinstance(wall, (int, str)):
+        raise ValueError(f"wall {wall!r}: give a preset ({', '.join(PAPER_WALLS)}) or the name of a [walls.NAME] table")
+    if str(wall) in table:
+        return table[str(wall)]
+    try:
+        return paper_wall(wall)
+    except ValueError:
+        known = list(PAPER_WALLS) + list(table)
+        raise ValueError(f"wall {wall!r}: not a preset nor a wall of the file; known: {', '.join(known)}") from None
 
 
 def _fmt(x):
@@ -120,7 +142,7 @@ def expand(grid, suite):
     per K_d. With pga_g given, each record is scaled to each target PGA; else by each factor."""
     specs = []
     for wall, model, law in itertools.product(grid["walls"], grid["models"], grid["hinge_laws"]):
-        geometry = wall_parameters(wall)
+        geometry = wall_parameters(wall, grid.get("wall_table"))
         kds = [float(k) for k in grid["kd_kN"]] if model == "flexibleTop" else [math.nan]
         if model == "parapet" and law != grid["hinge_laws"][0]:
             continue  # a parapet ignores the hinge law: one set of runs is enough

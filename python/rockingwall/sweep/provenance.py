@@ -49,6 +49,14 @@ def engine(fmi2sim, fmu, rtol):
                 rtol=repr(float(rtol)))
 
 
+def exact_engine():
+    """The columns of a sweep on the exact engine: the engine library by content (in the
+    fmu_sha256 column, which names the compiled model a row comes from)."""
+    from rockingwall import _paths
+    return dict(engine="exact", fmi2sim_sha256="", fmu_guid="", fmu_sha256=file_sha256(_paths.engine_library()),
+                rtol="exact")
+
+
 def run_key(spec, eng):
     """Hash of everything that determines a run's row: the engine (fmi2sim, FMU, rtol), the
     record's content, its scale, the stop time and every parameter set on the FMU."""

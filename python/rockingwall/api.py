@@ -1,0 +1,91 @@
+"""simulate(wall, record): one wall under one record, by the exact engine (default), fmi2sim
+(CVODE) or fmpy, with the peaks, the collapse and the time history in SI units."""
+import dataclasses
+import os
+import tempfile
+
+import numpy as np
+import pandas as pd
+
+from . import _paths, engine, fmi2sim, names
+from .records import Record
+from .wall import Wall
+
+ENGINES = ("exact", "fmi2sim", "fmpy")
+TAIL_S = 0.0  # the run ends with the record; a free-vibration tail is asked for with `tail`
+
+
+@dataclasses.dataclass
+class Result:
+    """Peaks [m] of the mid-height (s1) and top (s2) displacements, collapse, impacts, and the
+    time history (DataFrame: time [s], ag [m/s^2], s1 [m], s2 [m]) on the output grid."""
+    wall: Wall
+    record: str
+    engine: str
+    peak_s1: float
+    peak_s2: float
+    collapsed: bool
+    t_collapse: float
+    impacts: int
+    history: pd.DataFrame
+
+    @property
+    def s1_over_delta_u(self):
+        """Peak s1 over Delta_u, the 1DOF's instability displacement (1 = at the limit)."""
+        return self.peak_s1 / self.wall.delta_u
+
+    def peaks(self):
+        """The numbers users print: a dict with units in the keys."""
+        return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "s1_over_Delta_u": self.s1_over_delta_u,
+                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
+
+
+def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8):
+    """Simulate `wall` (a Wall) under `record` (a Record, accelerations in m/s^2).
+    stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
+    process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode)."""
+    if engine not in ENGINES:
+        raise ValueError(f"engine {engine!r}: choose one of {', '.join(ENGINES)}")
+    t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)
+    grid = np.arange(float(record.t[0]), t_end + output_interval / 2, output_interval)
+    run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
+    peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
+    history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
+    return Result(wall, record.name, engine, peak_s1, peak_s2, collapsed, t_collapse, impacts, history)
+
+
+def _exact(wall, record, t_end, grid, rtol, output_interval):
+    r = engine.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    return r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts, r.s1, r.s2
+
+
+def _sets(wall):
+    return [(k, int(v) if k in ("support", "hingeLaw") else float(v)) for k, v in wall.params.items()]
+
+
+def _fmi2sim(wall, record, t_end, grid, rtol, output_interval):
+    with tempfile.TemporaryDirectory(prefix="rw_simulate_") as tmp:
+        table = os.path.join(tmp, "input.csv")
+        pd.DataFrame({"time": record.t, "ag": record.ag}).to_csv(table, index=False, float_format="%.17g")
+        out = os.path.join(tmp, "out.csv")
+        summary = fmi2sim.run(_paths.wall_fmu(), input_csv=table, stop_time=t_end, rtol=rtol,
+                              output_interval=output_interval, sets=_sets(wall), output=out)
+        data = pd.read_csv(out)
+    o = summary["outputs"]
+    collapsed = bool(o["collapsed"]["final"])
+    t_unique, idx = np.unique(data["time"].to_numpy(), return_index=True)
+    s1 = np.interp(grid, t_unique, data["s1"].to_numpy()[idx], right=np.nan)
+    s2 = np.interp(grid, t_unique, data["s2"].to_numpy()[idx], right=np.nan)
+    t_collapse = float(summary["end_time"]) if collapsed else float("nan")
+    return (o["s1"]["max_abs"], o["s2"]["max_abs"], collapsed, t_collapse, int(o["impacts"]["final"]), s1, s2)
+
+
+def _fmpy(wall, record, t_end, grid, rtol, output_interval):
+    from . import fmu
+    p = dict(wall.params)
+    support, law = names.SUPPORT_NAMES[int(p.pop("support"))], names.HINGE_LAW_NAMES[int(p.pop("hingeLaw"))]
+    run = fmu.simulate(_paths.wall_fmu(), t_end, record.t, record.ag, rtol=rtol,
+                                 output_interval=output_interval, support=support, hinge_law=law, **p)
+    s1, s2 = fmu.on_grid(run.t, run.s1, grid, right=np.nan), fmu.on_grid(run.t, run.s2, grid, right=np.nan)
+    t_collapse = float(run.t[-1]) if run.collapsed else float("nan")
+    return run.peak_s1, run.peak_s2, run.collapsed, t_collapse, run.impacts, s1, s2

@@ -1,0 +1,50 @@
+"""The `rockingwall` command: subcommands thin over the API (rockingwall <command> --help)."""
+import argparse
+import importlib
+import sys
+
+from . import __version__
+from . import cli_common as cc
+from .records import RecordError
+
+# commands with their own argument parser: name -> (module, one-line help)
+DELEGATED = {
+    "sweep": ("rockingwall.sweep.command", "a parametric sweep (walls x records x intensities x K_d) on Dask"),
+    "ida": ("rockingwall.ida", "incremental dynamic analysis and fragility from a sweep's results"),
+    "couple": ("rockingwall.couple", "the wall FMU coupled to the Diaphragm FMU (co-simulation)"),
+    "paper": ("rockingwall.paper", "reproduce the paper's tables and figures"),
+    "animate": ("rockingwall.animate", "an animation of the rocking wall under a record"),
+    "demo": ("rockingwall.demo", "the main job: the paper's wall 1 under El Centro 1940 at 50 %"),
+}
+
+
+def build_parser():
+    from . import info, run
+    p = argparse.ArgumentParser(prog="rockingwall", description=__doc__ + "\n\n" + "\n".join(
+        f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--version", action="version", version=f"rockingwall {__version__}")
+    sub = p.add_subparsers(title="commands", metavar="{run,info," + ",".join(DELEGATED) + "}")
+    run.parser(sub)
+    info.parser(sub)
+    return p
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    try:
+        if argv and argv[0] in DELEGATED:
+            return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+        args = build_parser().parse_args(argv)
+        if not hasattr(args, "command"):
+            build_parser().print_help()
+            return 2
+        return args.command(args)
+    except (ValueError, RecordError, FileNotFoundError) as exc:
+        return cc.fail(str(exc))
+    except KeyboardInterrupt:
+        return cc.fail("interrupted", 130)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

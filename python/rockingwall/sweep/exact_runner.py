@@ -1,0 +1,56 @@
+"""One run of a sweep on the exact engine, in the worker's own process (no subprocess): the
+record's samples travel with the task, so workers need the installed `rockingwall` package and
+nothing on a shared file system. Rows have the columns of runner.COLUMNS."""
+import math
+import time
+
+import numpy as np
+
+from .runner import ERROR, OK, _row
+
+
+def _params(spec):
+    return {name: (int(value) if name in ("support", "hingeLaw") else float(value)) for name, value in spec["sets"]}
+
+
+def run(spec, record):
+    """Simulate one RunSpec (a dict) on `record` = (t, ag [m/s^2] as given); always returns a row."""
+    from rockingwall import engine  # imported on the worker: the installed package
+    t0, c0 = time.perf_counter(), time.process_time()
+    if spec["error"]:
+        return _row(spec, ERROR, spec["error"])
+    if not (spec["scale"] > 0 and math.isfinite(spec["scale"])):
+        return _row(spec, ERROR, f"scale factor {spec['scale']} (record PGA {spec['record_pga_g']} g)")
+    t, ag = record
+    try:
+        r = engine.run(t, np.asarray(ag) * float(spec["scale"]), t_end=float(spec["stop_time"]), **_params(spec))
+    except (engine.EngineError, ValueError, KeyError) as exc:
+        return _row(spec, ERROR, str(exc))
+    return _row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, collapsed=bool(r.collapsed), impacts=int(r.impacts),
+                end_time=r.t_reached, steps=r.steps, cpu_s=time.process_time() - c0,
+                elapsed_s=time.perf_counter() - t0)
+
+
+def run_batch(specs, records):
+    """Several runs in one task; records: {record_sha256: (t, ag)} for the records they use."""
+    return [run(s, records.get(s["record_sha256"])) for s in specs]
+
+
+def load_records(specs):
+    """{record_sha256: (t, ag)} read once per record on the planning side (the one AT2 reader);
+    a record that cannot be read turns its runs into 'error' rows with the file, line and problem."""
+    from rockingwall import records as rec
+    out, failed = {}, {}
+    for s in specs:
+        sha, path = s["record_sha256"], s["record_path"]
+        if s["error"] or sha in out:
+            continue
+        if path in failed:
+            s["error"] = failed[path]
+            continue
+        try:
+            r = rec.read_at2(path)
+            out[sha] = (r.t, r.ag)
+        except rec.RecordError as exc:
+            failed[path] = s["error"] = str(exc)
+    return out

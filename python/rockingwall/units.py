@@ -1,0 +1,52 @@
+"""Quantities with explicit units: '30kN/m/m', '30 kN/m per m', '14.08 kN/m', '230 mm', or a bare
+number in the parameter's SI unit (the unit column of `rockingwall info`).
+
+Every parameter has one SI unit (fmu_src/rw_parameters.h); a value given with a unit is converted
+to it here, and a unit of the wrong kind (kN/m for a stiffness per metre of wall) is an error."""
+import math
+import re
+
+# SI unit of a parameter (as the model description writes it) -> accepted spellings and factors
+_SPELLINGS = {
+    "m": {"m": 1.0, "mm": 1e-3, "cm": 1e-2},
+    "N/m": {"n/m": 1.0, "kn/m": 1e3, "mn/m": 1e6},
+    "N/m2": {"n/m/m": 1.0, "kn/m/m": 1e3, "mn/m/m": 1e6, "n/mm/m": 1e3},
+    "m/s2": {"m/s/s": 1.0},
+    "rad/s": {"rad/s": 1.0},
+}
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
+
+
+def _canonical(unit):
+    """'kN/m per m', 'kN/m2', 'kN/m^2', 'kN / m / m' -> 'kn/m/m'."""
+    u = unit.lower().replace(" per ", "/").replace(" ", "").replace("^", "")
+    return re.sub(r"/m2$", "/m/m", re.sub(r"/s2$", "/s/s", u))
+
+
+def parse(value, si_unit, name="value"):
+    """A float in `si_unit` from a number (taken as SI) or a string 'NUMBER [UNIT]'."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return float(value)
+    m = _NUMBER.match(str(value))
+    if not m:
+        raise ValueError(f"{name}: cannot read {value!r} as a number with an optional unit")
+    number, unit = float(m.group(1)), m.group(2)
+    if not unit or _canonical(unit) == _canonical(si_unit or "1"):
+        return number
+    factors = _SPELLINGS.get(si_unit, {})
+    factor = factors.get(_canonical(unit))
+    if factor is None:
+        known = ", ".join(sorted({si_unit, *[_display(k) for k in factors]})) if factors else si_unit or "none"
+        raise ValueError(f"{name}: unit {unit!r} is not a unit of {name} (accepted: {known})")
+    return number * factor
+
+
+def _display(spelling):
+    return spelling.replace("kn", "kN").replace("mn", "MN").replace("n/", "N/")
+
+
+def format_kd(kd):
+    """K_d in N/m per m as engineers write it: '30 kN/m per m'."""
+    if not math.isfinite(kd):
+        return f"{kd} N/m per m"
+    return f"{kd / 1e3:g} kN/m per m"

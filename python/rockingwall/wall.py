@@ -1,0 +1,102 @@
+"""A wall: the model's parameters by name, in SI units, from a preset of the paper or the user's
+own numbers. The parameter table (names, units, defaults, closed ranges) is the C one, read from
+the engine library, so the Python side cannot drift from the FMU."""
+import dataclasses
+import warnings
+
+from . import names, units
+from .engine import parameter_table
+
+# Values that are valid for the model but unusual for an unreinforced-masonry wall and its
+# diaphragm: a value outside is most often a unit slip (kN typed for N). (low, high) in SI.
+PLAUSIBLE = {
+    "h": (1.5, 12.0, "m"),
+    "b": (0.07, 1.2, "m"),
+    "W": (1.0e3, 2.0e5, "N/m"),
+    "psi": (0.0, 6.0, "1"),
+}
+KD_PLAUSIBLE = (5.0e2, 1.0e10)        # N/m per m: a very flexible timber floor .. rigid
+UNIT_WEIGHT_PLAUSIBLE = (10e3, 30e3)  # N/m^3: W/(b h) of masonry (brick, stone, block)
+
+
+class PlausibilityWarning(UserWarning):
+    """A value the model accepts but a masonry wall rarely has: check its unit."""
+
+
+@dataclasses.dataclass(frozen=True)
+class Wall:
+    """Parameters of one wall and its supports, by the FMU's names and in SI units:
+    h [m], b [m], W [N per m of wall], psi [1] (Wd/W1: overburden over the weight of ONE body,
+    W1 = W/2), Kd [N/m per m of wall], er [1], support, hingeLaw, and the rest of
+    `rockingwall info`. Unset parameters take the table's defaults."""
+    params: dict
+
+    @classmethod
+    def make(cls, preset=None, warn=True, **values):
+        """A wall from a preset ('paper1'..'paper3', or None for the defaults) and values by name.
+        Values may carry units ('30 kN/m per m', '230 mm'); support and hingeLaw take names."""
+        table = parameter_table()
+        params = {n: row.default for n, row in table.items()}
+        if preset is not None:
+            params.update(names.paper_wall(preset))
+        for key, value in values.items():
+            if key not in table:
+                raise ValueError(f"unknown parameter {key!r}; known: {', '.join(table)}")
+            params[key] = _convert(key, value, table[key])
+        wall = cls(params)
+        wall.check()
+        if warn:
+            for message in wall.implausible():
+                warnings.warn(message, PlausibilityWarning, stacklevel=2)
+        return wall
+
+    def replace(self, **values):
+        return Wall.make(**{**self.params, **values})
+
+    def check(self):
+        """ValueError with the parameter, value and range when a value is outside the model's range."""
+        table = parameter_table()
+        for key, value in self.params.items():
+            table[key].check(value)
+        if not self.params["b"] < self.params["h"]:
+            raise ValueError(f"b = {self.params['b']} m must be less than h = {self.params['h']} m")
+
+    def implausible(self):
+        """Messages for values outside the plausible range of masonry walls and diaphragms."""
+        p, out = self.params, []
+        for key, (low, high, unit) in PLAUSIBLE.items():
+            if not low <= p[key] <= high:
+                out.append(f"{key} = {p[key]:g} {unit} is outside [{low:g}, {high:g}] {unit}, "
+                           "unusual for a masonry wall: is the unit right?")
+        kd = p["Kd"]
+        if p["support"] == names.SUPPORTS["flexibleTop"] and kd > 0 and not KD_PLAUSIBLE[0] <= kd <= KD_PLAUSIBLE[1]:
+            out.append(f"Kd = {kd:g} N/m per m is outside [{KD_PLAUSIBLE[0]:g}, {KD_PLAUSIBLE[1]:g}] N/m per m; "
+                       "did you mean kN/m per m (write '30kN/m/m')?")
+        gamma = p["W"] / (p["b"] * p["h"])
+        if not UNIT_WEIGHT_PLAUSIBLE[0] <= gamma <= UNIT_WEIGHT_PLAUSIBLE[1]:
+            out.append(f"W/(b h) = {gamma / 1e3:.3g} kN/m^3 is not a masonry unit weight "
+                       f"({UNIT_WEIGHT_PLAUSIBLE[0] / 1e3:g}-{UNIT_WEIGHT_PLAUSIBLE[1] / 1e3:g} kN/m^3): "
+                       "W is the weight per metre of wall in N/m")
+        return out
+
+    @property
+    def delta_u(self):
+        """Delta_u [m]: the mid-height displacement at which the 1DOF's restoring force reaches
+        zero, b (1 + 0.75 psi)/(1 + psi) (the paper's Table 5.1)."""
+        psi = self.params["psi"]
+        return self.params["b"] * (1 + 0.75 * psi) / (1 + psi)
+
+    def describe(self):
+        p = self.params
+        return (f"b = {p['b']:g} m, h = {p['h']:g} m, W = {p['W'] / 1e3:g} kN/m, psi = {p['psi']:g}, "
+                f"e_r = {p['er']:g}, {names.SUPPORT_NAMES[int(p['support'])]}"
+                + (f", K_d = {units.format_kd(p['Kd'])}" if int(p["support"]) == 3 else "")
+                + f", hinge law {names.HINGE_LAW_NAMES[int(p['hingeLaw'])]}")
+
+
+def _convert(key, value, row):
+    if key == "support":
+        return names.support_code(value)
+    if key == "hingeLaw":
+        return names.hinge_law_code(value)
+    return units.parse(value, row.unit, key)
