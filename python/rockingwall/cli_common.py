@@ -49,8 +49,8 @@ def wall_from_args(args):
 
 
 def add_record_arguments(parser, many=False):
-    parser.add_argument("records" if many else "record", nargs="+" if many else "?",
-                        default=None if many else "elcentro",
+    parser.add_argument("records" if many else "record", nargs="*" if many else "?",
+                        default=["elcentro"] if many else "elcentro",
                         help="an .AT2 or .csv file, 'elcentro' (default) or 'gaussian[:D,T]'")
     parser.add_argument("--csv-units", default="g", choices=["g", "m/s2"], help="units of a CSV record (default g)")
     level = parser.add_mutually_exclusive_group()
