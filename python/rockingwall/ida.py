@@ -42,7 +42,7 @@ def load(path, wall, model, hinge_law):
     d = store.load_frame(path)
     report_not_ok(d, path)
     d.attrs["unfinished"] = int(d.status.isin(RETRIED).sum())
-    d = d[(d.status == OK) & (d.wall == wall) & (d.model == model) & (d.hinge_law == hinge_law)]
+    d = d[(d.status == OK) & (d.wall == str(wall)) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
         raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
     return d
@@ -140,7 +140,7 @@ def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("results", help="results CSV of `rockingwall sweep`")
     p.add_argument("--out", default="results")
-    p.add_argument("--wall", type=int, default=1)
+    p.add_argument("--wall", default="1", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name")
     p.add_argument("--model", default="flexibleTop")
     p.add_argument("--hinge-law", default="dohertyHinge")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")

@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-import ida
+from rockingwall import ida
 from rockingwall.sweep import command as sweep
 from rockingwall.sweep import records, runner
 from test_sweep import pulse_record
@@ -41,7 +41,7 @@ def private_tmp(tmp_path, monkeypatch):
 
 
 def sweep_args(suite, out, fmi2sim, fmu, *extra):
-    return ["--suite", str(suite), "--kd", "50", "--scales", "1", "--tail", "1", "--scheduler", "synchronous",
+    return ["--suite", str(suite), "--kd", "50", "--scales", "1", "--tail", "1", "--scheduler", "synchronous", "--engine", "fmi2sim",
             "--no-progress", "--out", str(out), "--fmi2sim", str(fmi2sim), "--fmu", str(fmu), *map(str, extra)]
 
 

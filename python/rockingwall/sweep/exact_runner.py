@@ -26,7 +26,10 @@ def run(spec, record):
         r = engine.run(t, np.asarray(ag) * float(spec["scale"]), t_end=float(spec["stop_time"]), **_params(spec))
     except (engine.EngineError, ValueError, KeyError) as exc:
         return _row(spec, ERROR, str(exc))
-    return _row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, collapsed=bool(r.collapsed), impacts=int(r.impacts),
+    # F_top = Kd (s2 - u_top) with u_top = 0 in a sweep: its peak is Kd times the peak of s2
+    params = _params(spec)
+    peak_f_top = params["Kd"] * r.peak_s2 if params.get("support") == 3 else 0.0
+    return _row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=peak_f_top, collapsed=bool(r.collapsed), impacts=int(r.impacts),
                 end_time=r.t_reached, steps=r.steps, cpu_s=time.process_time() - c0,
                 elapsed_s=time.perf_counter() - t0)
 

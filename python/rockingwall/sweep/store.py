@@ -25,7 +25,7 @@ from .runner import COLUMNS, OK, RETRIED, STATUSES
 LEGACY_COLUMNS = COLUMNS[:COLUMNS.index("key")]  # files written before the key was recorded
 _FLOATS = ["kd_kN", "record_pga_g", "scale", "pga_g", "end_time", "cpu_s", "elapsed_s"]
 _PEAKS = ["peak_s1", "peak_s2", "peak_F_top"]
-_INTS = ["wall", "impacts", "steps"]
+_INTS = ["impacts", "steps"]
 
 
 class ResultsError(ValueError):
@@ -298,7 +298,7 @@ class ResultsFile:
                 self._f = None
 
 
-_NUMERIC = ["wall", "kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_s2", "peak_F_top", "impacts",
+_NUMERIC = ["kd_kN", "record_pga_g", "scale", "pga_g", "peak_s1", "peak_s2", "peak_F_top", "impacts",
             "end_time", "steps", "cpu_s", "elapsed_s"]
 
 
