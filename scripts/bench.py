@@ -30,9 +30,7 @@ import numpy as np
 from tqdm import tqdm
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(REPO / "reference"))
-sys.path.insert(0, str(REPO / "scripts"))
-import rw_fmu  # noqa: E402
+from rockingwall import fmu as rw_fmu
 from rwref import Params, simulate, inputs  # noqa: E402
 from fmpy import extract  # noqa: E402
 

@@ -25,8 +25,8 @@ import time
 import numpy as np
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-sys.path[:0] = [str(REPO / "scripts"), str(REPO / "reference")]
-import rw_engine  # noqa: E402
+
+from rockingwall import engine as rw_engine
 from rwref import inputs  # noqa: E402
 
 FMU = REPO / "build" / "RockingWall.fmu"

@@ -8,8 +8,7 @@ import argparse
 import pathlib
 import sys
 
-sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from rwsweep import store  # noqa: E402
+from rockingwall.sweep import store
 
 KEY = ["wall", "model", "hinge_law", "kd_kN", "record", "pga_g", "scale"]
 

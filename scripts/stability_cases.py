@@ -50,7 +50,7 @@ from pathlib import Path
 
 import numpy as np
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, inputs
 
 G = 9.81
