@@ -115,7 +115,7 @@ def error(run, ref, grid):
 
 
 class Tee:
-    """Print as usual and keep a copy in a file (the README quotes it: scripts/update_readme.py)."""
+    """Print as usual and keep a copy in a file (docs/performance.md quotes it: scripts/update_docs.py)."""
 
     def __init__(self, path):
         self.path, self.lines, self.stdout = path, [], None
@@ -200,7 +200,7 @@ def model_ladder(sim, cases, out):
                 k -= 1
             if k == len(within):
                 print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: at no K_d up to "
-                      f"{KD_SWEEP[-1] / 1e3:g} kN/m (the two hinge laws differ, see the README)")
+                      f"{KD_SWEEP[-1] / 1e3:g} kN/m (the two hinge laws differ, see docs/performance.md)")
                 continue
             speed = np.mean(cpus[k:]) / cpu_1dof
             print(f"  {scene:<16} 2DOF {law_2dof:<15} vs 1DOF {law_1dof:<15}: from K_d = {KD_SWEEP[k] / 1e3:.3g} kN/m"

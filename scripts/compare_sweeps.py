@@ -14,7 +14,7 @@ KEY = ["wall", "model", "hinge_law", "kd_kN", "record", "pga_g", "scale"]
 
 
 def load(path):
-    """The 'ok' runs (damaged lines named and left out, rwsweep.store)."""
+    """The 'ok' runs (damaged lines named and left out, rockingwall.sweep.store)."""
     d = store.load_frame(path)
     return d[d.status == "ok"].set_index(KEY).sort_index()
 

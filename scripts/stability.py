@@ -1,6 +1,6 @@
 """Run the stability matrix (scripts/stability_cases.py says what it covers and why),
 print one row per case, write results/stability.csv and the table between
-'<!-- BEGIN stability -->' and '<!-- END stability -->' in README.md.
+'<!-- BEGIN stability -->' and '<!-- END stability -->' in docs/stability.md.
 
 Per case: fmi2sim's CVODE steps and events (--stats), the wall times of fmi2sim and fmpy, the
 largest energy gain beyond the input work (relative), whether any output is NaN or infinite,
@@ -114,11 +114,11 @@ def load_rows(path):
 
 
 def write_readme(block):
-    readme = REPO / "README.md"
+    readme = REPO / "docs" / "stability.md"
     text = readme.read_text()
     begin, end = "<!-- BEGIN stability -->", "<!-- END stability -->"
     if begin not in text or end not in text:
-        print("README.md has no stability markers; table not written", file=sys.stderr)
+        print("docs/stability.md has no stability markers; table not written", file=sys.stderr)
         return
     head, rest = text.split(begin, 1)
     _, tail = rest.split(end, 1)
@@ -130,9 +130,9 @@ def main(argv=None):
     ap.add_argument("--build", default=str(REPO / "build"), help="build folder with fmi2sim and RockingWall.fmu")
     ap.add_argument("--only", default="", help="run only cases whose name contains this text")
     ap.add_argument("--no-fmpy", action="store_true", help="skip the fmpy runs (and the peak comparison)")
-    ap.add_argument("--no-readme", action="store_true", help="do not write README.md")
+    ap.add_argument("--no-readme", action="store_true", help="do not write docs/stability.md")
     ap.add_argument("--out", default=str(REPO / "results" / "stability.csv"))
-    ap.add_argument("--readme-from", metavar="CSV", help="only write README.md's table from an earlier run's CSV")
+    ap.add_argument("--readme-from", metavar="CSV", help="only write docs/stability.md's table from an earlier run's CSV")
     a = ap.parse_args(argv)
     if a.readme_from:
         write_readme(readme_block(load_rows(a.readme_from)))
@@ -158,7 +158,7 @@ def main(argv=None):
     print(f"wrote {out}")
     if not a.no_readme and not a.only:
         write_readme(readme_block(rows))
-        print("wrote the stability table into README.md")
+        print("wrote the stability table into docs/stability.md")
     return 0 if all(r["ok"] for r in rows) else 1
 
 

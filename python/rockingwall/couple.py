@@ -402,7 +402,7 @@ def plot(r, path, title, other=None):
 
 
 def parse_args(argv):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(prog="rockingwall couple", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
     ap.add_argument("--diaphragm-fmu", help="default: the installed Diaphragm.fmu")
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")

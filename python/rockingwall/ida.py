@@ -8,7 +8,7 @@ Writes three PNGs to --out and prints the fragility fits:
 A run that collapsed has no meaningful peak (the run stops at the instability point): the IDA
 curves end there with a cross, and the medians count it as larger than any peak.
 
-  .venv/bin/python scripts/ida.py results/sweep_fema.csv --out results/
+  rockingwall ida results/sweep_fema.csv --out results/
 """
 import argparse
 import pathlib
@@ -38,10 +38,15 @@ def report_not_ok(d, path):
 
 def load(path, wall, model, hinge_law):
     """The 'ok' runs of one wall, model and hinge law; damaged lines of the file are named and left
-    out (rwsweep.store), and a run_id written twice counts once (the last row)."""
+    out (rockingwall.sweep.store), and a run_id written twice counts once (the last row)."""
     d = store.load_frame(path)
     report_not_ok(d, path)
     d.attrs["unfinished"] = int(d.status.isin(RETRIED).sum())
+    if wall is None:  # the file's only wall, else the user must say which
+        walls = sorted(d.wall[d.status == OK].unique())
+        if len(walls) != 1:
+            raise ValueError(f"{path}: runs of {len(walls)} walls ({', '.join(walls)}): choose one with --wall")
+        wall = walls[0]
     d = d[(d.status == OK) & (d.wall == str(wall)) & (d.model == model) & (d.hinge_law == hinge_law)]
     if d.empty:
         raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
@@ -137,10 +142,11 @@ def kd_map(d, path):
 
 
 def main(argv=None):
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p = argparse.ArgumentParser(prog="rockingwall ida", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("results", help="results CSV of `rockingwall sweep`")
     p.add_argument("--out", default="results")
-    p.add_argument("--wall", default="1", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name")
+    p.add_argument("--wall", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name "
+                                  "(default: the file's only wall)")
     p.add_argument("--model", default="flexibleTop")
     p.add_argument("--hinge-law", default="dohertyHinge")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
@@ -148,10 +154,14 @@ def main(argv=None):
     try:
         d = load(args.results, args.wall, args.model, args.hinge_law)
     except (OSError, ValueError) as exc:
-        print(f"ida.py: error: {exc}", file=sys.stderr)
+        print(f"rockingwall ida: error: {exc}", file=sys.stderr)
         return 2
     out = pathlib.Path(args.out)
-    out.mkdir(parents=True, exist_ok=True)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        print(f"rockingwall ida: error: --out {out}: {exc.strerror}", file=sys.stderr)
+        return 2
     sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
     ida_curves(sub, out / "ida_curves.png")
     fits = fragility_plot(sub, out / "fragility.png")

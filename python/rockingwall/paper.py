@@ -276,7 +276,7 @@ def calibrate(out, bar_factory):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = argparse.ArgumentParser(prog="rockingwall paper", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--out", default="results", help="output directory")
     ap.add_argument("--records", help="directory of PEER .AT2 records for Table 5.4")
     ap.add_argument("--quick", action="store_true")

@@ -1,4 +1,4 @@
-"""RockingWall coupled to the Diaphragm FMU through Co-Simulation (scripts/couple.py), RockingWall
+"""RockingWall coupled to the Diaphragm FMU through Co-Simulation (`rockingwall couple`), RockingWall
 as a Co-Simulation FMU on its own, and the FMUs' self-containment."""
 import json
 import os

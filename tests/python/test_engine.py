@@ -1,4 +1,4 @@
-"""The exact event-driven engine (fmu_src/rw_engine.c via scripts/rw_engine.py) against fmi2sim.
+"""The exact event-driven engine (fmu_src/rw_engine.c via rockingwall.engine) against fmi2sim.
 
 Random scenes (tests/python/engine_scenes.py): the same collapse outcome and impact count, and
 peaks within 1e-5, against fmi2sim at rtol 1e-10; where the two disagree, fmi2sim at rtol 1e-12

@@ -164,7 +164,7 @@ def test_readme_fmpy_call_keeps_the_peaks(rockingwall_fmu):
     softer wall at 0.05 s). The README passes output_interval=0.005: within 1 % of the converged
     Model-Exchange peak (measured 0.003 %)."""
     from fmpy import simulate_fmu
-    import rw_fmu
+    from rockingwall import fmu as rw_fmu
     from rwref import inputs
     q, t_end = inputs.el_centro(0.5), 40.0
     converged = rw_fmu.simulate(rockingwall_fmu, t_end, q.t, q.a, rtol=1e-9, output_interval=1e-3, Kd=5e4)

@@ -1,4 +1,4 @@
-"""scripts/sweep.py and rwsweep: a small sweep gives the same peaks as fmi2sim run by hand, an
+"""`rockingwall sweep` and rockingwall.sweep: a small sweep gives the same peaks as fmi2sim run by hand, an
 interrupted sweep resumes without repeating runs, a damaged record is reported while the rest
 completes, and the FEMA P695 conversion and the fragility fit return what they should."""
 import json
@@ -43,7 +43,7 @@ def at2_values(path):
 
 
 def by_hand(exe, fmu, rec, scale, stop, kd_kN, tmp_path, rtol=1e-6):
-    """One fmi2sim run typed out in full, not through rwsweep."""
+    """One fmi2sim run typed out in full, not through rockingwall.sweep."""
     out = tmp_path / "hand.json"
     args = [exe, fmu, "--ag", rec, "--ag-scale", repr(scale), "--stop-time", repr(stop), "--rtol", repr(rtol),
             "--summary", out, "--set", "support=3", "--set", "hingeLaw=4", "--set", "er=0.86", "--set", f"Kd={kd_kN * 1e3!r}"]

@@ -32,7 +32,7 @@ class RunSpec:
     stop_time: float
     sets: tuple         # (("NAME", "VALUE"), ...) for fmi2sim --set
     error: str = ""     # the record could not be planned: reported without running
-    record_sha256: str = ""  # the record's content: part of the run's key (rwsweep.provenance)
+    record_sha256: str = ""  # the record's content: part of the run's key (rockingwall.sweep.provenance)
 
 
 def load_config(path):

@@ -33,7 +33,7 @@ class Record:
     pga_g: float      # peak |acceleration| of the record as given [g]
     duration: float   # (NPTS - 1) * DT [s]
     error: str = ""   # set when the file cannot even be planned (header unreadable)
-    sha256: str = ""  # content hash (rwsweep.provenance): a result is tied to the bytes, not the name
+    sha256: str = ""  # content hash (rockingwall.sweep.provenance): a result is tied to the bytes, not the name
 
 
 def _at2_header(line):
@@ -145,7 +145,7 @@ def at2_folder(folder):
 def write_at2(path, acc_g, dt, title):
     """An NGA-style AT2 file: 4 header lines, then the acceleration in g, 5 values per line."""
     acc_g = np.asarray(acc_g, dtype=float)
-    lines = [title, "converted by scripts/rwsweep/records.py", "ACCELERATION TIME SERIES IN UNITS OF G",
+    lines = [title, "converted by rockingwall.sweep.records", "ACCELERATION TIME SERIES IN UNITS OF G",
              f"NPTS= {len(acc_g)}, DT= {dt:.8g} SEC"]
     for i in range(0, len(acc_g), 5):
         lines.append("  ".join(f"{v:.7E}" for v in acc_g[i:i + 5]))

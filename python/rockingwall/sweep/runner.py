@@ -16,7 +16,7 @@ import tempfile
 import time
 
 # The columns of the results file, in order. Peaks are max |value| over fmi2sim's output rows and
-# solver steps. The last columns say what the row was computed from (rwsweep.provenance).
+# solver steps. The last columns say what the row was computed from (rockingwall.sweep.provenance).
 COLUMNS = ["run_id", "wall", "model", "hinge_law", "kd_kN", "record", "record_pga_g", "scale", "pga_g",
            "status", "message", "peak_s1", "peak_s2", "peak_F_top", "collapsed", "impacts", "end_time",
            "steps", "cpu_s", "elapsed_s",

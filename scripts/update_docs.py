@@ -1,9 +1,9 @@
-"""Regenerate the README's result tables and pictures from results/ (written by
-scripts/reproduce_paper.py, scripts/bench.py and scripts/main_job.py), so the README shows what
-the current code computes, not a copy of an older run.
+"""Regenerate the result tables and pictures of the README and the docs pages from results/
+(written by `rockingwall paper`, `rockingwall demo` and scripts/bench.py), so they show what the
+current code computes, not a copy of an older run.
 
-Each table stands between '<!-- BEGIN name -->' and '<!-- END name -->' in README.md; the PNGs
-the README links are copied to docs/img/."""
+Each table stands between '<!-- BEGIN name -->' and '<!-- END name -->' in the page BLOCKS names;
+the PNGs they link are copied to docs/img/."""
 import csv
 import pathlib
 import re
@@ -79,32 +79,38 @@ def text_block(name):
     return f"```\n{path.read_text().rstrip()}\n```" if path.exists() else None
 
 
-def replace(readme, name, body):
+def replace(page, text, name, body):
     if body is None:
-        print(f"update_readme: no data for '{name}', block left as it is", file=sys.stderr)
-        return readme
+        print(f"update_docs: no data for '{name}', block left as it is", file=sys.stderr)
+        return text
     pattern = re.compile(rf"(<!-- BEGIN {name} -->\n)(?:.*?\n)?(<!-- END {name} -->)", re.S)
-    if not pattern.search(readme):
-        raise SystemExit(f"update_readme: README.md has no block '{name}'")
-    return pattern.sub(lambda m: m.group(1) + body + "\n" + m.group(2), readme)
+    if not pattern.search(text):
+        raise SystemExit(f"update_docs: {page} has no block '{name}'")
+    return pattern.sub(lambda m: m.group(1) + body + "\n" + m.group(2), text)
+
+
+# page -> [(block name, its new content)]
+BLOCKS = {
+    "README.md": [("main-job", lambda: text_block("main_job.txt"))],
+    "docs/paper.md": [(f"table-5-{n}", lambda n=n: paper_table(f"table_5_{n}.csv")) for n in (1, 2, 4)],
+    "docs/performance.md": [("bench-ratios", lambda: text_block("bench_summary.txt")),
+                            ("bench-ladder", ladder_table), ("bench-all", bench_tables)],
+}
 
 
 def main():
-    readme = (REPO / "README.md").read_text()
-    readme = replace(readme, "main-job", text_block("main_job.txt"))
-    readme = replace(readme, "table-5-1", paper_table("table_5_1.csv"))
-    readme = replace(readme, "table-5-2", paper_table("table_5_2.csv"))
-    readme = replace(readme, "table-5-4", paper_table("table_5_4.csv"))
-    readme = replace(readme, "bench-ratios", text_block("bench_summary.txt"))
-    readme = replace(readme, "bench-ladder", ladder_table())
-    readme = replace(readme, "bench-all", bench_tables())
-    (REPO / "README.md").write_text(readme)
+    for page, blocks in BLOCKS.items():
+        path = REPO / page
+        text = path.read_text()
+        for name, body in blocks:
+            text = replace(page, text, name, body())
+        path.write_text(text)
     img = REPO / "docs" / "img"
     img.mkdir(parents=True, exist_ok=True)
     for name in IMAGES:
         if (RESULTS / name).exists():
             shutil.copy(RESULTS / name, img / name)
-    print("update_readme: README.md and docs/img/ updated")
+    print("update_docs: README.md, docs/*.md and docs/img/ updated")
 
 
 if __name__ == "__main__":
