@@ -1,7 +1,7 @@
 /* rwengine: one run of the exact event-driven engine (fmu_src/rw_engine.c) from the command line,
  * in fmi2sim's form (--set, --input/--ag, --stop-time), printing the peaks, the collapse and the
  * counters as one JSON object. For whole-process timing and shell pipelines; the batch C API and
- * the Python binding (scripts/rw_engine.py) are the main ways in. */
+ * the Python binding (rockingwall.engine) are the main ways in. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
