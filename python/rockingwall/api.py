@@ -24,6 +24,7 @@ class Result:
     engine: str
     peak_s1: float
     peak_s2: float
+    peak_F_top: float   # N/m: the largest force of the tie on the diaphragm
     collapsed: bool
     t_collapse: float
     impacts: int
@@ -36,7 +37,8 @@ class Result:
 
     def peaks(self):
         """The numbers users print: a dict with units in the keys."""
-        return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "s1_over_Delta_u": self.s1_over_delta_u,
+        return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "peak_F_top_N_per_m": self.peak_F_top,
+                "s1_over_Delta_u": self.s1_over_delta_u,
                 "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
 
 
@@ -51,7 +53,13 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
-    return Result(wall, record.name, engine, peak_s1, peak_s2, collapsed, t_collapse, impacts, history)
+    return Result(wall, record.name, engine, peak_s1, peak_s2, _peak_f_top(wall, peak_s2), collapsed, t_collapse,
+                  impacts, history)
+
+
+def _peak_f_top(wall, peak_s2):
+    """F_top = K_d (s2 - u_top) with u_top = 0 (a wall on its own): K_d times the peak of s2."""
+    return wall.params["Kd"] * peak_s2 if int(wall.params["support"]) == 3 else 0.0
 
 
 def _exact(wall, record, t_end, grid, rtol, output_interval):

@@ -19,13 +19,14 @@ DELEGATED = {
 
 
 def build_parser():
-    from . import info, run
+    from . import assess, info, run
     p = argparse.ArgumentParser(prog="rockingwall", description=__doc__ + "\n\n" + "\n".join(
         f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"rockingwall {__version__}")
-    sub = p.add_subparsers(title="commands", metavar="{run,info," + ",".join(DELEGATED) + "}")
+    sub = p.add_subparsers(title="commands", metavar="{run,assess,info," + ",".join(DELEGATED) + "}")
     run.parser(sub)
+    assess.parser(sub)
     info.parser(sub)
     return p
 

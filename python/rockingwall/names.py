@@ -29,6 +29,8 @@ def _code(value, table, what):
         return table[value]
     if isinstance(value, str) and value.isdigit():
         value = int(value)
+    if isinstance(value, float) and value.is_integer():
+        value = int(value)
     if isinstance(value, int) and not isinstance(value, bool) and value in table.values():
         return value
     raise ValueError(f"unknown {what} {value!r}; known: {', '.join(f'{n} ({c})' for n, c in table.items())}")

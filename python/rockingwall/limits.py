@@ -1,0 +1,66 @@
+"""Limit states an engineer recognises, checked on a run's peaks.
+
+A limit state is 'QUANTITY >= VALUE', named or not: QUANTITY is s1 (mid-height), s2 (top) or
+F_top (the tie force on the diaphragm), VALUE a number with a unit ('50mm', '10kN/m') or a
+multiple of the wall's Delta_u or b ('0.6*Delta_u'). Collapse (the model's instability) is
+always checked as well.
+
+Always checked: s1 >= 0.6 Delta_u, the displacement capacity NZSEE's assessment guideline (C8,
+2017) allows for a face-loaded wall (60 % of the instability displacement), and s1 >= Delta_u,
+the instability displacement of the simply supported wall; a wall past either has little margin
+left even when the model has not (yet) called it collapsed."""
+import dataclasses
+import re
+
+from . import units
+
+QUANTITIES = {"s1": ("m", "peak_s1"), "s2": ("m", "peak_s2"), "F_top": ("N/m", "peak_F_top")}
+DEFAULTS = ("0.6 Delta_u: s1 >= 0.6*Delta_u", "Delta_u: s1 >= 1.0*Delta_u")
+_FORM = re.compile(r"^\s*(?:(?P<name>[^:]+):)?\s*(?P<q>s1|s2|F_top)\s*>=\s*(?P<value>.+?)\s*$")
+_MULTIPLE = re.compile(r"^(?P<k>[0-9.eE+-]+)\s*\*\s*(?P<ref>Delta_u|b)$")
+
+
+@dataclasses.dataclass(frozen=True)
+class LimitState:
+    name: str
+    quantity: str
+    threshold: float   # in the quantity's SI unit, for the wall it was made for
+
+    def exceeded(self, peaks):
+        """peaks: a dict with peak_s1, peak_s2 [m], peak_F_top [N/m] and collapsed. A collapsed
+        run exceeds every limit state (its peaks stop where the wall fell)."""
+        return bool(peaks["collapsed"]) or peaks[QUANTITIES[self.quantity][1]] >= self.threshold
+
+    def describe(self):
+        unit = QUANTITIES[self.quantity][0]
+        value = f"{self.threshold * 1e3:.1f} mm" if unit == "m" else f"{self.threshold / 1e3:.3g} kN/m"
+        return f"{self.name}: {self.quantity} >= {value}"
+
+
+def parse(text, wall):
+    """A LimitState from 'NAME: s1 >= 0.6*Delta_u' (NAME optional) for this wall."""
+    m = _FORM.match(text)
+    if not m:
+        raise ValueError(f"limit state {text!r}: write 'NAME: QUANTITY >= VALUE' with QUANTITY s1, s2 or F_top "
+                         "and VALUE like 50mm, 10kN/m or 0.6*Delta_u")
+    quantity, value = m.group("q"), m.group("value")
+    multiple = _MULTIPLE.match(value.replace(" ", ""))
+    if multiple:
+        if quantity == "F_top":
+            raise ValueError(f"limit state {text!r}: a force cannot be a multiple of {multiple.group('ref')}")
+        ref = wall.delta_u if multiple.group("ref") == "Delta_u" else wall.params["b"]
+        threshold = float(multiple.group("k")) * ref
+    else:
+        threshold = units.parse(value, QUANTITIES[quantity][0], quantity)
+    if not threshold > 0:
+        raise ValueError(f"limit state {text!r}: the threshold must be > 0")
+    return LimitState((m.group("name") or text).strip(), quantity, threshold)
+
+
+def parse_all(texts, wall):
+    """The default limit states and those given, each name once."""
+    states = [parse(t, wall) for t in (*DEFAULTS, *(texts or ()))]
+    names = [s.name for s in states]
+    if len(set(names)) != len(names):
+        raise ValueError(f"limit states need distinct names: {names}")
+    return states
