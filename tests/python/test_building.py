@@ -199,3 +199,18 @@ def test_pinched_diaphragm_loop(building_fmu):
           f"{pinched.sum()} of them in the pinched region (h < 0.5)")
     assert pinched.sum() > 20, "the loop never passes the pinched region"
     assert err.max() < 2e-2
+
+
+def test_building_variables_match_its_c_table(building_fmu):
+    """The packaged modelDescription.xml is the one generated from building_variables.h: names,
+    value references, causalities, and the state order of the physics (8 states per floor)."""
+    import gen_model_description as gen
+    table, _, defines = gen.parse_model("Building")
+    from fmpy import read_model_description
+    md = read_model_description(str(building_fmu))
+    assert md.guid == defines["RW_GUID"] and md.numberOfEventIndicators == 0
+    assert [(v.name, v.valueReference, v.causality) for v in md.modelVariables] == \
+        [(v["name"], v["vr"], v["causality"]) for v in table]
+    per_floor = ["u_floor", "v_floor", "z_storey", "u_diaph", "v_diaph", "z_diaph", "work_storey", "work_diaph"]
+    assert [d.variable.derivative.name for d in md.derivatives] == \
+        [f"{name}_{i}" for i in range(1, 6) for name in per_floor]
