@@ -214,3 +214,27 @@ def test_building_variables_match_its_c_table(building_fmu):
     per_floor = ["u_floor", "v_floor", "z_storey", "u_diaph", "v_diaph", "z_diaph", "work_storey", "work_diaph"]
     assert [d.variable.derivative.name for d in md.derivatives] == \
         [f"{name}_{i}" for i in range(1, 6) for name in per_floor]
+
+
+def test_wall_force_static_deflection(building_fmu):
+    """A constant F_wall_2 on the linear three-storey building, damped out: the static deflections
+    by hand (the force goes through diaphragm 2 into floor 2 and down storeys 2 and 1; storey 3
+    and floor 3 just follow): u_floor_1 = F/k_1, u_floor_2 = u_floor_1 + F/k_2, u_diaph_2 =
+    u_floor_2 + F/kd_2, floor 3 and diaphragm 3 move with floor 2, diaphragm 1 with floor 1; the
+    storey shears are F below the loaded floor and 0 above; u_top_i the diaphragm differences."""
+    F = 800.0
+    start = dict(elastic_start(30.0, 0.0))
+    signal = np.array([(0.0, F), (60.0, F)], dtype=[("time", float), ("F_wall_2", float)])
+    r = simulate_fmu(str(building_fmu), fmi_type="ModelExchange", start_values=start, stop_time=60.0,
+                     output_interval=0.1, relative_tolerance=1e-10, input=signal,
+                     output=["u_floor_1", "u_floor_2", "u_floor_3", "u_diaph_1", "u_diaph_2", "u_diaph_3",
+                             "V_storey_1", "V_storey_2", "V_storey_3", "u_top_2", "u_top_3", "a_diaph_2"])
+    end = r[-1]
+    u1 = F / K_STOREY[0]
+    u2 = u1 + F / K_STOREY[1]
+    expected = {"u_floor_1": u1, "u_floor_2": u2, "u_floor_3": u2, "u_diaph_1": u1, "u_diaph_2": u2 + F / K_DIAPH[1],
+                "u_diaph_3": u2, "V_storey_1": F, "V_storey_2": F, "u_top_2": u2 + F / K_DIAPH[1] - u1,
+                "u_top_3": -F / K_DIAPH[1]}
+    for name, value in expected.items():
+        assert end[name] == pytest.approx(value, rel=1e-6), name
+    assert abs(end["V_storey_3"]) < 1e-6 * F and abs(end["a_diaph_2"]) < 1e-9
