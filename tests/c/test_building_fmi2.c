@@ -2,6 +2,7 @@
  * range, NaN and infinite parameters, inputs and start values, Integer parameters out of range,
  * unknown value references, outputs set, calls in forbidden states. Each must return fmi2Error
  * with a reason that names the variable (or value reference, or function) passed to the logger,
+ * and so must every Model-Exchange call in a state where FMI 2.0 forbids it (the allowed ones succeed),
  * must not crash, and the instance must still work after fmi2Reset (ASan/UBSan in build-asan
  * check the memory). Also: the floors above nStoreys stay at rest, and a Co-Simulation run. */
 #include "check.h"
@@ -148,6 +149,102 @@ static void test_value_references_and_settability(void)
     }
 }
 
+/* ---- the Model-Exchange state machine: every call in every state, allowed or not ---------- */
+enum { M_INST, M_INIT, M_EVENT, M_CONT, M_TERM, M_ERROR, N_ME_STATES };
+static const char *ME_STATE_NAMES[] = {"instantiated", "initializationMode", "eventMode", "continuousTimeMode",
+                                       "terminated", "error"};
+#define BIT(s) (1u << (s))
+#define AFTER_INST (BIT(M_INIT) | BIT(M_EVENT) | BIT(M_CONT) | BIT(M_TERM) | BIT(M_ERROR))
+
+static fmi2Component in_me_state(int s)
+{
+    fmi2Component c = fmi2Instantiate("matrix", fmi2ModelExchange, BD_GUID, "", &CB, fmi2False, fmi2False);
+    fmi2ValueReference nosuch = 999;
+    double v = 0;
+    if (!c) return NULL;
+    if (s == M_ERROR) { fmi2SetReal(c, &nosuch, 1, &v); return c; }
+    if (s == M_INST) return c;
+    fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0);
+    fmi2EnterInitializationMode(c);
+    if (s == M_INIT) return c;
+    fmi2ExitInitializationMode(c);
+    if (s == M_EVENT) return c;
+    if (s == M_TERM) { fmi2Terminate(c); return c; }
+    fmi2EnterContinuousTimeMode(c);
+    return c;
+}
+
+static fmi2ValueReference VR_N = BD_VR_nStoreys, VR_AG = BD_VR_ag, VR_M1 = BD_VR_m_1;
+static fmi2Status m_setup(fmi2Component c) { return fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0); }
+static fmi2Status m_enter_init(fmi2Component c) { return fmi2EnterInitializationMode(c); }
+static fmi2Status m_exit_init(fmi2Component c) { return fmi2ExitInitializationMode(c); }
+static fmi2Status m_terminate(fmi2Component c) { return fmi2Terminate(c); }
+static fmi2Status m_get_real(fmi2Component c) { double v; return fmi2GetReal(c, &VR_M1, 1, &v); }
+static fmi2Status m_get_int(fmi2Component c) { fmi2Integer v; return fmi2GetInteger(c, &VR_N, 1, &v); }
+static fmi2Status m_set_real(fmi2Component c) { double v = 0.5; return fmi2SetReal(c, &VR_AG, 1, &v); }
+static fmi2Status m_set_int(fmi2Component c) { fmi2Integer v = 3; return fmi2SetInteger(c, &VR_N, 1, &v); }
+static fmi2Status m_enter_event(fmi2Component c) { return fmi2EnterEventMode(c); }
+static fmi2Status m_nds(fmi2Component c) { fmi2EventInfo ei; return fmi2NewDiscreteStates(c, &ei); }
+static fmi2Status m_enter_cont(fmi2Component c) { return fmi2EnterContinuousTimeMode(c); }
+static fmi2Status m_completed(fmi2Component c)
+{
+    fmi2Boolean ev, term;
+    return fmi2CompletedIntegratorStep(c, fmi2True, &ev, &term);
+}
+static fmi2Status m_set_time(fmi2Component c) { return fmi2SetTime(c, 0.0); }
+static fmi2Status m_set_states(fmi2Component c) { double x[BD_NUMBER_OF_STATES] = {0}; return fmi2SetContinuousStates(c, x, BD_NUMBER_OF_STATES); }
+static fmi2Status m_get_der(fmi2Component c) { double dx[BD_NUMBER_OF_STATES]; return fmi2GetDerivatives(c, dx, BD_NUMBER_OF_STATES); }
+static fmi2Status m_get_states(fmi2Component c) { double x[BD_NUMBER_OF_STATES]; return fmi2GetContinuousStates(c, x, BD_NUMBER_OF_STATES); }
+
+static const struct {
+    const char *name;
+    fmi2Status (*call)(fmi2Component);
+    unsigned allowed; /* FMI 2.0 section 3.2.3 */
+} ME_API[] = {
+    {"fmi2SetupExperiment", m_setup, BIT(M_INST)},
+    {"fmi2EnterInitializationMode", m_enter_init, BIT(M_INST)},
+    {"fmi2ExitInitializationMode", m_exit_init, BIT(M_INIT)},
+    {"fmi2Terminate", m_terminate, BIT(M_EVENT) | BIT(M_CONT)},
+    {"fmi2GetReal", m_get_real, AFTER_INST},
+    {"fmi2GetInteger", m_get_int, AFTER_INST},
+    {"fmi2SetReal", m_set_real, BIT(M_INST) | BIT(M_INIT) | BIT(M_EVENT) | BIT(M_CONT)},
+    {"fmi2SetInteger", m_set_int, BIT(M_INST) | BIT(M_INIT)}, /* a parameter: before exit init only */
+    {"fmi2EnterEventMode", m_enter_event, BIT(M_EVENT) | BIT(M_CONT)},
+    {"fmi2NewDiscreteStates", m_nds, BIT(M_EVENT)},
+    {"fmi2EnterContinuousTimeMode", m_enter_cont, BIT(M_EVENT)},
+    {"fmi2CompletedIntegratorStep", m_completed, BIT(M_CONT)},
+    {"fmi2SetTime", m_set_time, BIT(M_EVENT) | BIT(M_CONT)},
+    {"fmi2SetContinuousStates", m_set_states, BIT(M_CONT)},
+    {"fmi2GetDerivatives", m_get_der, BIT(M_EVENT) | BIT(M_CONT) | BIT(M_TERM) | BIT(M_ERROR)},
+    {"fmi2GetContinuousStates", m_get_states, AFTER_INST},
+};
+
+static void test_state_machine(void)
+{
+    size_t f;
+    int s, forbidden = 0;
+    for (f = 0; f < sizeof ME_API / sizeof ME_API[0]; f++)
+        for (s = 0; s < N_ME_STATES; s++) {
+            fmi2Component c = in_me_state(s);
+            fmi2Status st;
+            char what[160];
+            CHECK(c != NULL, "instantiate");
+            if (!c) continue;
+            snprintf(what, sizeof what, "%s in %s", ME_API[f].name, ME_STATE_NAMES[s]);
+            n_logs = 0;
+            st = ME_API[f].call(c);
+            if (!(ME_API[f].allowed & BIT(s))) {
+                expect_error(c, st, what, ME_API[f].name);
+                forbidden++;
+            } else if (s != M_ERROR) {
+                CHECK(st == fmi2OK, "%s: status %d (%s)", what, (int)st, last_message);
+            }
+            fmi2FreeInstance(c);
+        }
+    printf("  %d forbidden (function, state) pairs rejected\n", forbidden);
+    CHECK(forbidden >= 40, "only %d forbidden pairs exercised", forbidden);
+}
+
 /* nStoreys = 2: start values given for floor 4 are dropped, floors 3-5 do not move */
 static void test_floors_above_rest(void)
 {
@@ -195,6 +292,7 @@ int main(void)
     test_out_of_range();
     test_nonfinite();
     test_value_references_and_settability();
+    test_state_machine();
     test_floors_above_rest();
     test_cosim();
     printf("%d checks, %d failures\n", checks, failures);
