@@ -98,9 +98,11 @@ static double floor_real(bd_data *S, int i, int slot, const double dx[BD_NX])
     if (param) return *param;
     if (slot >= SLOT_STATE && slot < SLOT_STATE + BD_STATES_PER_FLOOR) return xf[slot - SLOT_STATE];
     if (slot > SLOT_RATE && slot < SLOT_RATE + BD_STATES_PER_FLOOR) return dx[BD_STATES_PER_FLOOR * i + slot - SLOT_RATE];
+    if (slot == SLOT_F_WALL) return S->in.F_wall[i];
+    /* a floor above nStoreys is not there: its outputs read 0, not the floor below's negative */
+    if (!active) return 0.0;
     switch (slot) {
-    case SLOT_F_WALL: return S->in.F_wall[i];
-    case SLOT_A_DIAPH: return active ? bd_diaphragm_acceleration(&S->P, &S->in, S->x, i) : 0.0;
+    case SLOT_A_DIAPH: return bd_diaphragm_acceleration(&S->P, &S->in, S->x, i);
     case SLOT_U_TOP: return xf[BD_Y] - (i > 0 ? S->x[BD_STATES_PER_FLOOR * (i - 1) + BD_Y] : 0.0);
     case SLOT_V_STOREY: return bd_storey_force(&S->P, S->x, i);
     case SLOT_DRIFT: return bd_drift(S->x, i);
