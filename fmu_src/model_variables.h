@@ -31,6 +31,7 @@ X(impacts,    35, "impacts",     Integer, "output",    "discrete",   "calculated
 X(condition,  36, "condition",   Integer, "output",    "discrete",   "calculated", 0,      "",       0,    0,  "Paper condition 1-4 from the hinge sides; 0 while a rigid hinge is closed") \
 X(P_ground,   37, "P_ground",   Real,    "output",    "continuous", "calculated", 0,      "W/m",    0,    0,  "Power of the ground motion on the wall (energy bookkeeping: d(energy)/dt = P_ground - F_top*der(u_top) between impacts)") \
 X(dissipated, 38, "dissipated", Real,    "output",    "discrete",   "calculated", 0,      "J/m",    0,    0,  "Energy lost so far in impacts and hinge closings (sum of the drops of energy at events)") \
+X(F_base,     47, "F_base",      Real,    "output",    "continuous", "calculated", 0,      "N/m",    0,    0,  "Horizontal force of the wall on its base (with the overburden's inertia), positive toward +x: -(W+Wd)/g*ag - sum of body mass*horizontal acceleration relative to the ground - F_top (simplySupported: base and top support together)") \
 X(q1,         40, "q1",          Real,    "local",     "continuous", "exact",      0,      "rad",    0.01, 0,  "Rotation of the lower body (state)") \
 X(q2,         41, "q2",          Real,    "local",     "continuous", "exact",      0,      "rad",    0.01, 0,  "Rotation of the upper body (state)") \
 X(dq1,        42, "dq1",         Real,    "local",     "continuous", "exact",      0,      "rad/s",  0.1,  40, "Rate of q1 (state, der(q1))") \
@@ -61,6 +62,7 @@ D(impacts,   "") \
 D(condition, "") \
 D(P_ground,  "q1 q2 dq1 dq2 ag") \
 D(dissipated, "") \
+D(F_base,    "q1 q2 dq1 ag u_top") \
 D(dq1,       "dq1") \
 D(dq2,       "dq1 dq2") \
 D(der_dq1,   "q1 q2 ag u_top") \

@@ -83,6 +83,7 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
         case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
         case RW_VR_s2: v[i] = rw_s2(&S->P, x); break;
         case RW_VR_F_top: v[i] = rw_F_top(&S->P, &S->in, x); break;
+        case RW_VR_F_base: v[i] = rw_F_base(&S->P, &S->D, &m, &S->in, x, dx); break;
         case RW_VR_energy: v[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
         case RW_VR_P_ground: v[i] = rw_ground_power(&S->P, &S->D, &m, &S->in, x); break;
         case RW_VR_dissipated: v[i] = S->dissipated; break;

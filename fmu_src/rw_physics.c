@@ -364,6 +364,27 @@ double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX])
     return p->Kd * (rw_s2(p, x) - in->u_top);
 }
 
+/* Horizontal momentum balance of the wall: sum_i m_i (ag + x_i'') = R - F_top, where R is the
+ * support's reaction on the wall and -F_top the spring's force on it; the wall puts -R on its
+ * base. scripts/derive_equations.py derives the coefficients (c = -p of Eq. 3.4). */
+double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                 const double x[RW_NX], const double dx[RW_NX])
+{
+    const double m_wall = p->W / p->g, m_over = d->Wd / p->g;
+    switch (p->support) {
+    case RW_PARAPET: { /* one block, its centroid at R from the pivot: x_G'' = R cos(s a - th) th'' + R sin(s a - th) th'^2 */
+        const double s = m->side_b, arm = s * d->alpha - x[0];
+        if (m->closed_b) return -m_wall * in->ag;
+        return -m_wall * (in->ag + d->R * (cos(arm) * dx[2] + sin(arm) * x[2] * x[2]));
+    }
+    case RW_SIMPLY_SUPPORTED: /* both centroids at h q1/4; the top (and the overburden) move with the ground.
+                                 Base and top support together: the top's reaction is not split off */
+        return -(m_wall + m_over) * in->ag - m_wall * p->h / 4.0 * dx[2];
+    default: /* c . q'' with c = -pa */
+        return -(m_wall + m_over) * in->ag + d->pa[0] * dx[2] + d->pa[1] * dx[3] - rw_F_top(p, in, x);
+    }
+}
+
 int rw_condition(const rw_params *p, const rw_mode *m)
 {
     if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) return 0;

@@ -130,6 +130,10 @@ double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m
 double rw_s1(const rw_params *p, const double x[RW_NX]);
 double rw_s2(const rw_params *p, const double x[RW_NX]);
 double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX]);
+/* Horizontal force of the wall on its base, + toward +x, from the horizontal momentum balance of
+ * the bodies and the overburden (docs/model.md "Base force"); dx = rw_derivatives(x). */
+double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                 const double x[RW_NX], const double dx[RW_NX]);
 int rw_condition(const rw_params *p, const rw_mode *m);
 
 /* Modes -------------------------------------------------------------------------------------- */

@@ -9,6 +9,7 @@
 
 #define RW_NUMBER_OF_PARAMETERS FMU_SYMBOL(RW_NUMBER_OF_PARAMETERS)
 #define RW_PARAM_INFO FMU_SYMBOL(RW_PARAM_INFO)
+#define rw_F_base FMU_SYMBOL(rw_F_base)
 #define rw_F_top FMU_SYMBOL(rw_F_top)
 #define rw_caps FMU_SYMBOL(rw_caps)
 #define rw_closed_forces FMU_SYMBOL(rw_closed_forces)

@@ -13,6 +13,15 @@ terms and b in the mass matrix are neglected against h as in the paper.  The res
 
 and the constant hinge terms A_i, B_i of the four conditions.
 
+Base force (RockingWall output F_base): the horizontal momentum balance of the two bodies and the
+overburden, sum_i m_i (ag + x_i'') = R_base - F_top, where x_i is body i's horizontal displacement
+relative to the ground, R_base the ground's reaction on the wall and -F_top the spring's force on
+the wall. The wall puts F_base = -R_base on its base:
+
+    F_base = -m_tot*ag - c . q'' - F_top,   m_tot = (W + Wd)/g,   c_j = sum_i m_i dx_i/dq_j,
+
+and c = -p (the load vector of Eq. 3.4 is the same momentum coefficient: d'Alembert).
+
     derive_equations.py                      print the symbolic results
     derive_equations.py --json FILE [--h .. --b .. --W .. --psi .. --Kd .. --g ..]   also write numbers
 """
@@ -111,7 +120,23 @@ def derive():
     A3, B3 = conds[3]
     out["cap_m"] = sp.factor(-B3)
     out["cap_b"] = sp.factor(-A3 + out["cap_m"])
+    out.update(base_force(p))
     return out
+
+
+def base_force(p):
+    """F_base = -m_tot*ag - c . q'' - F_top from the horizontal momentum of the bodies and the
+    overburden (small rotations, b -> 0 as in M). Returns the coefficients and the residual of
+    the identity c = -p, which must be 0."""
+    G1, G2, T = positions(1, -1)
+    qs = [q1, q2]
+    masses = [(W1 / g, G1), (W1 / g, G2), (Wd / g, T)]
+    c = sp.zeros(1, 2)
+    for m, P in masses:
+        c += m * P[0:1, 0].jacobian(qs).subs({q1: 0, q2: 0, b: 0})
+    m_tot = sp.simplify(sum(m for m, _ in masses))
+    return {"base_mass": m_tot, "base_per_qdd": c.applyfunc(sp.factor),
+            "base_identity": sp.simplify(c.T + p)}
 
 
 def doherty_hinge_reduction(d):
@@ -163,6 +188,8 @@ def numbers(d, vals):
         "conditions": {str(c): {"A": f(A), "B": f(B)} for c, (A, B) in d["conditions"].items()},
         "cap_b": f(d["cap_b"]),
         "cap_m": f(d["cap_m"]),
+        "base_mass": f(d["base_mass"]),
+        "base_per_qdd": [f(d["base_per_qdd"][j]) for j in range(2)],
     }
 
 
@@ -193,14 +220,19 @@ def main(argv=None):
             sb, sm = CONDITIONS[c]
             print(f"  condition {c} (q1 {'>' if sb > 0 else '<'} 0, q2 {'>' if sm > 0 else '<'} q1):  A = {A},  B = {B}")
         print(f"\ncap_b = {d['cap_b']},  cap_m = {d['cap_m']}")
+        print("\nBase force F_base = -m_tot*ag - c . q'' - F_top (force of the wall on its base, +x):")
+        print(f"  m_tot = {d['base_mass']},  c = {list(d['base_per_qdd'])}")
+        print(f"  c + p (must be 0): {list(d['base_identity'])}")
     reduction = doherty_hinge_reduction(d)
     if not a.quiet:
         print("\ndohertyHinge along q2 = -q1 reduces to Doherty's 1DOF (each residual must be 0):")
         for name, residual in reduction.items():
             print(f"  {name}: {residual}")
     bad = {k: v for k, v in reduction.items() if v != 0}
+    if d["base_identity"] != sp.zeros(2, 1):
+        bad["base force coefficients c = -p"] = d["base_identity"]
     if bad:
-        print(f"dohertyHinge does not reduce to Doherty's 1DOF: {bad}", file=sys.stderr)
+        print(f"derivation checks failed (dohertyHinge reduction, base force): {bad}", file=sys.stderr)
         return 1
     if a.json:
         vals = dict(h=a.h, b=a.b, W=a.W, psi=a.psi, Kd=a.Kd, g=a.g)

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Generate each FMU's modelDescription.xml from its C variable table, the one source of truth
 for its variables: RockingWall (fmu_src/model_variables.h -> modelDescription.xml at the top level)
-and Diaphragm (fmu_src/diaphragm/diaphragm_variables.h -> fmu_src/diaphragm/modelDescription.xml).
+Diaphragm (fmu_src/diaphragm/diaphragm_variables.h -> fmu_src/diaphragm/modelDescription.xml) and
+Building (fmu_src/building/building_variables.h -> fmu_src/building/modelDescription.xml).
 
 The parameter table of docs/model.md comes from fmu_src/rw_parameters.h too.
 
@@ -36,6 +37,14 @@ MODELS = {
                     "damping ratio), driven by the ground acceleration and the wall's top force",
         sources=["diaphragm_model.c"] + SHARED_SOURCES,
         log_events="Instantiation and Co-Simulation steps"),
+    "Building": dict(
+        header=REPO / "fmu_src" / "building" / "building_variables.h",
+        output=REPO / "fmu_src" / "building" / "modelDescription.xml", prefix="BD",
+        description="In-plane building of 1 to 5 storeys per metre of out-of-plane wall: storey shear springs "
+                    "and floor diaphragms (linear, Bouc-Wen, or Bouc-Wen with pinching), Rayleigh damping, "
+                    "driven by the ground acceleration and the out-of-plane walls' forces",
+        sources=["building_physics.c", "building_model.c"] + SHARED_SOURCES,
+        log_events="Instantiation and Co-Simulation steps"),
 }
 # the defaults of the functions below: RockingWall
 HEADER = MODELS["RockingWall"]["header"]
@@ -60,6 +69,8 @@ UNITS = {
     "rad": {"rad": 1},
     "rad/s": {"rad": 1, "s": -1},
     "rad/s2": {"rad": 1, "s": -2},
+    "1/s": {"s": -1},
+    "s": {"s": 1},
 }
 LOG_CATEGORIES = [
     ("logEvents", None),  # the model's own description

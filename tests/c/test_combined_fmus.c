@@ -1,10 +1,10 @@
-/* Both FMUs' sources compiled into one shared object, each with its own
- * FMI2_FUNCTION_PREFIX (RockingWall_, Diaphragm_), as importers combine source-code FMUs. Each FMU
+/* The FMUs' sources compiled into one shared object, each with its own
+ * FMI2_FUNCTION_PREFIX (RockingWall_, Diaphragm_, Building_), as importers combine source-code FMUs. Each FMU
  * is simulated in Co-Simulation through the combined object and through its own binary; the
  * outputs must agree bitwise (same sources, same compiler flags). The combined object must not
  * export the unprefixed fmi2 names.
  *
- *     test_combined_fmus COMBINED.so RockingWall.so Diaphragm.so */
+ *     test_combined_fmus COMBINED.so RockingWall.so Diaphragm.so Building.so */
 #include "check.h"
 #include <dlfcn.h>
 #include <stdio.h>
@@ -13,6 +13,7 @@
 
 #include "fmi2Functions.h"
 #include "fmi2_test_logger.h"
+#include "building_variables.h"
 #include "diaphragm_variables.h"
 #include "model_variables.h"
 
@@ -103,9 +104,11 @@ int main(int argc, char **argv)
 {
     const fmu_case rw = {"RockingWall_", RW_GUID, RW_VR_q1, RW_VR_ag, {RW_VR_s1, RW_VR_energy}, 0.02, 0.3};
     const fmu_case dg = {"Diaphragm_", DG_GUID, DG_VR_u, DG_VR_F_top, {DG_VR_u, DG_VR_energy}, 0.01, 50.0};
+    const fmu_case bd = {"Building_", BD_GUID, BD_VR_u_diaph_2, BD_VR_F_wall_1, {BD_VR_u_diaph_2, BD_VR_work_storey_1},
+                         0.01, 5e3};
     void *combined;
-    if (argc != 4) {
-        fprintf(stderr, "usage: %s COMBINED.so RockingWall.so Diaphragm.so\n", argv[0]);
+    if (argc != 5) {
+        fprintf(stderr, "usage: %s COMBINED.so RockingWall.so Diaphragm.so Building.so\n", argv[0]);
         return 2;
     }
     combined = dlopen(argv[1], RTLD_NOW | RTLD_LOCAL);
@@ -114,6 +117,7 @@ int main(int argc, char **argv)
     CHECK(dlsym(combined, "fmi2Instantiate") == NULL, "the combined object exports the unprefixed fmi2Instantiate");
     compare(combined, argv[2], &rw);
     compare(combined, argv[3], &dg);
+    compare(combined, argv[4], &bd);
     dlclose(combined);
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;

@@ -1,6 +1,6 @@
 /* fmi2GetFMUstate / fmi2SetFMUstate and their serialization, for one FMU
- * (compiled twice: -DTEST_ROCKINGWALL against rw_fmi2_static, -DTEST_DIAPHRAGM against
- * dg_fmi2_static).
+ * (compiled three times: -DTEST_ROCKINGWALL against rw_fmi2_static, -DTEST_DIAPHRAGM against
+ * dg_fmi2_static, -DTEST_BUILDING against bd_fmi2_static).
  *  - Co-Simulation: a step taken after fmi2GetFMUstate and the same step taken again after
  *    fmi2SetFMUstate give bitwise equal outputs, at every step of a run with events inside steps
  *    and ramped inputs;
@@ -40,8 +40,23 @@ static const fmi2ValueReference OUTPUTS[] = {DG_VR_u, DG_VR_v, DG_VR_energy, DG_
 static const fmi2ValueReference START_VR = DG_VR_u, INPUT_VR = DG_VR_F_top, MARKER_VR = DG_VR_energy;
 static const double START = 0.01, INPUT = 50.0;
 static void structure(fmi2Component c) { (void)c; }
+#elif defined(TEST_BUILDING)
+#include "building_variables.h"
+#define GUID BD_GUID
+#define NX BD_NUMBER_OF_STATES
+static const fmi2ValueReference OUTPUTS[] = {BD_VR_u_diaph_1, BD_VR_u_diaph_2, BD_VR_a_diaph_2, BD_VR_V_storey_1,
+                                             BD_VR_work_storey_1, BD_VR_work_diaph_2, BD_VR_u_top_2};
+static const fmi2ValueReference START_VR = BD_VR_u_diaph_2, INPUT_VR = BD_VR_ag, MARKER_VR = BD_VR_work_storey_1;
+static const double START = 0.01, INPUT = 2.0;
+/* the default two storeys with pinched diaphragms */
+static void structure(fmi2Component c)
+{
+    fmi2ValueReference vr = BD_VR_diaphragmLaw;
+    fmi2Integer pinched = 2;
+    fmi2SetInteger(c, &vr, 1, &pinched);
+}
 #else
-#error "define TEST_ROCKINGWALL or TEST_DIAPHRAGM"
+#error "define TEST_ROCKINGWALL, TEST_DIAPHRAGM or TEST_BUILDING"
 #endif
 
 #define N_OUT (sizeof OUTPUTS / sizeof OUTPUTS[0])

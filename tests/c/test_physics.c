@@ -165,6 +165,22 @@ static void test_against_sympy(const char *json_path)
         CHECK(json_numbers(json, k2, v, 1) == 1, "cap_m not found");
         check_close("cap_m", d.cap_m, v[0], 1e-12);
     }
+    {   /* F_base = -base_mass*ag - base_per_qdd . q'' - F_top: each coefficient alone (q = 0, u_top = 0) */
+        const char *km[] = {"base_mass", NULL}, *kc[] = {"base_per_qdd", NULL};
+        const double x0[RW_NX] = {0, 0, 0, 0};
+        double mass, c[2];
+        rw_mode m = {0, 0, 1, -1, 0, 0};
+        rw_input in = {1.0, 0.0};
+        double dx[RW_NX] = {0, 0, 0, 0};
+        CHECK(json_numbers(json, km, &mass, 1) == 1 && json_numbers(json, kc, c, 2) == 2, "base force not found");
+        check_close("F_base per ag", rw_F_base(&p, &d, &m, &in, x0, dx), -mass, 1e-12);
+        in.ag = 0.0;
+        for (i = 0; i < 2; i++) {
+            dx[2] = i == 0 ? 1.0 : 0.0;
+            dx[3] = i == 1 ? 1.0 : 0.0;
+            check_close("F_base per q''", rw_F_base(&p, &d, &m, &in, x0, dx), -c[i], 1e-12);
+        }
+    }
     /* A_c, B_c: the rigid hinge terms Q with the sides of condition c */
     p.hingeLaw = RW_RIGID;
     for (i = 1; i <= 4; i++) {

@@ -11,6 +11,8 @@ from fmpy.fmi2 import FMU2Slave
 CASES = {
     "RockingWall": dict(integers={"support": 1}, start={"q1": 0.02}, inputs={"ag": 0.05}, outputs=["s1", "energy", "dissipated"]),
     "Diaphragm": dict(integers={}, start={"u": 0.01}, inputs={"F_top": 50.0}, outputs=["u", "v", "energy"]),
+    "Building": dict(integers={"nStoreys": 3, "diaphragmLaw": 2}, start={"u_diaph_2": 0.01}, inputs={"ag": 2.0},
+                     outputs=["u_diaph_3", "a_diaph_2", "work_storey_1"]),
 }
 
 
