@@ -19,7 +19,7 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 # Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_none.c stands
 # in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
-SHARED_SOURCES = ["fmi2Functions.c", "cs_none.c"]
+SHARED_SOURCES = ["fmi2Functions.c", "fmu_core.c", "cs_none.c"]
 MODELS = {
     "RockingWall": dict(
         header=REPO / "fmu_src" / "model_variables.h", output=REPO / "modelDescription.xml", prefix="RW",
