@@ -17,7 +17,7 @@ import subprocess
 
 import numpy as np
 import pytest
-from fmpy import simulate_fmu
+from fmpy import read_model_description, simulate_fmu
 from fmpy.validation import validate_fmu
 
 import rw_fmu
@@ -54,6 +54,44 @@ def test_the_binary_exports_only_the_fmi3_api(build_dir, name):
     assert [s for s in symbols if not s.startswith("fmi3")] == []
     # every function of fmi3Functions.h: 75 in FMI 3.0
     assert len(symbols) == 75 and "fmi3DoStep" in symbols and "fmi3UpdateDiscreteStates" in symbols
+
+
+FMI3_TYPE = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean"}
+
+
+def _unknowns(unknowns):
+    """{name: sorted names of its dependencies (None: not given)}"""
+    return {u.variable.name: None if u.dependencies is None else sorted(d.name for d in u.dependencies)
+            for u in unknowns}
+
+
+@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm"])
+def test_fmi3_model_description_says_what_the_fmi2_one_says(build_dir, fmi3_dir, name):
+    """Every variable of the FMI 2.0 FMU, with its attributes, outputs, derivatives, their
+    dependencies, the initial unknowns and the default experiment, is in the FMI 3.0 FMU; what
+    FMI 3.0 adds is `time` and one Float64 per event indicator."""
+    two = read_model_description(str(build_dir / f"{name}.fmu"))
+    three = read_model_description(str(fmi3_dir / f"{name}.fmu"))
+    by_name = {v.name: v for v in three.modelVariables}
+    for v in two.modelVariables:
+        w = by_name.pop(v.name)
+        assert w.type == FMI3_TYPE[v.type], v.name
+        for attr in ("valueReference", "causality", "variability", "initial", "unit", "min", "max", "start",
+                     "nominal", "description"):
+            assert getattr(w, attr) == getattr(v, attr), (v.name, attr)
+        assert (w.derivative and w.derivative.name) == (v.derivative and v.derivative.name), v.name
+    extra = sorted(by_name)
+    assert by_name.pop("time").causality == "independent"
+    assert len(by_name) == two.numberOfEventIndicators == three.numberOfEventIndicators, extra
+    assert sorted(u.variable.name for u in three.eventIndicators) == sorted(by_name)
+    assert _unknowns(three.outputs) == _unknowns(two.outputs)
+    assert _unknowns(three.derivatives) == _unknowns(two.derivatives)
+    assert [u.variable.name for u in three.derivatives] == [u.variable.name for u in two.derivatives]
+    assert sorted(u.variable.name for u in three.initialUnknowns) == sorted(u.variable.name for u in two.initialUnknowns)
+    for attr in ("startTime", "stopTime", "tolerance", "stepSize"):
+        assert getattr(three.defaultExperiment, attr) == getattr(two.defaultExperiment, attr), attr
+    assert three.guid == two.guid
+    assert sorted(u.name for u in three.unitDefinitions) == sorted(u.name for u in two.unitDefinitions)
 
 
 # (support, hinge law): every law with the flexible top, the simply supported wall, a parapet
