@@ -5,7 +5,9 @@
  * This layer checks what the standard makes the importer's duty and reports every violation as
  * fmi2Error with a logged reason: the call sequence (state machines of sections 3.2.3 and 4.2.4),
  * NULL arguments, value references, types, settability, non-finite values, array sizes.
- * fmi2DoStep integrates the model with CVODE (cs_cvode.c).
+ * fmi2DoStep steps the model exactly where it can (its exact_step) or with CVODE (cs_cvode.c).
+ * What does not depend on the FMI version (model defaults, variable lookup, the Co-Simulation
+ * step, the FMU state) is fmu_core.c, shared with the FMI 3.0 layer fmi3Functions.c.
  *
  * Every function starts with ENTER(name), which checks the instance and the call sequence against
  * the function's mask below and records the function's name for the messages, and ends with
