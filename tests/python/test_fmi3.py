@@ -9,6 +9,8 @@ core but not the API layer (fmu_src/fmi3Functions.c vs fmu_src/fmi2Functions.c).
   Co-Simulation (the FMU's own exact engine or CVODE), for every hinge law with the flexible top,
   the simply supported wall, and a parapet that collapses;
 - Diaphragm's FMI 3.0 FMU follows its FMI 2.0 twin under the same inputs;
+- a Co-Simulation rolled back with fmi3SetFMUState (or a deserialized state in another instance)
+  repeats its steps bitwise;
 - fmpy's missing input in its CVode right-hand side (scripts/rw_fmu.py) hits the FMI 3.0 path
   too, and the workaround fixes it there.
 """
@@ -19,7 +21,8 @@ import zipfile
 
 import numpy as np
 import pytest
-from fmpy import read_model_description, simulate_fmu
+from fmpy import extract, read_model_description, simulate_fmu
+from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
 import rw_fmu
@@ -172,3 +175,52 @@ def test_fmpy_rhs_without_inputs_hits_the_fmi3_path_too(fmi3_dir):
           f"plain fmpy {plain.peak_s1:.6f} ({err_plain:.1e})")
     assert err_fixed < 1e-3
     assert err_plain > 0.01, "plain fmpy now agrees on FMI 3.0: fmpy applies inputs in f"
+
+
+def _slave(fmu, tmp_path, name):
+    md = read_model_description(str(fmu))
+    slave = FMU3Slave(guid=md.guid, unzipDirectory=extract(str(fmu), str(tmp_path / name)),
+                      modelIdentifier=md.coSimulation.modelIdentifier, instanceName=name)
+    slave.instantiate()
+    return slave, {v.name: v.valueReference for v in md.modelVariables}
+
+
+def _steps(slave, vr, t, n, step=0.05):
+    out = []
+    for _ in range(n):
+        slave.doStep(t, step)
+        t += step
+        out.append(slave.getFloat64([vr["s1"], vr["energy"]]))
+    return t, np.array(out)
+
+
+@pytest.mark.parametrize("support", [1, 3])  # parapet: CVODE inside the FMU; flexibleTop: the exact engine
+def test_fmi3_fmu_state_rolls_a_co_simulation_back_bitwise(fmi3_dir, tmp_path, support):
+    """fmi3GetFMUState / fmi3SetFMUState and (de)serialization through fmpy: the steps taken after
+    restoring a state repeat the steps taken after saving it, bit for bit, in the same instance and
+    in a second instance that deserialized it."""
+    fmu = fmi3_dir / "RockingWall.fmu"
+    a, vr = _slave(fmu, tmp_path, "a")
+    a.setInt32([vr["support"]], [support])
+    a.setFloat64([vr["q1"]], [0.02])
+    a.enterInitializationMode(tolerance=1e-8, startTime=0.0)
+    a.exitInitializationMode()
+    a.setFloat64([vr["ag"]], [0.3 if support == 3 else 0.0])  # the parapet rocks freely (0.3 topples it)
+    t, _ = _steps(a, vr, 0.0, 10)
+    state = a.getFMUState()
+    serialized = a.serializeFMUState(state)
+    _, first = _steps(a, vr, t, 20)
+    a.setFMUState(state)
+    _, again = _steps(a, vr, t, 20)
+    b, _ = _slave(fmu, tmp_path, "b")
+    b.enterInitializationMode(tolerance=1e-8, startTime=0.0)
+    b.exitInitializationMode()
+    b.setFMUState(b.deserializeFMUState(serialized))
+    _, elsewhere = _steps(b, vr, t, 20)
+    print(f"support {support}: s1 after the rollback {again[-1, 0]:.9e}, energy {again[-1, 1]:.9e}")
+    assert np.ptp(first[:, 0]) > 1e-4, "the wall must move over the steps compared"
+    assert np.array_equal(first, again) and np.array_equal(first, elsewhere)
+    a.freeFMUState(state)
+    for s in (a, b):
+        s.terminate()
+        s.freeInstance()
