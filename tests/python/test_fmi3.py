@@ -11,7 +11,7 @@ core but not the API layer (fmu_src/fmi3Functions.c vs fmu_src/fmi2Functions.c).
 - Diaphragm's FMI 3.0 FMU follows its FMI 2.0 twin under the same inputs;
 - a Co-Simulation rolled back with fmi3SetFMUState (or a deserialized state in another instance)
   repeats its steps bitwise;
-- fmpy's missing input in its CVode right-hand side (scripts/rw_fmu.py) hits the FMI 3.0 path
+- fmpy's missing input in its CVode right-hand side (rockingwall.fmu) hits the FMI 3.0 path
   too, and the workaround fixes it there.
 """
 import pathlib
@@ -25,7 +25,7 @@ from fmpy import extract, read_model_description, simulate_fmu
 from fmpy.fmi3 import FMU3Slave
 from fmpy.validation import validate_fmu
 
-import rw_fmu
+from rockingwall import fmu as rw_fmu
 from rwref import Params, inputs, simulate
 
 
@@ -142,8 +142,9 @@ def test_diaphragm_fmi3_follows_its_fmi2_twin(build_dir, fmi3_dir, el_centro, fm
     kw = dict(start_time=0.0, stop_time=t_end, relative_tolerance=1e-8, output_interval=0.005,
               input=_diaphragm_inputs(el_centro), output=["u", "v", "energy", "P_damping"], fmi_type=fmi_type,
               start_values={"k": 4e5, "zeta": 0.03})
-    two = simulate_fmu(str(build_dir / "Diaphragm.fmu"), **kw)
-    three = simulate_fmu(str(fmi3_dir / "Diaphragm.fmu"), **kw)
+    with rw_fmu.fmpy_input_in_rhs(True):  # the inputs inside fmpy's CVode steps (Model Exchange)
+        two = simulate_fmu(str(build_dir / "Diaphragm.fmu"), **kw)
+        three = simulate_fmu(str(fmi3_dir / "Diaphragm.fmu"), **kw)
     grid = np.linspace(0.0, t_end, 2001)
     for name in ("u", "v", "energy"):
         a = rw_fmu.on_grid(two["time"], two[name], grid)
@@ -156,16 +157,12 @@ def test_diaphragm_fmi3_follows_its_fmi2_twin(build_dir, fmi3_dir, el_centro, fm
 
 def test_fmpy_rhs_without_inputs_hits_the_fmi3_path_too(fmi3_dir):
     """fmpy's CVodeSolver.f is shared by its FMI 2.0 and FMI 3.0 Model Exchange loops: without
-    scripts/rw_fmu.py's workaround the FMI 3.0 FMU sees lagged inputs as well (same case as
+    rockingwall.fmu's workaround the FMI 3.0 FMU sees lagged inputs as well (same case as
     tests/python/test_fmpy_known_issues.py)."""
     fmu = fmi3_dir / "RockingWall.fmu"
     signal = inputs.sampled(inputs.gaussian(0.04, 1.0), 6.0, 0.002)
     kw = dict(support="simplySupported", hinge_law="rigid", rtol=1e-6, output_interval=0.01)
-    try:
-        rw_fmu.fmpy_input_in_rhs(False)
-        plain = rw_fmu.simulate(fmu, 6.0, signal.t, signal.a, **kw)
-    finally:
-        rw_fmu.fmpy_input_in_rhs(True)
+    plain = rw_fmu.simulate(fmu, 6.0, signal.t, signal.a, fmpy_input_fix=False, **kw)
     fixed = rw_fmu.simulate(fmu, 6.0, signal.t, signal.a, **kw)
     ref = simulate(Params(support="simplySupported", hinge_law="rigid"), signal, 6.0,
                    method="DOP853", rtol=1e-9, atol=1e-12)
