@@ -221,3 +221,21 @@ def test_fmi3_fmu_state_rolls_a_co_simulation_back_bitwise(fmi3_dir, tmp_path, s
     for s in (a, b):
         s.terminate()
         s.freeInstance()
+
+
+def test_co_simulation_event_mode_through_fmpy_changes_nothing(fmi3_dir):
+    """With eventModeUsed fmpy enters Event Mode after initialization and at every input change
+    (fmi3EnterEventMode, fmi3UpdateDiscreteStates, fmi3EnterStepMode); the steps handle their own
+    events, so the run must equal the one without Event Mode, and must move."""
+    t = np.linspace(0.0, 2.0, 201)
+    table = np.zeros(len(t), dtype=[("time", np.float64), ("ag", np.float64), ("u_top", np.float64)])
+    table["time"], table["ag"] = t, 0.5 * np.sin(6.0 * t)
+    kw = dict(stop_time=2.0, start_values={"q1": 0.01, "support": 1}, output=["s1", "impacts"],
+              fmi_type="CoSimulation", input=table, output_interval=0.01)
+    with_events = simulate_fmu(str(fmi3_dir / "RockingWall.fmu"), use_event_mode=True, **kw)
+    without = simulate_fmu(str(fmi3_dir / "RockingWall.fmu"), **kw)
+    print(f"parapet: {with_events['impacts'][-1]} impacts, final s1 {with_events['s1'][-1]:.9e}")
+    assert with_events["impacts"][-1] > 0
+    grid = np.linspace(0.0, 2.0, 201)
+    assert np.array_equal(rw_fmu.on_grid(with_events["time"], with_events["s1"], grid),
+                          rw_fmu.on_grid(without["time"], without["s1"], grid))
