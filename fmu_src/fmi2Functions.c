@@ -5,7 +5,9 @@
  * This layer checks what the standard makes the importer's duty and reports every violation as
  * fmi2Error with a logged reason: the call sequence (state machines of sections 3.2.3 and 4.2.4),
  * NULL arguments, value references, types, settability, non-finite values, array sizes.
- * fmi2DoStep integrates the model with CVODE (cs_cvode.c).
+ * fmi2DoStep steps the model exactly where it can (its exact_step) or with CVODE (cs_cvode.c).
+ * What does not depend on the FMI version (model defaults, variable lookup, the Co-Simulation
+ * step, the FMU state) is fmu_core.c, shared with the FMI 3.0 layer fmi3Functions.c.
  *
  * Every function starts with ENTER(name), which checks the instance and the call sequence against
  * the function's mask below and records the function's name for the messages, and ends with
@@ -18,7 +20,7 @@
 
 #include "cs_cvode.h"
 #include "fmi2Functions.h"
-#include "fmu_model.h"
+#include "fmu_core.h"
 
 /* ---- the state machines and which calls each state allows ---------------------------------- */
 
@@ -109,18 +111,8 @@ typedef struct {
     int state;
     const char *function; /* the FMI function running, for the messages */
     unsigned categories;
-    fmu_model model;      /* FMU_MODEL with defaults for the callbacks it leaves out */
-    void *M;              /* the model's data (model.data_size bytes) */
-    double time;
     fmu_logger log;
-    /* Co-Simulation */
-    double rtol;
-    cs_solver *cs;
-    cs_input *inputs;     /* every Real input, value refreshed before each step */
-    size_t n_inputs;
-    int terminated;       /* the model ended the run (fmi2Terminated status) */
-    int initialized;      /* fmi2ExitInitializationMode succeeded (until fmi2Reset) */
-    double last_successful_time;
+    fmu_core core;        /* the model, its data, time and Co-Simulation solver (fmu_core.h) */
 } Inst;
 
 static const char *TYPE_NAMES[] = {"Real", "Integer", "Boolean"};
@@ -259,80 +251,12 @@ static fmi2Status leave(Inst *S, fmi2Status status)
 #define REQUIRE_SIZE(N, EXPECTED, WHAT) \
     REQUIRE((N) == (size_t)(EXPECTED), WHAT " = %u, expected %d", (unsigned)(N), (int)(EXPECTED))
 
-/* ---- default model callbacks: a model writes only what it has ------------------------------ */
-
-static void no_get_integer(void *M, int initializing, const unsigned vr[], size_t n, int v[])
-{
-    (void)M; (void)initializing; (void)vr;
-    memset(v, 0, n * sizeof *v); /* unreachable: there is no Integer variable to look up */
-}
-
-static void no_get_boolean(void *M, const unsigned vr[], size_t n, int v[])
-{
-    (void)M; (void)vr;
-    memset(v, 0, n * sizeof *v); /* unreachable: there is no Boolean variable to look up */
-}
-
-static int no_set_real(void *M, unsigned vr, double v, char *msg, size_t n)
-{
-    (void)M; (void)v;
-    snprintf(msg, n, "value reference %u cannot be set", vr);
-    return 1;
-}
-
-static int no_set_integer(void *M, unsigned vr, int v, char *msg, size_t n)
-{
-    (void)M; (void)v;
-    snprintf(msg, n, "value reference %u cannot be set", vr);
-    return 1;
-}
-
-static int no_checks_at_exit_init(void *M, double time, const fmu_logger *log, char *msg, size_t n)
-{
-    (void)M; (void)time; (void)log; (void)msg; (void)n;
-    return 0;
-}
-
-static void no_event_indicators(void *M, int initializing, double z[]) { (void)M; (void)initializing; (void)z; }
-
-static void keep_nominals(double x[]) { (void)x; } /* the caller filled in 1 for every state */
-
-static void no_events(void *M, double time, const fmu_logger *log, fmu_event_result *r)
-{
-    (void)M; (void)time; (void)log;
-    memset(r, 0, sizeof *r);
-}
-
-static void model_with_defaults(fmu_model *m)
-{
-    *m = FMU_MODEL;
-    if (!m->get_integer) m->get_integer = no_get_integer;
-    if (!m->get_boolean) m->get_boolean = no_get_boolean;
-    if (!m->set_real) m->set_real = no_set_real;
-    if (!m->set_integer) m->set_integer = no_set_integer;
-    if (!m->exit_init) m->exit_init = no_checks_at_exit_init;
-    if (!m->event_indicators) m->event_indicators = no_event_indicators;
-    if (!m->nominals) m->nominals = keep_nominals;
-    if (!m->event_update) m->event_update = no_events;
-}
-
 /* the nominals of the continuous states: the model's, or 1 where it gives none */
-static void nominals(const Inst *S, double x[])
-{
-    int i;
-    for (i = 0; i < S->model.nx; i++) x[i] = 1.0;
-    S->model.nominals(x);
-}
+static void nominals(const Inst *S, double x[]) { fmu_core_nominals(&S->core, x); }
 
 /* ---- variables ----------------------------------------------------------------------------- */
 
-static const fmu_var *find_var(const Inst *S, fmi2ValueReference vr)
-{
-    size_t i;
-    for (i = 0; i < S->model.nvars; i++)
-        if (S->model.vars[i].vr == vr) return &S->model.vars[i];
-    return NULL;
-}
+static const fmu_var *find_var(const Inst *S, fmi2ValueReference vr) { return fmu_find_var(&S->core.model, vr); }
 
 static const fmu_var *lookup(Inst *S, fmi2ValueReference vr, fmu_type type)
 {
@@ -353,9 +277,9 @@ static int initializing(const Inst *S) { return (S->state & BEFORE_INIT_END) != 
 /* may v be set now? (FMI 2.0 section 2.2.7) */
 static int settable(Inst *S, const fmu_var *v)
 {
-    const int parameter = !strcmp(v->causality, "parameter");
-    if (!strcmp(v->causality, "input")) return 1;
-    if (parameter || !strcmp(v->initial, "exact")) {
+    const int parameter = !strcmp(v->causality, "parameter"), kind = fmu_var_kind(v);
+    if (kind == FMU_SET_ALWAYS) return 1;
+    if (kind == FMU_SET_BEFORE_INIT_END) {
         if (initializing(S)) return 1;
         fail(S, "%s %s can only be set before fmi2ExitInitializationMode%s", parameter ? "parameter" : "start value of",
              v->name, parameter ? "" : " (use fmi2SetContinuousStates)");
@@ -416,7 +340,6 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
 {
     callbacks cb;
     Inst *S;
-    size_t i;
     (void)fmuResourceLocation; /* the FMUs have no resources */
     (void)visible;
     if (!functions || !functions->logger) return NULL;
@@ -430,24 +353,23 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     if (!S) return NULL;
     memset(S, 0, sizeof *S);
     S->cb = cb;
-    model_with_defaults(&S->model);
+    fmu_model_with_defaults(&S->core.model);
     S->name = (char *)alloc(&S->cb, strlen(instanceName) + 1, 1);
-    S->M = alloc(&S->cb, 1, S->model.data_size);
-    S->inputs = (cs_input *)alloc(&S->cb, S->model.nvars + 1, sizeof(cs_input));
-    if (!S->name || !S->M || !S->inputs) {
+    S->core.M = alloc(&S->cb, 1, S->core.model.data_size);
+    S->core.inputs = (cs_input *)alloc(&S->cb, S->core.model.nvars + 1, sizeof(cs_input));
+    if (!S->name || !S->core.M || !S->core.inputs) {
         fmi2FreeInstance(S);
         return NULL;
     }
     strcpy(S->name, instanceName);
-    for (i = 0; i < S->model.nvars; i++)
-        if (S->model.vars[i].type == FMU_REAL && !strcmp(S->model.vars[i].causality, "input"))
-            S->inputs[S->n_inputs++].vr = S->model.vars[i].vr;
+    fmu_core_inputs(&S->core);
     S->type = fmuType;
+    S->core.co_simulation = fmuType == fmi2CoSimulation;
     S->categories = LOG_ERROR | LOG_WARNING | (loggingOn ? LOG_EVENTS : 0);
     S->log.event = model_event;
     S->log.warning = model_warning;
     S->log.ctx = S;
-    S->model.reset(S->M);
+    S->core.model.reset(S->core.M);
     S->state = PHASE(S, INSTANTIATED);
     log_event(S, "fmi2Instantiate: %s instance created", fmuType == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange");
     return S;
@@ -459,9 +381,9 @@ void fmi2FreeInstance(fmi2Component c)
     callbacks cb;
     if (!S) return;
     cb = S->cb;
-    cs_free(S->cs);
-    release(&cb, S->inputs);
-    release(&cb, S->M);
+    cs_free(S->core.cs);
+    release(&cb, S->core.inputs);
+    release(&cb, S->core.M);
     release(&cb, S->name);
     release(&cb, S);
 }
@@ -503,8 +425,8 @@ fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean toleranceDefined, fm
     (void)stopTime;
     REQUIRE(isfinite(startTime), "startTime = %g is not finite", startTime);
     REQUIRE(!toleranceDefined || (tolerance > 0 && tolerance < 1), "tolerance = %g must be in (0, 1)", tolerance);
-    S->rtol = toleranceDefined ? tolerance : 0.0; /* only Co-Simulation uses it (CVODE inside) */
-    S->time = startTime;
+    S->core.rtol = toleranceDefined ? tolerance : 0.0; /* only Co-Simulation uses it (CVODE inside) */
+    S->core.time = startTime;
     LEAVE(fmi2OK);
 }
 
@@ -519,16 +441,16 @@ fmi2Status fmi2ExitInitializationMode(fmi2Component c)
 {
     char msg[512];
     ENTER(fmi2ExitInitializationMode);
-    REQUIRE(S->model.exit_init(S->M, S->time, &S->log, msg, sizeof msg) == 0, "%s", msg);
+    REQUIRE(S->core.model.exit_init(S->core.M, S->core.time, &S->log, msg, sizeof msg) == 0, "%s", msg);
     if (S->type == fmi2ModelExchange) {
-        S->initialized = 1;
+        S->core.initialized = 1;
         S->state = ME_EVENT;
         LEAVE(fmi2OK);
     }
-    S->cs = cs_new(&S->model, S->M, S->time, S->rtol, &S->log, &S->terminated, msg, sizeof msg);
-    REQUIRE(S->cs != NULL, "%s", msg);
-    S->last_successful_time = S->time;
-    S->initialized = 1;
+    S->core.cs = cs_new(&S->core.model, S->core.M, S->core.time, S->core.rtol, &S->log, &S->core.terminated, msg, sizeof msg);
+    REQUIRE(S->core.cs != NULL, "%s", msg);
+    S->core.last_successful_time = S->core.time;
+    S->core.initialized = 1;
     S->state = CS_STEP;
     LEAVE(fmi2OK);
 }
@@ -543,12 +465,12 @@ fmi2Status fmi2Terminate(fmi2Component c)
 fmi2Status fmi2Reset(fmi2Component c)
 {
     ENTER(fmi2Reset);
-    cs_free(S->cs);
-    S->cs = NULL;
-    S->terminated = 0;
-    S->initialized = 0;
-    S->time = 0.0;
-    S->model.reset(S->M);
+    cs_free(S->core.cs);
+    S->core.cs = NULL;
+    S->core.terminated = 0;
+    S->core.initialized = 0;
+    S->core.time = 0.0;
+    S->core.model.reset(S->core.M);
     S->state = PHASE(S, INSTANTIATED);
     LEAVE(fmi2OK);
 }
@@ -559,7 +481,7 @@ fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
 {
     ENTER(fmi2GetReal);
     if (!vr_checks(S, vr, nvr, value, FMU_REAL)) LEAVE(fmi2Error);
-    if (nvr) S->model.get_real(S->M, initializing(S), S->time, vr, nvr, value);
+    if (nvr) S->core.model.get_real(S->core.M, initializing(S), S->core.time, vr, nvr, value);
     LEAVE(fmi2OK);
 }
 
@@ -567,7 +489,7 @@ fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
 {
     ENTER(fmi2GetInteger);
     if (!vr_checks(S, vr, nvr, value, FMU_INTEGER)) LEAVE(fmi2Error);
-    if (nvr) S->model.get_integer(S->M, initializing(S), vr, nvr, value);
+    if (nvr) S->core.model.get_integer(S->core.M, initializing(S), vr, nvr, value);
     LEAVE(fmi2OK);
 }
 
@@ -575,7 +497,7 @@ fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference vr[], size_t
 {
     ENTER(fmi2GetBoolean);
     if (!vr_checks(S, vr, nvr, value, FMU_BOOLEAN)) LEAVE(fmi2Error);
-    if (nvr) S->model.get_boolean(S->M, vr, nvr, value); /* fmi2Boolean is int */
+    if (nvr) S->core.model.get_boolean(S->core.M, vr, nvr, value); /* fmi2Boolean is int */
     LEAVE(fmi2OK);
 }
 
@@ -593,9 +515,8 @@ fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
 /* a new input value without a derivative is held over the next step */
 static void hold_input(Inst *S, fmi2ValueReference vr)
 {
-    size_t k;
-    for (k = 0; k < S->n_inputs; k++)
-        if (S->inputs[k].vr == vr) S->inputs[k].slope = 0.0;
+    cs_input *in = fmu_core_find_input(&S->core, vr);
+    if (in) in->slope = 0.0;
 }
 
 fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
@@ -608,7 +529,7 @@ fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t nv
         const fmu_var *v = find_var(S, vr[i]);
         REQUIRE(isfinite(value[i]), "%s = %g is not a finite number", v->name, value[i]);
         if (!settable(S, v)) LEAVE(fmi2Error);
-        REQUIRE(S->model.set_real(S->M, vr[i], value[i], msg, sizeof msg) == 0, "%s", msg);
+        REQUIRE(S->core.model.set_real(S->core.M, vr[i], value[i], msg, sizeof msg) == 0, "%s", msg);
         hold_input(S, vr[i]);
     }
     LEAVE(fmi2OK);
@@ -622,7 +543,7 @@ fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t
     if (!vr_checks(S, vr, nvr, value, FMU_INTEGER)) LEAVE(fmi2Error);
     for (i = 0; i < nvr; i++) {
         if (!settable(S, find_var(S, vr[i]))) LEAVE(fmi2Error);
-        REQUIRE(S->model.set_integer(S->M, vr[i], value[i], msg, sizeof msg) == 0, "%s", msg);
+        REQUIRE(S->core.model.set_integer(S->core.M, vr[i], value[i], msg, sizeof msg) == 0, "%s", msg);
     }
     LEAVE(fmi2OK);
 }
@@ -649,167 +570,56 @@ fmi2Status fmi2SetString(fmi2Component c, const fmi2ValueReference vr[], size_t 
     LEAVE(fail(S, "unknown value reference %u (the model has no String variables)", (unsigned)vr[0]));
 }
 
-/* ---- FMU state (canGetAndSetFMUstate, canSerializeFMUstate) -------------------------------- */
-
-/* An FMU state is kept in its serialized form: one block of bytes, a header and then the model's
- * data (a byte copy: fmu_model.h asks for plain data), the Real inputs' slopes and, in
- * Co-Simulation after initialization, what re-creates the integrator exactly (cs_get_state).
- * fmi2SerializeFMUstate is a copy; fmi2DeSerializeFMUstate checks everything before copying.
- * The call-sequence state of the instance is not part of it: the master is in charge of that. */
-#define STATE_MAGIC "RWFMUS1" /* 8 bytes with the terminating zero; the last digit is the format */
-
-typedef struct {
-    char magic[8];
-    char guid[64];
-    unsigned long long size; /* of the whole block */
-    int type;                /* fmi2ModelExchange or fmi2CoSimulation */
-    int initialized;         /* taken after fmi2ExitInitializationMode */
-    int terminated;
-    double time, rtol, last_successful_time;
-    unsigned long long data_size, n_inputs, solver_size;
-} state_header;
-
-static size_t state_size(const state_header *h)
-{
-    return sizeof *h + (size_t)h->data_size + (size_t)h->n_inputs * sizeof(double) + (size_t)h->solver_size;
-}
-
-static void make_header(const Inst *S, state_header *h)
-{
-    memset(h, 0, sizeof *h);
-    memcpy(h->magic, STATE_MAGIC, sizeof h->magic);
-    snprintf(h->guid, sizeof h->guid, "%s", S->model.guid);
-    h->type = (int)S->type;
-    h->initialized = S->initialized;
-    h->terminated = S->terminated;
-    h->time = S->time;
-    h->rtol = S->rtol;
-    h->last_successful_time = S->last_successful_time;
-    h->data_size = S->model.data_size;
-    h->n_inputs = S->n_inputs;
-    h->solver_size = S->cs ? cs_state_size(S->cs) : 0;
-    h->size = state_size(h);
-}
-
-/* the instance's state into `block` (h->size bytes) */
-static void write_state(Inst *S, const state_header *h, unsigned char *block)
-{
-    unsigned char *p = block + sizeof *h;
-    size_t k;
-    memcpy(block, h, sizeof *h);
-    memcpy(p, S->M, S->model.data_size);
-    p += S->model.data_size;
-    for (k = 0; k < S->n_inputs; k++, p += sizeof(double)) memcpy(p, &S->inputs[k].slope, sizeof(double));
-    if (S->cs) cs_get_state(S->cs, p);
-}
-
-/* Is `block` (n bytes) an FMU state of this FMU and this binary? If not, log why. */
-static int compatible_state(Inst *S, const void *block, size_t n, state_header *h)
-{
-    state_header mine;
-    if (n < sizeof *h) return fail(S, "the FMU state has %u bytes, fewer than its header (%u)", (unsigned)n, (unsigned)sizeof *h), 0;
-    memcpy(h, block, sizeof *h);
-    if (memcmp(h->magic, STATE_MAGIC, sizeof h->magic) != 0) return fail(S, "not an FMU state of this FMU (bad magic number)"), 0;
-    h->guid[sizeof h->guid - 1] = '\0';
-    if (strcmp(h->guid, S->model.guid) != 0)
-        return fail(S, "the FMU state belongs to the FMU with GUID %s, this FMU has GUID %s", h->guid, S->model.guid), 0;
-    if (h->size != n) return fail(S, "the FMU state says it has %llu bytes, but %u were given", h->size, (unsigned)n), 0;
-    make_header(S, &mine);
-    if (h->data_size != mine.data_size || h->n_inputs != mine.n_inputs || state_size(h) != n)
-        return fail(S, "the FMU state's sizes (model data %llu, inputs %llu, total %llu) do not match this binary's "
-                       "(%llu, %llu)", h->data_size, h->n_inputs, h->size, mine.data_size, mine.n_inputs), 0;
-    return 1;
-}
-
-/* Can the instance take this compatible state now (same interface type, same phase)? */
-static int applicable_state(Inst *S, const state_header *h)
-{
-    state_header mine;
-    make_header(S, &mine);
-    if (h->type != mine.type)
-        return fail(S, "the FMU state is of a %s instance, this is a %s instance",
-                    h->type == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange",
-                    mine.type == fmi2CoSimulation ? "Co-Simulation" : "Model Exchange"), 0;
-    if (h->initialized != mine.initialized)
-        return fail(S, "the FMU state was taken %s fmi2ExitInitializationMode, the instance is %s it",
-                    h->initialized ? "after" : "before", mine.initialized ? "past" : "before"), 0;
-    if (h->solver_size != mine.solver_size)
-        return fail(S, "the FMU state's integrator part has %llu bytes, expected %llu", h->solver_size, mine.solver_size), 0;
-    return 1;
-}
-
-/* a checked state block into the instance */
-static int read_state(Inst *S, const state_header *h, const unsigned char *block)
-{
-    const unsigned char *p = block + sizeof *h;
-    char msg[256];
-    size_t k;
-    if (S->cs && cs_set_state(S->cs, p + h->data_size + h->n_inputs * sizeof(double), (size_t)h->solver_size, msg, sizeof msg))
-        return fail(S, "%s", msg), 0;
-    memcpy(S->M, p, S->model.data_size);
-    p += S->model.data_size;
-    for (k = 0; k < S->n_inputs; k++, p += sizeof(double)) memcpy(&S->inputs[k].slope, p, sizeof(double));
-    S->time = h->time;
-    S->rtol = h->rtol;
-    S->terminated = h->terminated;
-    S->last_successful_time = h->last_successful_time;
-    return 1;
-}
+/* ---- FMU state (canGetAndSetFMUstate, canSerializeFMUstate): fmu_core.c -------------------- */
 
 /* a block of n bytes for an FMU state, reusing *old when it has the size */
 static unsigned char *state_block(Inst *S, fmi2FMUstate old, size_t n)
 {
-    state_header h;
     if (old) {
-        memcpy(&h, old, sizeof h);
-        if (h.size == n) return (unsigned char *)old;
+        if (fmu_state_bytes(old) == n) return (unsigned char *)old;
         release(&S->cb, old);
     }
     return (unsigned char *)alloc(&S->cb, n, 1);
 }
 
-/* the header of a state the master hands back, checked to be one of ours */
-static int own_state(Inst *S, fmi2FMUstate state, state_header *h)
+/* a state the master hands back, checked to be one of ours; if not, log why */
+static int own_state(Inst *S, fmi2FMUstate state)
 {
-    if (!state) return fail(S, "argument FMUstate must not be NULL"), 0;
-    memcpy(h, state, sizeof *h);
-    if (memcmp(h->magic, STATE_MAGIC, sizeof h->magic) != 0) return fail(S, "not an FMU state of this FMU (bad magic number)"), 0;
+    char msg[256];
+    if (fmu_state_is_ours(state, msg, sizeof msg)) return fail(S, "%s", msg), 0;
     return 1;
 }
 
 fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
-    state_header h;
     unsigned char *block;
+    size_t n;
     ENTER(fmi2GetFMUstate);
     REQUIRE_NOT_NULL(FMUstate);
-    if (*FMUstate && !own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
-    make_header(S, &h);
-    block = state_block(S, *FMUstate, (size_t)h.size);
+    if (*FMUstate && !own_state(S, *FMUstate)) LEAVE(fmi2Error);
+    n = fmu_state_size(&S->core);
+    block = state_block(S, *FMUstate, n);
     *FMUstate = block;
-    REQUIRE(block != NULL, "out of memory for an FMU state of %llu bytes", h.size);
-    write_state(S, &h, block);
+    REQUIRE(block != NULL, "out of memory for an FMU state of %u bytes", (unsigned)n);
+    fmu_state_write(&S->core, block);
     LEAVE(fmi2OK);
 }
 
 fmi2Status fmi2SetFMUstate(fmi2Component c, fmi2FMUstate FMUstate)
 {
-    state_header h;
+    char msg[512];
     ENTER(fmi2SetFMUstate);
-    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
-    if (!compatible_state(S, FMUstate, (size_t)h.size, &h) || !applicable_state(S, &h) ||
-        !read_state(S, &h, (const unsigned char *)FMUstate))
-        LEAVE(fmi2Error);
+    if (!own_state(S, FMUstate)) LEAVE(fmi2Error);
+    REQUIRE(fmu_state_read(&S->core, FMUstate, msg, sizeof msg) == 0, "%s", msg);
     LEAVE(fmi2OK);
 }
 
 fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 {
-    state_header h;
     ENTER(fmi2FreeFMUstate);
     REQUIRE_NOT_NULL(FMUstate);
     if (!*FMUstate) LEAVE(fmi2OK);
-    if (!own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
+    if (!own_state(S, *FMUstate)) LEAVE(fmi2Error);
     release(&S->cb, *FMUstate);
     *FMUstate = NULL;
     LEAVE(fmi2OK);
@@ -817,34 +627,33 @@ fmi2Status fmi2FreeFMUstate(fmi2Component c, fmi2FMUstate *FMUstate)
 
 fmi2Status fmi2SerializedFMUstateSize(fmi2Component c, fmi2FMUstate FMUstate, size_t *size)
 {
-    state_header h;
     ENTER(fmi2SerializedFMUstateSize);
     REQUIRE_NOT_NULL(size);
-    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
-    *size = (size_t)h.size;
+    if (!own_state(S, FMUstate)) LEAVE(fmi2Error);
+    *size = fmu_state_bytes(FMUstate);
     LEAVE(fmi2OK);
 }
 
 fmi2Status fmi2SerializeFMUstate(fmi2Component c, fmi2FMUstate FMUstate, fmi2Byte serializedState[], size_t size)
 {
-    state_header h;
     ENTER(fmi2SerializeFMUstate);
     REQUIRE_NOT_NULL(serializedState);
-    if (!own_state(S, FMUstate, &h)) LEAVE(fmi2Error);
-    REQUIRE(size == h.size, "size = %u, but the FMU state has %llu bytes (fmi2SerializedFMUstateSize)", (unsigned)size, h.size);
+    if (!own_state(S, FMUstate)) LEAVE(fmi2Error);
+    REQUIRE(size == fmu_state_bytes(FMUstate), "size = %u, but the FMU state has %u bytes (fmi2SerializedFMUstateSize)",
+            (unsigned)size, (unsigned)fmu_state_bytes(FMUstate));
     memcpy(serializedState, FMUstate, size);
     LEAVE(fmi2OK);
 }
 
 fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte serializedState[], size_t size, fmi2FMUstate *FMUstate)
 {
-    state_header h;
     unsigned char *block;
+    char msg[512];
     ENTER(fmi2DeSerializeFMUstate);
     REQUIRE_NOT_NULL(serializedState);
     REQUIRE_NOT_NULL(FMUstate);
-    if (*FMUstate && !own_state(S, *FMUstate, &h)) LEAVE(fmi2Error);
-    if (!compatible_state(S, serializedState, size, &h)) LEAVE(fmi2Error);
+    if (*FMUstate && !own_state(S, *FMUstate)) LEAVE(fmi2Error);
+    REQUIRE(fmu_state_check(&S->core, serializedState, size, msg, sizeof msg) == 0, "%s", msg);
     block = state_block(S, *FMUstate, size);
     *FMUstate = block;
     REQUIRE(block != NULL, "out of memory for an FMU state of %u bytes", (unsigned)size);
@@ -876,7 +685,7 @@ fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *info)
     fmu_event_result r;
     ENTER(fmi2NewDiscreteStates);
     REQUIRE_NOT_NULL(info);
-    S->model.event_update(S->M, S->time, &S->log, &r);
+    S->core.model.event_update(S->core.M, S->core.time, &S->log, &r);
     info->newDiscreteStatesNeeded = r.more ? fmi2True : fmi2False;
     info->terminateSimulation = r.terminate ? fmi2True : fmi2False;
     info->nominalsOfContinuousStatesChanged = fmi2False; /* the nominals are constants */
@@ -909,7 +718,7 @@ fmi2Status fmi2SetTime(fmi2Component c, fmi2Real time)
 {
     ENTER(fmi2SetTime);
     REQUIRE(isfinite(time), "time = %g is not finite", time);
-    S->time = time;
+    S->core.time = time;
     LEAVE(fmi2OK);
 }
 
@@ -918,9 +727,9 @@ fmi2Status fmi2SetContinuousStates(fmi2Component c, const fmi2Real x[], size_t n
     size_t i;
     ENTER(fmi2SetContinuousStates);
     REQUIRE_NOT_NULL(x);
-    REQUIRE_SIZE(nx, S->model.nx, "nx");
+    REQUIRE_SIZE(nx, S->core.model.nx, "nx");
     for (i = 0; i < nx; i++) REQUIRE(isfinite(x[i]), "state %u = %g is not finite", (unsigned)i, x[i]);
-    S->model.set_states(S->M, x);
+    S->core.model.set_states(S->core.M, x);
     LEAVE(fmi2OK);
 }
 
@@ -929,9 +738,9 @@ fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real dx[], size_t nx)
     size_t i;
     ENTER(fmi2GetDerivatives);
     REQUIRE_NOT_NULL(dx);
-    REQUIRE_SIZE(nx, S->model.nx, "nx");
-    S->model.derivatives(S->M, dx);
-    for (i = 0; i < nx; i++) REQUIRE(isfinite(dx[i]), "derivative %u is not finite at t = %g", (unsigned)i, S->time);
+    REQUIRE_SIZE(nx, S->core.model.nx, "nx");
+    S->core.model.derivatives(S->core.M, dx);
+    for (i = 0; i < nx; i++) REQUIRE(isfinite(dx[i]), "derivative %u is not finite at t = %g", (unsigned)i, S->core.time);
     LEAVE(fmi2OK);
 }
 
@@ -939,8 +748,8 @@ fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real z[], size_t nz)
 {
     ENTER(fmi2GetEventIndicators);
     REQUIRE_NOT_NULL(z);
-    REQUIRE_SIZE(nz, S->model.nz, "ni");
-    S->model.event_indicators(S->M, initializing(S), z);
+    REQUIRE_SIZE(nz, S->core.model.nz, "ni");
+    S->core.model.event_indicators(S->core.M, initializing(S), z);
     LEAVE(fmi2OK);
 }
 
@@ -948,8 +757,8 @@ fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx)
 {
     ENTER(fmi2GetContinuousStates);
     REQUIRE_NOT_NULL(x);
-    REQUIRE_SIZE(nx, S->model.nx, "nx");
-    S->model.get_states(S->M, initializing(S), x);
+    REQUIRE_SIZE(nx, S->core.model.nx, "nx");
+    S->core.model.get_states(S->core.M, initializing(S), x);
     LEAVE(fmi2OK);
 }
 
@@ -957,20 +766,12 @@ fmi2Status fmi2GetNominalsOfContinuousStates(fmi2Component c, fmi2Real x_nominal
 {
     ENTER(fmi2GetNominalsOfContinuousStates);
     REQUIRE_NOT_NULL(x_nominal);
-    REQUIRE_SIZE(nx, S->model.nx, "nx");
+    REQUIRE_SIZE(nx, S->core.model.nx, "nx");
     nominals(S, x_nominal);
     LEAVE(fmi2OK);
 }
 
 /* ---- Co-Simulation ------------------------------------------------------------------------- */
-
-static cs_input *find_input(Inst *S, fmi2ValueReference vr)
-{
-    size_t k;
-    for (k = 0; k < S->n_inputs; k++)
-        if (S->inputs[k].vr == vr) return &S->inputs[k];
-    return NULL;
-}
 
 /* First derivatives of Real inputs ramp them over the next step (canInterpolateInputs). */
 fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference vr[], size_t nvr,
@@ -983,7 +784,7 @@ fmi2Status fmi2SetRealInputDerivatives(fmi2Component c, const fmi2ValueReference
     if (!vr_checks(S, vr, nvr, value, FMU_REAL)) LEAVE(fmi2Error);
     for (i = 0; i < nvr; i++) {
         const fmu_var *v = find_var(S, vr[i]);
-        cs_input *in = find_input(S, vr[i]);
+        cs_input *in = fmu_core_find_input(&S->core, vr[i]);
         REQUIRE(in != NULL, "%s is not an input", v->name);
         REQUIRE(order[i] == 1, "order %d of %s (only first derivatives are used, maxInputDerivativeOrder would be exceeded)",
                 (int)order[i], v->name);
@@ -1001,47 +802,26 @@ fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2ValueReferenc
     LEAVE(fail(S, "not supported by this FMU (maxOutputDerivativeOrder is 0)"));
 }
 
-/* the values the master set, read back from the model, as the held values over the next step */
-static void refresh_inputs(Inst *S)
-{
-    size_t k;
-    for (k = 0; k < S->n_inputs; k++) S->model.get_real(S->M, 0, S->time, &S->inputs[k].vr, 1, &S->inputs[k].value);
-}
-
 fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2Real communicationStepSize,
                       fmi2Boolean noSetFMUStatePriorToCurrentCommunicationPoint)
 {
     const double t = currentCommunicationPoint, h = communicationStepSize;
-    double t_reached;
     char msg[512];
-    size_t k;
     int rc;
     ENTER(fmi2DoStep);
     (void)noSetFMUStatePriorToCurrentCommunicationPoint;
     REQUIRE(isfinite(t) && isfinite(h) && h > 0,
             "communication point %g and step size %g must be finite, step size > 0", t, h);
-    REQUIRE(fabs(t - S->time) <= 1e-9 * fmax(1.0, fabs(t)),
-            "currentCommunicationPoint = %.17g, but the FMU is at t = %.17g", t, S->time);
-    if (S->terminated) {
-        log_event(S, "the model terminated at t = %.17g; no further steps", S->time);
+    REQUIRE(fabs(t - S->core.time) <= 1e-9 * fmax(1.0, fabs(t)),
+            "currentCommunicationPoint = %.17g, but the FMU is at t = %.17g", t, S->core.time);
+    if (S->core.terminated) {
+        log_event(S, "the model terminated at t = %.17g; no further steps", S->core.time);
         LEAVE(fmi2Discard);
     }
-    refresh_inputs(S);
-    rc = FMU_NOT_EXACT; /* exact step where the model offers one (RockingWall: cs_exact.c), else CVODE */
-    if (S->model.exact_step) {
-        unsigned vr[S->n_inputs + 1];
-        double slope[S->n_inputs + 1];
-        for (k = 0; k < S->n_inputs; k++) vr[k] = S->inputs[k].vr, slope[k] = S->inputs[k].slope;
-        rc = S->model.exact_step(S->M, S->time, h, vr, slope, S->n_inputs, &S->log, &t_reached, msg, sizeof msg);
-    }
-    if (rc == FMU_NOT_EXACT) rc = cs_step(S->cs, S->time, h, S->inputs, S->n_inputs, &S->log, &t_reached, msg, sizeof msg);
-    for (k = 0; k < S->n_inputs; k++) S->inputs[k].slope = 0.0; /* derivatives hold for one step */
+    rc = fmu_core_step(&S->core, h, &S->log, msg, sizeof msg);
     REQUIRE(rc >= 0, "%s", msg);
-    S->time = t_reached;
-    S->last_successful_time = t_reached;
     if (rc == 1) {
-        S->terminated = 1;
-        log_event(S, "the model terminated the simulation at t = %.17g", t_reached);
+        log_event(S, "the model terminated the simulation at t = %.17g", S->core.time);
         LEAVE(fmi2Discard);
     }
     LEAVE(fmi2OK);
@@ -1058,7 +838,7 @@ fmi2Status fmi2GetStatus(fmi2Component c, const fmi2StatusKind s, fmi2Status *v)
     ENTER(fmi2GetStatus);
     REQUIRE_NOT_NULL(v);
     REQUIRE(s == fmi2DoStepStatus, "status kind %d is not a fmi2Status", (int)s);
-    *v = S->terminated ? fmi2Discard : fmi2OK; /* steps are synchronous: never pending */
+    *v = S->core.terminated ? fmi2Discard : fmi2OK; /* steps are synchronous: never pending */
     LEAVE(fmi2OK);
 }
 
@@ -1067,7 +847,7 @@ fmi2Status fmi2GetRealStatus(fmi2Component c, const fmi2StatusKind s, fmi2Real *
     ENTER(fmi2GetRealStatus);
     REQUIRE_NOT_NULL(v);
     REQUIRE(s == fmi2LastSuccessfulTime, "status kind %d is not a Real", (int)s);
-    *v = S->last_successful_time;
+    *v = S->core.last_successful_time;
     LEAVE(fmi2OK);
 }
 
@@ -1083,7 +863,7 @@ fmi2Status fmi2GetBooleanStatus(fmi2Component c, const fmi2StatusKind s, fmi2Boo
     ENTER(fmi2GetBooleanStatus);
     REQUIRE_NOT_NULL(v);
     REQUIRE(s == fmi2Terminated, "status kind %d is not a Boolean", (int)s);
-    *v = S->terminated ? fmi2True : fmi2False;
+    *v = S->core.terminated ? fmi2True : fmi2False;
     LEAVE(fmi2OK);
 }
 

@@ -50,6 +50,8 @@ typedef struct {
     int nx, nz;
     const fmu_var *vars;
     size_t nvars;
+    const unsigned *z_vrs; /* value references of the nz event indicators as Real variables: FMI 3.0
+                              names them by value reference (<EventIndicator>); NULL when nz = 0 */
     size_t data_size; /* bytes of model data the wrapper allocates per instance; plain data: the
                          FMU state (fmi2GetFMUstate) is a byte copy of it */
 

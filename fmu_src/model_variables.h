@@ -40,6 +40,20 @@ X(der_dq1,    44, "der(dq1)",    Real,    "local",     "continuous", "calculated
 X(der_dq2,    45, "der(dq2)",    Real,    "local",     "continuous", "calculated", 0,      "rad/s2", 0,    43, "Angular acceleration of the upper body")
 /* clang-format on */
 
+/* The event indicators as variables, in the order of rw_event_indicators (RW_Z_* of rw_physics.h).
+ * FMI 3.0 names the event indicators in <ModelStructure> by value reference, so the FMI 3.0
+ * modelDescription.xml lists these as local Float64 variables; the FMI 2.0 one only counts them.
+ * Z(ID, VR, DESCRIPTION), one per line. */
+#define RW_EVENT_INDICATORS(Z) \
+Z(z_base,     50, "Base hinge: opens to an impact (open) or to opening (closed); changes sign at the event") \
+Z(z_mid,      51, "Mid-height hinge (flexibleTop): side switch (open) or opening (closed)") \
+Z(z_break1,   52, "Hinge-law breakpoint 1 (base hinge, first kink of the moment-rotation law)") \
+Z(z_break2,   53, "Hinge-law breakpoint 2 (base hinge, second kink)") \
+Z(z_break3,   54, "Hinge-law breakpoint 3 (mid-height hinge, first kink)") \
+Z(z_break4,   55, "Hinge-law breakpoint 4 (mid-height hinge, second kink)") \
+Z(z_collapse, 56, "Stability margin, > 0 while the wall can still return (collapse at 0)") \
+Z(z_topple,   57, "2DOF: 1 - max(|q1|, |q2|)/(2b/h), the geometric toppling limit of a body")
+
 /* value references as an enum: RW_VR_h, RW_VR_q1, ... */
 #define RW_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) RW_VR_##ID = VR,
 #define RW_VR_PARAM_ENUM(ID, VR, TYPE, UNIT, DEF, LO, HI, DESC) RW_VR_##ID = VR,

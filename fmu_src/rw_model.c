@@ -25,6 +25,11 @@ static const fmu_var VARS[] = {RW_PARAMETERS(RW_PARAM_VAR) RW_VARIABLES(RW_VAR)}
 #undef RW_VAR
 #undef RW_PARAM_VAR
 
+#define RW_Z_VR(ID, VR, DESC) VR,
+static const unsigned Z_VRS[] = {RW_EVENT_INDICATORS(RW_Z_VR)};
+#undef RW_Z_VR
+typedef char rw_check_z_vrs[(sizeof Z_VRS / sizeof Z_VRS[0] == RW_NZ) ? 1 : -1];
+
 static void physics_log(void *ctx, const char *message)
 {
     rw_data *S = (rw_data *)ctx;
@@ -250,6 +255,7 @@ const fmu_model FMU_MODEL = {
     .nz = RW_NZ,
     .vars = VARS,
     .nvars = sizeof VARS / sizeof VARS[0],
+    .z_vrs = Z_VRS,
     .data_size = sizeof(rw_data),
     .reset = reset,
     .get_real = get_real,

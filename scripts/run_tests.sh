@@ -19,7 +19,7 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
   /usr/bin/ctest --test-dir build-asan --output-on-failure
 
 echo "== the FMU under AddressSanitizer + UndefinedBehaviorSanitizer, simulated through fmpy"
-RW_ASAN_BUILD_DIR=build-asan .venv/bin/python -m pytest tests/python/test_fmu_asan.py -q -p no:cacheprovider
+RW_ASAN_BUILD_DIR=build-asan .venv/bin/python -m pytest tests/python/test_fmu_asan.py tests/python/test_fmi3_asan.py -q -p no:cacheprovider
 
 echo "== fmi2sim under AddressSanitizer + UndefinedBehaviorSanitizer"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 RW_BUILD_DIR=build-asan \

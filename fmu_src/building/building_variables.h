@@ -181,6 +181,9 @@ X(F_diaph_5, 544, "F_diaph_5", Real, "output", "continuous", "calculated", 0, "N
 X(d_diaph_5, 545, "d_diaph_5", Real, "output", "continuous", "calculated", 0, "m", 0, 0, "Deformation of diaphragm 5: u_diaph_5 - u_floor_5")
 /* clang-format on */
 
+/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/model_variables.h) */
+#define BD_EVENT_INDICATORS(Z)
+
 #define BD_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) BD_VR_##ID = VR,
 enum { BD_VARIABLES(BD_VR_ENUM) BD_VR_MAX_PLUS_ONE_DUMMY };
 #undef BD_VR_ENUM

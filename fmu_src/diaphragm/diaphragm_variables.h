@@ -27,6 +27,9 @@ X(P_damping, 35, "P_damping",  Real, "output",    "continuous", "calculated", 0,
 X(P_wall,    36, "P_wall",     Real, "output",    "continuous", "calculated", 0,     "W/m",   0,    0,  "Power of the wall force, F_top v")
 /* clang-format on */
 
+/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/model_variables.h) */
+#define DG_EVENT_INDICATORS(Z)
+
 #define DG_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) DG_VR_##ID = VR,
 enum { DG_VARIABLES(DG_VR_ENUM) DG_VR_MAX_PLUS_ONE_DUMMY };
 #undef DG_VR_ENUM

@@ -55,7 +55,7 @@ def _hostile_fmu(repo, build_dir, out_dir, crash):
     fmu_src = repo / "fmu_src"
     subprocess.run(["cc", "-O1", "-std=c99", "-fPIC", "-shared", "-fvisibility=hidden", *includes,
                     *(["-DHOSTILE_CRASH"] if crash else []), "-Wl,--exclude-libs,ALL", "-o", str(so), str(c_file),
-                    str(fmu_src / "fmi2Functions.c"), str(fmu_src / "cs_cvode.c"), *libs, "-lm"],
+                    str(fmu_src / "fmi2Functions.c"), str(fmu_src / "fmu_core.c"), str(fmu_src / "cs_cvode.c"), *libs, "-lm"],
                    check=True, capture_output=True, timeout=300)
     fmu = out_dir / ("Crashing.fmu" if crash else "Failing.fmu")
     with zipfile.ZipFile(build_dir / "Diaphragm.fmu") as zin, zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as zout:
