@@ -40,13 +40,18 @@ static void stumpff(double z, double c[4])
         return;
     }
     if (fabs(z) < 1.0) {
-        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19 */
-        int k, j;
-        for (k = 0; k < 4; k++) {
-            double sum = INV_FACT[2 * 9 + k];
-            for (j = 8; j >= 0; j--) sum = INV_FACT[2 * j + k] - z * sum;
-            c[k] = sum;
+        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19; only c2
+         * and c3 are summed, c0 = 1 - z c2 and c1 = 1 - z c3 lose nothing for |z| < 1 (c0, c1 > 0.5) */
+        double s2 = INV_FACT[2 * 9 + 2], s3 = INV_FACT[2 * 9 + 3];
+        int j;
+        for (j = 8; j >= 0; j--) {
+            s2 = INV_FACT[2 * j + 2] - z * s2;
+            s3 = INV_FACT[2 * j + 3] - z * s3;
         }
+        c[0] = 1.0 - z * s2;
+        c[1] = 1.0 - z * s3;
+        c[2] = s2;
+        c[3] = s3;
         return;
     }
     if (z > 0.0) {
@@ -245,18 +250,30 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2
     return c;
 }
 
+/* The hinge moments of a region as Q = c + J q, where the law allows it (rw_hinge_law.q_only) */
+typedef struct {
+    int valid;
+    double c[2], J[2][2];
+} rw_affine_Q;
+
 /* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
  * cannot decompose it (msg filled). */
 static rw_cache_entry *region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
-                                 double g0[2])
+                                 double g0[2], rw_affine_Q *aq)
 {
     double Q[2], J[2][2], c[2], key[4];
     rw_cache_entry *ce;
+    aq->valid = 0;
     if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
     if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
     e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
     c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
     c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+    if (e->law->q_only) {
+        aq->valid = 1;
+        memcpy(aq->c, c, sizeof c);
+        memcpy(aq->J, J, sizeof J);
+    }
     key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
     ce = cache_find(e, 0, 0, key);
     if (!ce) {
@@ -280,6 +297,7 @@ typedef struct {
     double f0[2], f1[2]; /* modal forcing at t0 and its rate */
     double ag0, ag1, u0, u1; /* the input at t0 and its rate */
     double x0[RW_NX];        /* the start state itself: the motion is x0 + P (eta(s) - eta(0)) */
+    rw_affine_Q aq;          /* the region's hinge moments, if affine in q */
 } rw_span;
 
 static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2], double t0, const double x[RW_NX],
@@ -287,6 +305,7 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
 {
     const rw_modes2 *E = &R->E;
     int i;
+    /* sp->aq is the region's: set by the caller once per region */
     sp->R = R;
     sp->t0 = t0;
     sp->ag0 = in->ag + in->ag_slope * (t0 - t_in);
@@ -420,6 +439,23 @@ typedef struct {
     double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
 } rw_point;
 
+/* The model's indicators of `mask` at the state x of the span's motion (the others are 1), with
+ * the region's affine hinge moments where the law has them (rw_event_indicators_some) */
+static void indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
+                       const double x[RW_NX], unsigned mask, double z[RW_NZ])
+{
+    int k;
+    for (k = 0; k < RW_NZ; k++) z[k] = 1.0;
+    if (sp->aq.valid) {
+        const rw_affine_Q *a = &sp->aq;
+        const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
+                             a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
+        rw_event_indicators_some(&e->P, &e->D, m, in, x, Q, mask, z);
+    } else {
+        rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, mask, z);
+    }
+}
+
 static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
                        rw_point *pt)
 {
@@ -429,9 +465,9 @@ static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     int i;
     pt->s = s;
     span_eval(sp, s, C, pt->x, xd);
-    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
     for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
     for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
 }
 
@@ -440,7 +476,7 @@ static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *
     double x[RW_NX], z[RW_NZ];
     rw_input in = span_input(sp, s);
     span_eval(sp, s, NULL, x, NULL);
-    rw_event_indicators(&e->P, &e->D, m, &in, x, z);
+    indicators(e, m, sp, &in, x, 1u << k, z);
     return z[k];
 }
 
@@ -824,9 +860,9 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
     int i;
     pt->s = s;
     span_eval_part(sp, s, NULL, fast, pt->x, xd);
-    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
     for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
     for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
 }
 
@@ -843,8 +879,8 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
         xp[k] += r->amp_q[k];
         xm[k] -= r->amp_q[k];
     }
-    rw_event_indicators(&e->P, &e->D, m, &in, xp, zp);
-    rw_event_indicators(&e->P, &e->D, m, &in, xm, zm);
+    indicators(e, m, sp, &in, xp, RW_Z_ALL, zp);
+    indicators(e, m, sp, &in, xm, RW_Z_ALL, zm);
     for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
 
@@ -924,7 +960,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         now.ag = in->ag + in->ag_slope * (*t - t_in);
         now.u_top = in->u_top + in->u_slope * (*t - t_in);
         selection_rate(e, m, &now, x, dq_sel);
-        R = region_of(e, m, x, dq_sel, g0);
+        R = region_of(e, m, x, dq_sel, g0, &sp.aq);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
         span_rates(e, &sp, rocking_rate(e), &r);
