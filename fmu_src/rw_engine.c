@@ -17,6 +17,7 @@
 #define RW_PHASE_PER_SUBSTEP 1.0 /* rad of the fastest significant mode per bracketing substep */
 #define RW_MAX_SUBSTEPS 2000000L
 #define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
+#define RW_AFFINE_Q_CLEARANCE 1e-6 /* scale-free collapse indicator: below this, the law itself decides */
 
 /* ---- Stumpff functions ----------------------------------------------------------------------
  * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
@@ -451,6 +452,12 @@ static void indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
         const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
                              a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
         rw_event_indicators_some(&e->P, &e->D, m, in, x, Q, mask, z);
+        /* Near its root the collapse indicator is taken from the law itself: the affine Q differs
+         * from it by rounding, and every sign decided near zero (the root, the tracked state set
+         * after an event, the collapse test) must come from one function, or an event repeats at
+         * one instant. Away from zero both have the same sign. */
+        if (((mask >> RW_Z_COLLAPSE) & 1u) && fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
+            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, 1u << RW_Z_COLLAPSE, z);
     } else {
         rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, mask, z);
     }
@@ -488,22 +495,30 @@ static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span
     return pt.dz[k];
 }
 
-/* Safeguarded regula falsi (Illinois, a bisection every fourth step) for the first s in
- * (lo, hi] where the boolean (value > 0) differs from its value at lo. Returns hi at convergence
- * (to a few ulps of the absolute time), the first point known to be past the root. */
+/* Safeguarded regula falsi (Illinois; a bisection when three steps have not halved the bracket)
+ * for the first s in (lo, hi] where the boolean (value > 0) differs from its value at lo, starting
+ * from the guess (NaN: none). Returns hi at convergence (to a few ulps of the absolute time), the
+ * first point known to be past the root. */
 typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s);
 
 static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double lo,
-                          double flo, double hi, double fhi, double rel_tol)
+                          double flo, double hi, double fhi, double rel_tol, double guess)
 {
     const int blo = flo > 0.0;
     const double tol_interval = rel_tol * (hi - lo);
+    double width_before = hi - lo;
     int it, last = 0;
     for (it = 0; it < 400; it++) {
         const double tol = fmax(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
         double s, fs;
+        int bisect = 0;
         if (hi - lo <= tol) break;
-        s = (it % 4 == 3 || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
+        if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
+            bisect = it > 0 && hi - lo > 0.5 * width_before;
+            width_before = hi - lo;
+        }
+        if (it == 0 && guess > lo && guess < hi) s = guess;
+        else s = (bisect || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
         fs = f(e, m, sp, k, s);
@@ -558,6 +573,30 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     return 1;
 }
 
+/* The root in (0, 1) of the cubic Hermite interpolant of (z, dz) on [0, L] whose end values have
+ * opposite signs: the first guess of the root refinement (within a substep every significant mode
+ * turns by at most 1 rad, so it is within a fraction of a percent of the substep). A few
+ * safeguarded Newton steps on the cubic; NaN if they do not settle. */
+static double hermite_root(double za, double da, double zb, double db, double L)
+{
+    const double ma = L * da, mb = L * db;
+    double lo = 0.0, hi = 1.0, u = za / (za - zb);
+    int it;
+    for (it = 0; it < 8; it++) {
+        const double u2 = u * u, u3 = u2 * u;
+        const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
+        const double dz = (6 * u2 - 6 * u) * za + (3 * u2 - 4 * u + 1) * ma + (-6 * u2 + 6 * u) * zb + (3 * u2 - 2 * u) * mb;
+        double next;
+        if ((z > 0.0) == (za > 0.0)) lo = u;
+        else hi = u;
+        next = dz != 0.0 ? u - z / dz : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (fabs(next - u) < 1e-12) return next;
+        u = next;
+    }
+    return NAN;
+}
+
 #define RW_DIP_DEPTH 3 /* a suspicious substep is split 4 ways, at most this many times */
 
 /* Does indicator k, on the same side of zero (state `was`) at both ends of [a, b], dip through
@@ -577,7 +616,7 @@ static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, i
     if (depth == RW_DIP_DEPTH) {
         double s_ext, z_ext;
         if (!approach || !leave) return 0;
-        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9);
+        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9, NAN);
         z_ext = indicator_at(e, m, sp, k, s_ext);
         if ((z_ext > 0.0) == was) return 0;
         *lo = a->s, *flo = a->z[k], *hi = s_ext, *fhi = z_ext;
@@ -608,10 +647,15 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     for (k = 0; k < RW_NZ; k++) {
         const int was = e->b[k];
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
-        if ((b->z[k] > 0.0) == was && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+        double guess = NAN;
+        if ((b->z[k] > 0.0) == was) {
+            if (!dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+        } else if ((a->z[k] > 0.0) == was) {
+            guess = a->s + (b->s - a->s) * hermite_root(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
+        }
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
-        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0);
+        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0, guess);
         if (!found || s < best) best = s;
         found = 1;
     }
@@ -652,7 +696,7 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
         track_peak(e, w, s_of(&e->P, w, xb));
         if ((ra > 0.0) != (rb > 0.0) && sb > sa) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
-            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9);
+            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
             span_eval(sp, s, NULL, x, NULL);
             track_peak(e, w, s_of(&e->P, w, x));
@@ -942,6 +986,23 @@ static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_en
     if (rc) return rc;
     span_start(sp, R, g0, *t, x, in, t_in);
     return fast_substep(e, m, sp, R, g0, in, t_in, t_to, r, x, t, depth + 1);
+}
+
+/* ---- one region on its own (rw_engine.h) ------------------------------------------------------ */
+int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2], const rw_linear_input *in,
+                            const double x0[RW_NX], double s, double x[RW_NX])
+{
+    rw_cache_entry R;
+    rw_span sp;
+    double g0[2];
+    if (!e || e->P.support != RW_FLEXIBLE_TOP) return RW_ENGINE_UNSUPPORTED;
+    memset(&R, 0, sizeof R);
+    if (modes_open(e, J, &R.E) != 0) return RW_ENGINE_UNSUPPORTED;
+    modal_force(&R.E, c, g0);
+    memset(&sp, 0, sizeof sp);
+    span_start(&sp, &R, g0, 0.0, x0, in, 0.0);
+    span_eval(&sp, s, NULL, x, NULL);
+    return 0;
 }
 
 /* ---- the stepper ------------------------------------------------------------------------------ */
@@ -1254,4 +1315,67 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     if (rc > 1) snprintf(res->message, sizeof res->message, "%s", e->msg);
     rw_engine_free(e);
     return rc > 1 ? rc - 1 : 0;
+}
+
+/* ---- sweeps ----------------------------------------------------------------------------------- */
+static int check_many_arguments(size_t n, const rw_params *params, const double *scale, const rw_record *rec,
+                                const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t len)
+{
+    size_t i;
+    if (!params || !rec || !opt || !out || (n > 0 && !rec->ag)) {
+        snprintf(msg, len, "rw_engine_run_many: params, record, options and outputs must not be NULL");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (opt->n_out > 0) {
+        snprintf(msg, len, "rw_engine_run_many gives peaks only: no output grid (n_out = 0)");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    for (i = 0; scale && i < n; i++)
+        if (!isfinite(scale[i])) {
+            snprintf(msg, len, "scale[%zu] is not finite", i);
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+    return 0;
+}
+
+static void store_summary(const rw_engine_batch *out, size_t i, int code, const rw_engine_result *r)
+{
+    const int ran = code == 0 || code == RW_ENGINE_ZENO;
+    if (out->peak_s1) out->peak_s1[i] = ran ? r->peak_s1 : NAN;
+    if (out->peak_s2) out->peak_s2[i] = ran ? r->peak_s2 : NAN;
+    if (out->collapsed) out->collapsed[i] = r->collapsed;
+    if (out->t_collapse) out->t_collapse[i] = r->collapsed ? r->t_collapse : NAN;
+    if (out->impacts) out->impacts[i] = r->impacts;
+    if (out->code) out->code[i] = code;
+}
+
+int rw_engine_run_many(size_t n, const rw_params *params, int params_each, const double *scale, const rw_record *rec,
+                       const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t msg_len)
+{
+    double *ag = NULL;
+    rw_record scaled;
+    size_t i, j;
+    int rc = check_many_arguments(n, params, scale, rec, opt, out, msg, msg_len);
+    if (rc || n == 0) return rc;
+    if (scale) { /* one buffer for the scaled record, reused by every run */
+        ag = (double *)malloc(sizeof(double) * (rec->n > 0 ? rec->n : 1));
+        if (!ag) {
+            snprintf(msg, msg_len, "out of memory");
+            return RW_ENGINE_NO_MEMORY;
+        }
+    }
+    scaled = *rec;
+    for (i = 0; i < n; i++) {
+        rw_engine_result r;
+        int code;
+        memset(&r, 0, sizeof r);
+        if (scale) {
+            for (j = 0; j < rec->n; j++) ag[j] = scale[i] * rec->ag[j];
+            scaled.ag = ag;
+        }
+        code = rw_engine_run(&params[params_each ? i : 0], &scaled, opt, &r);
+        store_summary(out, i, code, &r);
+    }
+    free(ag);
+    return 0;
 }
