@@ -168,19 +168,27 @@ static int modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
 }
 
 /* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
+static int cache_matches(const rw_cache_entry *c, int cb, int cm, const double key[4])
+{
+    return c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0;
+}
+
 static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
 {
     int i;
-    for (i = 0; i < RW_CACHE_SIZE; i++) {
-        rw_cache_entry *c = &e->cache[i];
-        if (c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0) return c;
-    }
+    if (cache_matches(&e->cache[e->cache_last], cb, cm, key)) return &e->cache[e->cache_last];
+    for (i = 0; i < RW_CACHE_SIZE; i++)
+        if (cache_matches(&e->cache[i], cb, cm, key)) {
+            e->cache_last = i;
+            return &e->cache[i];
+        }
     return NULL;
 }
 
 static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
 {
     rw_cache_entry *c = &e->cache[e->cache_next];
+    e->cache_last = e->cache_next;
     e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
     memset(c, 0, sizeof *c);
     c->used = 1;
@@ -403,7 +411,8 @@ typedef struct {
 static double mode_amplitude(const rw_span *sp, int i)
 {
     const double lam = sp->R->E.lam[i];
-    return hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+    const double a = sp->eta[i] - sp->f0[i] / lam, b = (sp->v[i] - sp->f1[i] / lam) / sqrt(lam);
+    return sqrt(a * a + b * b); /* rotations and rates of a standing wall: no overflow (libm's hypot is slow) */
 }
 
 static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
@@ -552,6 +561,9 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     const int sign = za + zb > 0.0;
     double roots[2];
     int n = 0, i;
+    /* the interpolant is a convex combination of za, zb plus at most 4/27 of |ma| + |mb|: ends of one
+     * sign that far from zero keep it without the extremum (the common case, no square root) */
+    if (za * zb > 0.0 && fmin(fabs(za), fabs(zb)) - 4.0 / 27.0 * (fabs(ma) + fabs(mb)) >= margin) return 1;
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -826,7 +838,9 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
     for (j = 0; j < n; j++) {
         double s_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
-        eval_point(e, m, sp, piece, piece == h ? C : NULL, &pb);
+        /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
+        const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
+        eval_point(e, m, sp, piece, same ? C : NULL, &pb);
         e->steps++;
         if (first_event(e, m, sp, &pa, &pb, &s_ev)) {
             rw_input ie = span_input(sp, s_ev);

@@ -118,6 +118,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int rigid;
     rw_cache_entry cache[RW_CACHE_SIZE];
     int cache_next;
+    int cache_last; /* the entry found last: consecutive input segments mostly stay in one region */
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
     double peak_s1, peak_s2;
