@@ -238,6 +238,8 @@ static const rw_hinge_law LAWS[] = {
 const rw_hinge_law *rw_hinge_law_of(int id)
 {
     size_t i;
+    /* the table is in id order: the direct look-up first (every event indicator evaluation asks) */
+    if (id >= 1 && (size_t)id <= sizeof LAWS / sizeof LAWS[0] && LAWS[id - 1].id == id) return &LAWS[id - 1];
     for (i = 0; i < sizeof LAWS / sizeof LAWS[0]; i++)
         if (LAWS[i].id == id) return &LAWS[i];
     return 0;
