@@ -118,7 +118,8 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ]);
-/* The same indicators, only those of `mask` (bit k = indicator k; the others are not written), with
+/* The same indicators, those of `mask` (bit k = indicator k; others are left or, for the breakpoints
+ * of one law, written alongside), with
  * the hinge moments Q(q) at x given by the caller (NULL: from the law). One definition of the rules
  * for the FMU and the exact engine: the engine asks only for what it needs (one indicator while it
  * refines a root) and passes the affine Q of its current linear region where the law's Q depends
