@@ -909,6 +909,22 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     *hi += margin;
 }
 
+/* A range that holds hermite_range's (wider, no extremum, no square root): the interpolant is a
+ * convex combination of za, zb plus at most 4/27 of |ma| + |mb|. A substep quiet under it is quiet
+ * under the exact range; only the others need that. */
+static void hermite_range_bound(double za, double da, double zb, double db, double L, double *lo, double *hi)
+{
+    const double ma = L * da, mb = L * db;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
+    *lo = fmin(za, zb) - swing - margin;
+    *hi = fmax(za, zb) + swing + margin;
+}
+
+static int indicator_clear(int state, double lo, double hi, double band)
+{
+    return state ? lo > band : hi < -band;
+}
+
 static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
                             rw_point *pt)
 {
@@ -957,15 +973,20 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
     eval_slow_point(e, m, sp, L, r->fast, &b);
     band_of(e, m, sp, &a, r, band);
     for (k = 0; k < RW_NZ; k++) {
+        hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
+        if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
         hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
-        if (e->b[k] ? !(lo > band[k]) : !(hi < -band[k])) return 0;
+        if (!indicator_clear(e->b[k], lo, hi, band[k])) return 0;
     }
     for (w = 0; w < 2; w++) {
         const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
         const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
         const double sb = 2.0 * fabs(s_of(&e->P, w, amp));
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
-        hermite_range(s_of(&e->P, w, a.x), s_of(&e->P, w, va), s_of(&e->P, w, b.x), s_of(&e->P, w, vb), L, &lo, &hi);
+        const double sa_ = s_of(&e->P, w, a.x), ra = s_of(&e->P, w, va), sb_ = s_of(&e->P, w, b.x), rb = s_of(&e->P, w, vb);
+        hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
+        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
+        hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
         if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
         if (sb > 1e-9 * fmax(fabs(lo), fabs(hi))) return 0;
         *peaks_full = 1;
