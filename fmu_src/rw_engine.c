@@ -17,6 +17,7 @@
 #define RW_PHASE_PER_SUBSTEP 1.0 /* rad of the fastest significant mode per bracketing substep */
 #define RW_MAX_SUBSTEPS 2000000L
 #define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
+#define RW_AFFINE_Q_CLEARANCE 1e-6 /* scale-free collapse indicator: below this, the law itself decides */
 
 /* ---- Stumpff functions ----------------------------------------------------------------------
  * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
@@ -40,13 +41,18 @@ static void stumpff(double z, double c[4])
         return;
     }
     if (fabs(z) < 1.0) {
-        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19 */
-        int k, j;
-        for (k = 0; k < 4; k++) {
-            double sum = INV_FACT[2 * 9 + k];
-            for (j = 8; j >= 0; j--) sum = INV_FACT[2 * j + k] - z * sum;
-            c[k] = sum;
+        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19; only c2
+         * and c3 are summed, c0 = 1 - z c2 and c1 = 1 - z c3 lose nothing for |z| < 1 (c0, c1 > 0.5) */
+        double s2 = INV_FACT[2 * 9 + 2], s3 = INV_FACT[2 * 9 + 3];
+        int j;
+        for (j = 8; j >= 0; j--) {
+            s2 = INV_FACT[2 * j + 2] - z * s2;
+            s3 = INV_FACT[2 * j + 3] - z * s3;
         }
+        c[0] = 1.0 - z * s2;
+        c[1] = 1.0 - z * s3;
+        c[2] = s2;
+        c[3] = s3;
         return;
     }
     if (z > 0.0) {
@@ -162,19 +168,27 @@ static int modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
 }
 
 /* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
+static int cache_matches(const rw_cache_entry *c, int cb, int cm, const double key[4])
+{
+    return c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0;
+}
+
 static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
 {
     int i;
-    for (i = 0; i < RW_CACHE_SIZE; i++) {
-        rw_cache_entry *c = &e->cache[i];
-        if (c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0) return c;
-    }
+    if (cache_matches(&e->cache[e->cache_last], cb, cm, key)) return &e->cache[e->cache_last];
+    for (i = 0; i < RW_CACHE_SIZE; i++)
+        if (cache_matches(&e->cache[i], cb, cm, key)) {
+            e->cache_last = i;
+            return &e->cache[i];
+        }
     return NULL;
 }
 
 static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
 {
     rw_cache_entry *c = &e->cache[e->cache_next];
+    e->cache_last = e->cache_next;
     e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
     memset(c, 0, sizeof *c);
     c->used = 1;
@@ -245,18 +259,30 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2
     return c;
 }
 
+/* The hinge moments of a region as Q = c + J q, where the law allows it (rw_hinge_law.q_only) */
+typedef struct {
+    int valid;
+    double c[2], J[2][2];
+} rw_affine_Q;
+
 /* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
  * cannot decompose it (msg filled). */
 static rw_cache_entry *region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
-                                 double g0[2])
+                                 double g0[2], rw_affine_Q *aq)
 {
     double Q[2], J[2][2], c[2], key[4];
     rw_cache_entry *ce;
+    aq->valid = 0;
     if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
     if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
     e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
     c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
     c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+    if (e->law->q_only) {
+        aq->valid = 1;
+        memcpy(aq->c, c, sizeof c);
+        memcpy(aq->J, J, sizeof J);
+    }
     key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
     ce = cache_find(e, 0, 0, key);
     if (!ce) {
@@ -280,6 +306,7 @@ typedef struct {
     double f0[2], f1[2]; /* modal forcing at t0 and its rate */
     double ag0, ag1, u0, u1; /* the input at t0 and its rate */
     double x0[RW_NX];        /* the start state itself: the motion is x0 + P (eta(s) - eta(0)) */
+    rw_affine_Q aq;          /* the region's hinge moments, if affine in q */
 } rw_span;
 
 static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2], double t0, const double x[RW_NX],
@@ -287,6 +314,7 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
 {
     const rw_modes2 *E = &R->E;
     int i;
+    /* sp->aq is the region's: set by the caller once per region */
     sp->R = R;
     sp->t0 = t0;
     sp->ag0 = in->ag + in->ag_slope * (t0 - t_in);
@@ -383,7 +411,8 @@ typedef struct {
 static double mode_amplitude(const rw_span *sp, int i)
 {
     const double lam = sp->R->E.lam[i];
-    return hypot(sp->eta[i] - sp->f0[i] / lam, (sp->v[i] - sp->f1[i] / lam) / sqrt(lam));
+    const double a = sp->eta[i] - sp->f0[i] / lam, b = (sp->v[i] - sp->f1[i] / lam) / sqrt(lam);
+    return sqrt(a * a + b * b); /* rotations and rates of a standing wall: no overflow (libm's hypot is slow) */
 }
 
 static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
@@ -420,6 +449,29 @@ typedef struct {
     double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
 } rw_point;
 
+/* The model's indicators of `mask` at the state x of the span's motion (the others are 1), with
+ * the region's affine hinge moments where the law has them (rw_event_indicators_some) */
+static void indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
+                       const double x[RW_NX], unsigned mask, double z[RW_NZ])
+{
+    int k;
+    for (k = 0; k < RW_NZ; k++) z[k] = 1.0;
+    if (sp->aq.valid) {
+        const rw_affine_Q *a = &sp->aq;
+        const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
+                             a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
+        rw_event_indicators_some(&e->P, &e->D, m, in, x, Q, mask, z);
+        /* Near its root the collapse indicator is taken from the law itself: the affine Q differs
+         * from it by rounding, and every sign decided near zero (the root, the tracked state set
+         * after an event, the collapse test) must come from one function, or an event repeats at
+         * one instant. Away from zero both have the same sign. */
+        if (((mask >> RW_Z_COLLAPSE) & 1u) && fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
+            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, 1u << RW_Z_COLLAPSE, z);
+    } else {
+        rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, mask, z);
+    }
+}
+
 static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
                        rw_point *pt)
 {
@@ -429,9 +481,9 @@ static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     int i;
     pt->s = s;
     span_eval(sp, s, C, pt->x, xd);
-    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
     for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
     for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
 }
 
@@ -440,7 +492,7 @@ static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *
     double x[RW_NX], z[RW_NZ];
     rw_input in = span_input(sp, s);
     span_eval(sp, s, NULL, x, NULL);
-    rw_event_indicators(&e->P, &e->D, m, &in, x, z);
+    indicators(e, m, sp, &in, x, 1u << k, z);
     return z[k];
 }
 
@@ -452,22 +504,30 @@ static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span
     return pt.dz[k];
 }
 
-/* Safeguarded regula falsi (Illinois, a bisection every fourth step) for the first s in
- * (lo, hi] where the boolean (value > 0) differs from its value at lo. Returns hi at convergence
- * (to a few ulps of the absolute time), the first point known to be past the root. */
+/* Safeguarded regula falsi (Illinois; a bisection when three steps have not halved the bracket)
+ * for the first s in (lo, hi] where the boolean (value > 0) differs from its value at lo, starting
+ * from the guess (NaN: none). Returns hi at convergence (to a few ulps of the absolute time), the
+ * first point known to be past the root. */
 typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s);
 
 static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double lo,
-                          double flo, double hi, double fhi, double rel_tol)
+                          double flo, double hi, double fhi, double rel_tol, double guess)
 {
     const int blo = flo > 0.0;
     const double tol_interval = rel_tol * (hi - lo);
+    double width_before = hi - lo;
     int it, last = 0;
     for (it = 0; it < 400; it++) {
         const double tol = fmax(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
         double s, fs;
+        int bisect = 0;
         if (hi - lo <= tol) break;
-        s = (it % 4 == 3 || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
+        if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
+            bisect = it > 0 && hi - lo > 0.5 * width_before;
+            width_before = hi - lo;
+        }
+        if (it == 0 && guess > lo && guess < hi) s = guess;
+        else s = (bisect || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
         fs = f(e, m, sp, k, s);
@@ -501,6 +561,9 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     const int sign = za + zb > 0.0;
     double roots[2];
     int n = 0, i;
+    /* the interpolant is a convex combination of za, zb plus at most 4/27 of |ma| + |mb|: ends of one
+     * sign that far from zero keep it without the extremum (the common case, no square root) */
+    if (za * zb > 0.0 && fmin(fabs(za), fabs(zb)) - 4.0 / 27.0 * (fabs(ma) + fabs(mb)) >= margin) return 1;
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -522,6 +585,30 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     return 1;
 }
 
+/* The root in (0, 1) of the cubic Hermite interpolant of (z, dz) on [0, L] whose end values have
+ * opposite signs: the first guess of the root refinement (within a substep every significant mode
+ * turns by at most 1 rad, so it is within a fraction of a percent of the substep). A few
+ * safeguarded Newton steps on the cubic; NaN if they do not settle. */
+static double hermite_root(double za, double da, double zb, double db, double L)
+{
+    const double ma = L * da, mb = L * db;
+    double lo = 0.0, hi = 1.0, u = za / (za - zb);
+    int it;
+    for (it = 0; it < 8; it++) {
+        const double u2 = u * u, u3 = u2 * u;
+        const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
+        const double dz = (6 * u2 - 6 * u) * za + (3 * u2 - 4 * u + 1) * ma + (-6 * u2 + 6 * u) * zb + (3 * u2 - 2 * u) * mb;
+        double next;
+        if ((z > 0.0) == (za > 0.0)) lo = u;
+        else hi = u;
+        next = dz != 0.0 ? u - z / dz : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        if (fabs(next - u) < 1e-12) return next;
+        u = next;
+    }
+    return NAN;
+}
+
 #define RW_DIP_DEPTH 3 /* a suspicious substep is split 4 ways, at most this many times */
 
 /* Does indicator k, on the same side of zero (state `was`) at both ends of [a, b], dip through
@@ -541,7 +628,7 @@ static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, i
     if (depth == RW_DIP_DEPTH) {
         double s_ext, z_ext;
         if (!approach || !leave) return 0;
-        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9);
+        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9, NAN);
         z_ext = indicator_at(e, m, sp, k, s_ext);
         if ((z_ext > 0.0) == was) return 0;
         *lo = a->s, *flo = a->z[k], *hi = s_ext, *fhi = z_ext;
@@ -572,10 +659,15 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     for (k = 0; k < RW_NZ; k++) {
         const int was = e->b[k];
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
-        if ((b->z[k] > 0.0) == was && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+        double guess = NAN;
+        if ((b->z[k] > 0.0) == was) {
+            if (!dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+        } else if ((a->z[k] > 0.0) == was) {
+            guess = a->s + (b->s - a->s) * hermite_root(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
+        }
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
-        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0);
+        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0, guess);
         if (!found || s < best) best = s;
         found = 1;
     }
@@ -616,7 +708,7 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
         track_peak(e, w, s_of(&e->P, w, xb));
         if ((ra > 0.0) != (rb > 0.0) && sb > sa) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
-            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9);
+            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
             span_eval(sp, s, NULL, x, NULL);
             track_peak(e, w, s_of(&e->P, w, x));
@@ -746,7 +838,9 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
     for (j = 0; j < n; j++) {
         double s_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
-        eval_point(e, m, sp, piece, piece == h ? C : NULL, &pb);
+        /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
+        const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
+        eval_point(e, m, sp, piece, same ? C : NULL, &pb);
         e->steps++;
         if (first_event(e, m, sp, &pa, &pb, &s_ev)) {
             rw_input ie = span_input(sp, s_ev);
@@ -815,6 +909,22 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     *hi += margin;
 }
 
+/* A range that holds hermite_range's (wider, no extremum, no square root): the interpolant is a
+ * convex combination of za, zb plus at most 4/27 of |ma| + |mb|. A substep quiet under it is quiet
+ * under the exact range; only the others need that. */
+static void hermite_range_bound(double za, double da, double zb, double db, double L, double *lo, double *hi)
+{
+    const double ma = L * da, mb = L * db;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
+    *lo = fmin(za, zb) - swing - margin;
+    *hi = fmax(za, zb) + swing + margin;
+}
+
+static int indicator_clear(int state, double lo, double hi, double band)
+{
+    return state ? lo > band : hi < -band;
+}
+
 static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
                             rw_point *pt)
 {
@@ -824,9 +934,9 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
     int i;
     pt->s = s;
     span_eval_part(sp, s, NULL, fast, pt->x, xd);
-    rw_event_indicators(&e->P, &e->D, m, &in, pt->x, pt->z);
+    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
     for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    rw_event_indicators(&e->P, &e->D, m, &ip, xp, zp);
+    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
     for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
 }
 
@@ -843,8 +953,8 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
         xp[k] += r->amp_q[k];
         xm[k] -= r->amp_q[k];
     }
-    rw_event_indicators(&e->P, &e->D, m, &in, xp, zp);
-    rw_event_indicators(&e->P, &e->D, m, &in, xm, zm);
+    indicators(e, m, sp, &in, xp, RW_Z_ALL, zp);
+    indicators(e, m, sp, &in, xm, RW_Z_ALL, zm);
     for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
 
@@ -863,15 +973,20 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
     eval_slow_point(e, m, sp, L, r->fast, &b);
     band_of(e, m, sp, &a, r, band);
     for (k = 0; k < RW_NZ; k++) {
+        hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
+        if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
         hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
-        if (e->b[k] ? !(lo > band[k]) : !(hi < -band[k])) return 0;
+        if (!indicator_clear(e->b[k], lo, hi, band[k])) return 0;
     }
     for (w = 0; w < 2; w++) {
         const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
         const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
         const double sb = 2.0 * fabs(s_of(&e->P, w, amp));
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
-        hermite_range(s_of(&e->P, w, a.x), s_of(&e->P, w, va), s_of(&e->P, w, b.x), s_of(&e->P, w, vb), L, &lo, &hi);
+        const double sa_ = s_of(&e->P, w, a.x), ra = s_of(&e->P, w, va), sb_ = s_of(&e->P, w, b.x), rb = s_of(&e->P, w, vb);
+        hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
+        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
+        hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
         if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
         if (sb > 1e-9 * fmax(fabs(lo), fabs(hi))) return 0;
         *peaks_full = 1;
@@ -908,6 +1023,23 @@ static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_en
     return fast_substep(e, m, sp, R, g0, in, t_in, t_to, r, x, t, depth + 1);
 }
 
+/* ---- one region on its own (rw_engine.h) ------------------------------------------------------ */
+int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2], const rw_linear_input *in,
+                            const double x0[RW_NX], double s, double x[RW_NX])
+{
+    rw_cache_entry R;
+    rw_span sp;
+    double g0[2];
+    if (!e || e->P.support != RW_FLEXIBLE_TOP) return RW_ENGINE_UNSUPPORTED;
+    memset(&R, 0, sizeof R);
+    if (modes_open(e, J, &R.E) != 0) return RW_ENGINE_UNSUPPORTED;
+    modal_force(&R.E, c, g0);
+    memset(&sp, 0, sizeof sp);
+    span_start(&sp, &R, g0, 0.0, x0, in, 0.0);
+    span_eval(&sp, s, NULL, x, NULL);
+    return 0;
+}
+
 /* ---- the stepper ------------------------------------------------------------------------------ */
 /* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
  * (x, t at the collapse), or an error code + 1. */
@@ -924,7 +1056,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         now.ag = in->ag + in->ag_slope * (*t - t_in);
         now.u_top = in->u_top + in->u_slope * (*t - t_in);
         selection_rate(e, m, &now, x, dq_sel);
-        R = region_of(e, m, x, dq_sel, g0);
+        R = region_of(e, m, x, dq_sel, g0, &sp.aq);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
         span_rates(e, &sp, rocking_rate(e), &r);
@@ -1218,4 +1350,67 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     if (rc > 1) snprintf(res->message, sizeof res->message, "%s", e->msg);
     rw_engine_free(e);
     return rc > 1 ? rc - 1 : 0;
+}
+
+/* ---- sweeps ----------------------------------------------------------------------------------- */
+static int check_many_arguments(size_t n, const rw_params *params, const double *scale, const rw_record *rec,
+                                const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t len)
+{
+    size_t i;
+    if (!params || !rec || !opt || !out || (n > 0 && !rec->ag)) {
+        snprintf(msg, len, "rw_engine_run_many: params, record, options and outputs must not be NULL");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    if (opt->n_out > 0) {
+        snprintf(msg, len, "rw_engine_run_many gives peaks only: no output grid (n_out = 0)");
+        return RW_ENGINE_BAD_ARGUMENT;
+    }
+    for (i = 0; scale && i < n; i++)
+        if (!isfinite(scale[i])) {
+            snprintf(msg, len, "scale[%zu] is not finite", i);
+            return RW_ENGINE_BAD_ARGUMENT;
+        }
+    return 0;
+}
+
+static void store_summary(const rw_engine_batch *out, size_t i, int code, const rw_engine_result *r)
+{
+    const int ran = code == 0 || code == RW_ENGINE_ZENO;
+    if (out->peak_s1) out->peak_s1[i] = ran ? r->peak_s1 : NAN;
+    if (out->peak_s2) out->peak_s2[i] = ran ? r->peak_s2 : NAN;
+    if (out->collapsed) out->collapsed[i] = r->collapsed;
+    if (out->t_collapse) out->t_collapse[i] = r->collapsed ? r->t_collapse : NAN;
+    if (out->impacts) out->impacts[i] = r->impacts;
+    if (out->code) out->code[i] = code;
+}
+
+int rw_engine_run_many(size_t n, const rw_params *params, int params_each, const double *scale, const rw_record *rec,
+                       const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t msg_len)
+{
+    double *ag = NULL;
+    rw_record scaled;
+    size_t i, j;
+    int rc = check_many_arguments(n, params, scale, rec, opt, out, msg, msg_len);
+    if (rc || n == 0) return rc;
+    if (scale) { /* one buffer for the scaled record, reused by every run */
+        ag = (double *)malloc(sizeof(double) * (rec->n > 0 ? rec->n : 1));
+        if (!ag) {
+            snprintf(msg, msg_len, "out of memory");
+            return RW_ENGINE_NO_MEMORY;
+        }
+    }
+    scaled = *rec;
+    for (i = 0; i < n; i++) {
+        rw_engine_result r;
+        int code;
+        memset(&r, 0, sizeof r);
+        if (scale) {
+            for (j = 0; j < rec->n; j++) ag[j] = scale[i] * rec->ag[j];
+            scaled.ag = ag;
+        }
+        code = rw_engine_run(&params[params_each ? i : 0], &scaled, opt, &r);
+        store_summary(out, i, code, &r);
+    }
+    free(ag);
+    return 0;
 }

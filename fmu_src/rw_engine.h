@@ -73,6 +73,24 @@ typedef struct {
  * and fills res->message when not 0. */
 int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *opt, rw_engine_result *res);
 
+/* ---- sweeps: many runs over one record in one call -------------------------------------------
+ * Run i uses the parameters params[params_each ? i : 0] and the record's ag times scale[i] (scale
+ * NULL: 1; u_top as given), over opt (which must not ask for an output grid). Each output array
+ * holds n values and may be NULL. No Python (or other caller) work between runs, and no shared
+ * state: separate calls can run on separate threads. */
+typedef struct {
+    double *peak_s1, *peak_s2; /* max |s1|, |s2| */
+    int *collapsed;            /* 1 if the wall collapsed */
+    double *t_collapse;        /* its time (NaN if standing) */
+    long *impacts;             /* base impacts */
+    int *code;                 /* the run's rw_engine_run code (0 ok, RW_ENGINE_ZENO: peaks so far) */
+} rw_engine_batch;
+
+/* Returns 0 when every run was made (each run's own code in out->code), or an error code for the
+ * call itself (NULL pointers, an output grid, a non-finite scale, no memory) with msg filled. */
+int rw_engine_run_many(size_t n, const rw_params *params, int params_each, const double *scale, const rw_record *rec,
+                       const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t msg_len);
+
 /* ---- the engine's state (public so that it can live inside the FMU's instance data) ------------
  * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
  * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top; decompositions are cached by region (the
@@ -100,6 +118,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int rigid;
     rw_cache_entry cache[RW_CACHE_SIZE];
     int cache_next;
+    int cache_last; /* the entry found last: consecutive input segments mostly stay in one region */
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
     double peak_s1, peak_s2;
@@ -132,5 +151,14 @@ void rw_engine_free(rw_engine *e);
  * wall collapsed at *t_reached (<= t + h), or an error code + 1 (msg filled). */
 int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
                    long *impacts, double *t_reached, char *msg, size_t n);
+
+/* ---- one linear region on its own (for tests of the closed form) ------------------------------
+ * The 2DOF with open hinges on the region whose hinge moments are Q = c + J q: the exact motion of
+ * M q'' + (K - J) q = pa ag + fu u_top (1, 1) + c from x0 over s (the input linear from its value at
+ * s = 0), through the engine's own decomposition (the symmetric path when J is symmetric, the
+ * general 2x2 path otherwise) and closed form. 0, or RW_ENGINE_UNSUPPORTED (complex or repeated
+ * modes, or an engine that is not the 2DOF). */
+int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2], const rw_linear_input *in,
+                            const double x0[RW_NX], double s, double x[RW_NX]);
 
 #endif

@@ -229,15 +229,17 @@ static int doherty_elastic(const rw_derived *d, const double q[2])
 /* ---- the table ------------------------------------------------------------------------------ */
 
 static const rw_hinge_law LAWS[] = {
-    {RW_RIGID, "rigid", 1, rigid_moments, rigid_potential, no_breakpoints, rigid_elastic},
-    {RW_SEMI_RIGID_PAPER, "semiRigidPaper", 0, paper_moments, hinge_potential, paper_breakpoints, paper_elastic},
-    {RW_SEMI_RIGID_HINGE, "semiRigidHinge", 0, hinge_moments, hinge_potential, hinge_breakpoints, hinge_elastic},
-    {RW_DOHERTY_HINGE, "dohertyHinge", 0, doherty_moments, doherty_potential, doherty_breakpoints, doherty_elastic},
+    {RW_RIGID, "rigid", 1, rigid_moments, rigid_potential, no_breakpoints, rigid_elastic, 0},
+    {RW_SEMI_RIGID_PAPER, "semiRigidPaper", 0, paper_moments, hinge_potential, paper_breakpoints, paper_elastic, 0},
+    {RW_SEMI_RIGID_HINGE, "semiRigidHinge", 0, hinge_moments, hinge_potential, hinge_breakpoints, hinge_elastic, 1},
+    {RW_DOHERTY_HINGE, "dohertyHinge", 0, doherty_moments, doherty_potential, doherty_breakpoints, doherty_elastic, 1},
 };
 
 const rw_hinge_law *rw_hinge_law_of(int id)
 {
     size_t i;
+    /* the table is in id order: the direct look-up first (every event indicator evaluation asks) */
+    if (id >= 1 && (size_t)id <= sizeof LAWS / sizeof LAWS[0] && LAWS[id - 1].id == id) return &LAWS[id - 1];
     for (i = 0; i < sizeof LAWS / sizeof LAWS[0]; i++)
         if (LAWS[i].id == id) return &LAWS[i];
     return 0;

@@ -232,59 +232,89 @@ static int side_of(double z, int tracked)
     return z > 0.0 ? 1 : (z < 0.0 ? -1 : tracked);
 }
 
-double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
-                     const double x[RW_NX])
+double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double Q[2])
 {
     const double q1 = x[0], q2 = x[1];
     const double Kq1 = d->K[0][0] * q1 + d->K[0][1] * q2, Kq2 = d->K[1][0] * q1 + d->K[1][1] * q2;
+    return q1 * Kq1 + q2 * Kq2 - (q1 * Q[0] + q2 * Q[1]);
+}
+
+double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                     const double x[RW_NX])
+{
     double Q[2], J[2][2];
     (void)in; /* the spring counts as if the diaphragm held still (docs/model.md "Collapse") */
-    law(p)->moments(d, side_of(q1, m->side_b), side_of(q2 - q1, m->side_m), x, x + 2, Q, J);
-    return q1 * Kq1 + q2 * Kq2 - (q1 * Q[0] + q2 * Q[1]);
+    law(p)->moments(d, side_of(x[0], m->side_b), side_of(x[1] - x[0], m->side_m), x, x + 2, Q, J);
+    return rw_collapse_G_of(d, x, Q);
 }
 
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ])
 {
-    double f_b, f_m, cb, cm;
-    const int rigid = rw_is_rigid(p);
     int i;
     for (i = 0; i < RW_NZ; i++) z[i] = 1.0;
-    rw_caps(p, d, &cb, &cm);
-    if (rigid && (m->closed_b || m->closed_m)) rw_closed_forces(p, d, m, in, x, &f_b, &f_m);
+    rw_event_indicators_some(p, d, m, in, x, NULL, RW_Z_ALL, z);
+}
+
+static int wanted(unsigned mask, int k)
+{
+    return (mask >> k) & 1u;
+}
+
+/* the hinge indicators (base, mid) */
+static void hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                             const double x[RW_NX], unsigned mask, double z[RW_NZ])
+{
     /* Hinge indicators carry a small offset so that none is exactly zero when integration restarts
      * after the event that set the mode (CVODE ignores a root function that starts at zero):
      * open: side*rotation + eps_q, root just past zero (|rotation| < tiny, so the direction of
      * motion decides in rw_event_update); closed: margin + eps_f, root just past |f| = cap. */
-    {
-        const double eps_q = RW_EPS_Q(d), eps_f = RW_EPS_F;
+    const double eps_q = RW_EPS_Q(d), eps_f = RW_EPS_F;
+    const int rigid = rw_is_rigid(p);
+    double f_b = 0.0, f_m = 0.0, cb, cm;
+    rw_caps(p, d, &cb, &cm);
+    if (rigid && (m->closed_b || m->closed_m)) rw_closed_forces(p, d, m, in, x, &f_b, &f_m);
+    if (wanted(mask, RW_Z_BASE))
         z[RW_Z_BASE] = (rigid && m->closed_b) ? 1.0 - fabs(f_b) / cb + eps_f : m->side_b * x[0] + fmax(eps_q, m->zoff_b);
-        if (p->support == RW_FLEXIBLE_TOP)
-            z[RW_Z_MID] = (rigid && m->closed_m) ? 1.0 - fabs(f_m) / cm + eps_f : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
-    }
-    /* breakpoints of the hinge laws */
-    if (p->support == RW_SIMPLY_SUPPORTED && !rigid) {
-        z[RW_Z_BREAK] = fabs(x[0]) - 2.0 * d->D1 / p->h;
-        z[RW_Z_BREAK + 1] = fabs(x[0]) - 2.0 * d->D2 / p->h;
-    } else if (p->support == RW_FLEXIBLE_TOP) {
-        law(p)->breakpoints(d, x, z + RW_Z_BREAK);
-        z[RW_Z_TOPPLE] = 1.0 - fmax(fabs(x[0]), fabs(x[1])) / d->q_topple;
-    }
-    /* collapse */
-    if (p->support == RW_PARAPET) {
-        z[RW_Z_COLLAPSE] = 1.0 - fabs(x[0]) / d->alpha;
-    } else if (p->support == RW_SIMPLY_SUPPORTED) {
-        z[RW_Z_COLLAPSE] = 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
-    } else {
+    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_MID))
+        z[RW_Z_MID] = (rigid && m->closed_m) ? 1.0 - fabs(f_m) / cm + eps_f : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
+}
+
+/* the collapse indicator (Q: the hinge moments at x, NULL = from the law) */
+static double collapse_indicator(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                                 const double x[RW_NX], const double *Q)
+{
+    if (p->support == RW_PARAPET) return 1.0 - fabs(x[0]) / d->alpha;
+    if (p->support == RW_SIMPLY_SUPPORTED) return 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
+    {
         /* G(q)/|q|^2 (clipped): scale-free, +large near q = 0 for rigid hinges, root where G = 0 */
         const double n2 = x[0] * x[0] + x[1] * x[1], zmax = 1e3;
         double v = zmax;
         if (n2 > 0.0) {
-            v = rw_collapse_G(p, d, m, in, x) / n2 / d->zscale;
+            v = (Q ? rw_collapse_G_of(d, x, Q) : rw_collapse_G(p, d, m, in, x)) / n2 / d->zscale;
             if (v > zmax) v = zmax;
         }
-        z[RW_Z_COLLAPSE] = v;
+        return v;
     }
+}
+
+void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                              const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ])
+{
+    const unsigned breaks = ((1u << RW_NBREAK) - 1u) << RW_Z_BREAK;
+    if (mask & ((1u << RW_Z_BASE) | (1u << RW_Z_MID))) hinge_indicators(p, d, m, in, x, mask, z);
+    /* breakpoints of the hinge laws */
+    if (mask & breaks) {
+        if (p->support == RW_SIMPLY_SUPPORTED && !rw_is_rigid(p)) {
+            z[RW_Z_BREAK] = fabs(x[0]) - 2.0 * d->D1 / p->h;
+            z[RW_Z_BREAK + 1] = fabs(x[0]) - 2.0 * d->D2 / p->h;
+        } else if (p->support == RW_FLEXIBLE_TOP) {
+            law(p)->breakpoints(d, x, z + RW_Z_BREAK);
+        }
+    }
+    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE))
+        z[RW_Z_TOPPLE] = 1.0 - fmax(fabs(x[0]), fabs(x[1])) / d->q_topple;
+    if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, in, x, Q);
 }
 
 int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,

@@ -69,6 +69,9 @@ typedef struct {
     void (*breakpoints)(const rw_derived *d, const double q[2], double z[RW_NBREAK]);
     /* 1 inside the first linear range of every hinge (collapse is not tested there) */
     int (*elastic)(const rw_derived *d, const double q[2]);
+    /* 1 if Q depends on q alone (not on the sides, no kink at zero rotation), so that Q = c + J q
+     * holds on the whole linear region the motion is in (the exact engine evaluates it so) */
+    int q_only;
 } rw_hinge_law;
 
 /* The law of a hingeLaw value, NULL if none. */
@@ -115,9 +118,20 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ]);
+/* The same indicators, those of `mask` (bit k = indicator k; others are left or, for the breakpoints
+ * of one law, written alongside), with
+ * the hinge moments Q(q) at x given by the caller (NULL: from the law). One definition of the rules
+ * for the FMU and the exact engine: the engine asks only for what it needs (one indicator while it
+ * refines a root) and passes the affine Q of its current linear region where the law's Q depends
+ * on q alone (rw_hinge_law.q_only), which spares the law's case analysis at every evaluation. */
+#define RW_Z_ALL ((1u << RW_NZ) - 1u)
+void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                              const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ]);
 /* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                      const double x[RW_NX]);
+/* The same G with the hinge moments Q at x given (one formula for both). */
+double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double Q[2]);
 /* RW_STANDING, or why x is taken as collapsed (spec "Collapse"). */
 int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                     const double x[RW_NX]);

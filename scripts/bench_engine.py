@@ -1,7 +1,9 @@
 """Speed of the exact engine (fmu_src/rw_engine.c) against the other ways to run the wall, in one run.
 
-Per 80-s record (El Centro 1940 at 50 %, wall 1 of the paper): the engine in-process (ctypes),
-fmi2sim BDF and ERK (ARKODE ERKStep) at several rtol (CPU time of the child process), fmpy's CVode
+Per 80-s record (El Centro 1940 at 50 %, wall 1 of the paper): the engine in-process (ctypes), the
+command line build/rwengine as a whole process (wall time, start-up and record reading included),
+the engine's runs per second on one core through run_many (one C call for many runs), fmi2sim BDF,
+Adams and ERK (ARKODE ERKStep) at several rtol (CPU time of the child process), fmpy's CVode
 driving the same FMU,
 and the Python reference solver (DOP853), each with its error against fmi2sim BDF at rtol 1e-12:
 error = max(rel. error of peak s1, of peak s2 (relative to peak s1 when s2 is below 1 % of it)).
@@ -11,10 +13,15 @@ arithmetic allows (closed-form steps and event evaluations counted by the engine
 beside what it reaches. Every time is CPU time (the engine: process time of repeated calls, best of 3), on a shared machine:
 read ratios, not absolutes.
 
-    .venv/bin/python scripts/bench_engine.py [--quick]
+Then a sweep as a fragility study runs it: the 44 records of the FEMA P695 far-field set x 20
+intensities (PGA 0.05 g to 1.0 g) x 4 K_d = 3 520 runs of the 2DOF dohertyHinge wall 1 over each
+whole record, one run_many call per (record, K_d) on 2 threads: total wall seconds and runs/s.
+
+    .venv/bin/python scripts/bench_engine.py [--quick] [--sweep-only]
 """
 import argparse
 import json
+import os
 import pathlib
 import resource
 import subprocess
@@ -26,11 +33,14 @@ import numpy as np
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
-from rockingwall import engine as rw_engine
+from rockingwall import engine as rw_engine  # noqa: E402
 from rwref import inputs  # noqa: E402
 
 FMU = REPO / "build" / "RockingWall.fmu"
 FMI2SIM = REPO / "build" / "fmi2sim"
+RWENGINE = REPO / "build" / "rwengine"
+SWEEP_KD = (5e3, 5e4, 5e5, 5e7)
+SWEEP_PGA_G = np.linspace(0.05, 1.0, 20)
 WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0, er=0.86)
 SCENES = [  # label, FMU parameters, reference-solver names (None: not in the reference solver)
     ("2DOF dohertyHinge, Kd=50 kN/m", dict(support=3, hingeLaw=4, Kd=5e4), None),
@@ -74,6 +84,27 @@ def engine_time(sig, params, t_end, repeat):
     return r, best
 
 
+def cli_time(csv, params, t_end, repeat=5):
+    """build/rwengine as a whole process: best wall time of `repeat` runs (start-up, reading the
+    CSV, the run and the JSON output)."""
+    cmd = [str(RWENGINE), "--input", str(csv), "--stop-time", f"{t_end:g}"]
+    for k, v in params.items():
+        cmd += ["--set", f"{k}={v!r}"]
+    best = float("inf")
+    for _ in range(repeat):
+        start = time.perf_counter()
+        subprocess.run(cmd, check=True, capture_output=True)
+        best = min(best, time.perf_counter() - start)
+    return best
+
+
+def runs_per_second(sig, params, t_end, n=50):
+    """Runs per CPU second on one core through run_many: n runs of the scene in one C call."""
+    start = time.process_time()
+    rw_engine.run_many(sig.t, sig.a, scale=np.ones(n), t_end=t_end, **params)
+    return n / (time.process_time() - start)
+
+
 def fmpy_run(sig, params, t_end, rtol):
     from fmpy import simulate_fmu
     table = np.zeros(len(sig.t), dtype=[("time", np.float64), ("ag", np.float64), ("u_top", np.float64)])
@@ -92,27 +123,62 @@ def reference_run(sig, names, kd, t_end, rtol):
     return np.max(np.abs(res.s1)), np.max(np.abs(res.s2)), time.process_time() - start
 
 
+def sweep(workers=2):
+    """The 3 520-run fragility sweep over the FEMA P695 far-field set on `workers` threads."""
+    from concurrent.futures import ThreadPoolExecutor
+    from rockingwall.sweep.records import fema_farfield
+    cache = pathlib.Path(os.environ.get("XDG_CACHE_HOME", pathlib.Path.home() / ".cache")) / "rockingwall" / "fema_farfield"
+    records = [inputs.read_at2(r.path) for r in fema_farfield(cache)]
+    jobs = [(sig, kd) for sig in records for kd in SWEEP_KD]
+
+    def one(job):
+        sig, kd = job
+        scale = SWEEP_PGA_G * inputs.G_STD / np.max(np.abs(sig.a))
+        r = rw_engine.run_many(sig.t, sig.a, scale=scale, t_end=float(sig.t[-1]), support=3, hingeLaw=4, Kd=kd,
+                               **WALL_1)
+        return len(scale), int(r["collapsed"].sum()), int((r["code"] != 0).sum()), float(sig.t[-1])
+
+    cpu0, start = time.process_time(), time.perf_counter()
+    with ThreadPoolExecutor(workers) as pool:
+        done = list(pool.map(one, jobs))
+    wall, cpu = time.perf_counter() - start, time.process_time() - cpu0
+    runs = sum(d[0] for d in done)
+    seconds = sum(d[0] * d[3] for d in done)
+    print(f"sweep: {len(records)} records x {len(SWEEP_PGA_G)} intensities (PGA {SWEEP_PGA_G[0]:g}-"
+          f"{SWEEP_PGA_G[-1]:g} g) x {len(SWEEP_KD)} K_d = {runs} runs ({seconds / 3600:.1f} h of records), "
+          f"{workers} threads: {wall:.2f} s wall, {runs / wall:.0f} runs/s ({cpu:.2f} s CPU, "
+          f"{runs / cpu:.0f} runs per CPU second); {sum(d[1] for d in done)} collapsed, "
+          f"{sum(d[2] for d in done)} failed", flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="30 s of the record, fewer contenders")
+    ap.add_argument("--sweep-only", action="store_true", help="only the 3 520-run sweep")
     args = ap.parse_args()
+    print(f"load average {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (shared machine)")
+    if args.sweep_only:
+        sweep()
+        return
     sig = inputs.el_centro(0.5)
     t_end = 30.0 if args.quick else 80.0
     workdir = pathlib.Path(tempfile.mkdtemp(prefix="bench_engine_"))
     csv = workdir / "in.csv"
     np.savetxt(csv, np.c_[sig.t, sig.a], delimiter=",", header="time,ag", comments="", fmt="%.17g")
     print(f"El Centro 1940 x0.5, {t_end:g} s, wall 1 (h 2.5 m, b 0.15 m, e_r 0.86). Times in ms per record.")
-    print(f"{'scene':<36} {'engine':>8} {'err':>8} {'runs/s':>7} {'floor':>7} | "
-          f"{'fmi2sim BDF (rtol: ms, err)':<44} {'ratio':>6} | {'fmi2sim ERK (rtol: ms, err)':<44} {'ratio':>6} | "
-          f"{'fmpy CVode':>16} | {'reference':>16}")
+    print(f"{'scene':<36} {'engine':>8} {'floor':>7} {'CLI':>7} {'err':>8} {'runs/s':>7} | "
+          f"{'fmi2sim BDF (rtol: ms, err)':<44} {'ratio':>6} | {'fmi2sim Adams (rtol: ms, err)':<44} {'ratio':>6} | "
+          f"{'fmi2sim ERK (rtol: ms, err)':<44} {'ratio':>6} | {'fmpy CVode':>16} | {'reference':>16}")
     for label, fp, ref_names in SCENES:
         params = dict(WALL_1, **fp)
         ref = fmi2sim(csv, params, 1e-12, t_end, workdir)[:2]
         r, t_eng = engine_time(sig, params, t_end, 3 if args.quick else 10)
         e_eng = error(r.peak_s1, r.peak_s2, ref)
         floor = (r.steps * FLOPS_PER_STEP + r.events * FLOPS_PER_EVENT) / FLOPS_PER_NS * 1e-6  # ms
+        t_cli = cli_time(csv, params, t_end)
+        rps = runs_per_second(sig, params, t_end)
         cols = []
-        for solver in ("bdf", "erk"):
+        for solver in ("bdf", "adams", "erk"):
             sims = []
             for rtol in FMI2SIM_RTOLS:
                 p1, p2, cpu = fmi2sim(csv, params, rtol, t_end, workdir, solver)
@@ -131,11 +197,14 @@ def main():
                     ref_txt = f"{cpu * 1e3:.0f} ms {error(p1, p2, ref):.0e}"
                 except Exception as exc:  # the reference solver is being renamed (support, hingeLaw)
                     ref_txt = f"n/a ({type(exc).__name__})"
-        print(f"{label:<36} {t_eng * 1e3:8.2f} {e_eng:8.0e} {1 / t_eng:7.0f} {floor:7.3f} | {cols[0]} | {cols[1]} | "
-              f"{fp_txt:>16} | {ref_txt:>16}", flush=True)
-    print("ratio: CPU of the cheapest fmi2sim run at least as accurate as the engine (else its most accurate)"
-          " over the engine's time;\nfloor: the engine's own counts (closed-form steps x 60 flop + events x"
-          " 2000 flop) at 1 flop/ns.")
+        print(f"{label:<36} {t_eng * 1e3:8.2f} {floor:7.3f} {t_cli * 1e3:7.1f} {e_eng:8.0e} {rps:7.0f} | {cols[0]} | "
+              f"{cols[1]} | {cols[2]} | {fp_txt:>16} | {ref_txt:>16}", flush=True)
+    print("engine: ms per record in-process (best of 3); floor: the engine's own counts (closed-form steps x 60"
+          " flop + events x 2000 flop) at 1 flop/ns;\nCLI: build/rwengine as a whole process, ms wall (best of 5);"
+          " runs/s: run_many on one core; ratio: CPU of the cheapest fmi2sim run at least as accurate as the"
+          " engine (else its most accurate) over the engine's time.")
+    if not args.quick:
+        sweep()
 
 
 if __name__ == "__main__":

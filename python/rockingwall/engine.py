@@ -181,3 +181,62 @@ def run(t, ag, u_top=None, t_end=None, t_start=0.0, x0=None, t_out=None, max_eve
     if code:
         raise EngineError(code, res.message.decode(errors="replace"))
     return Result(res, t_out, x_out, s1, s2, imp_t, imp_e)
+
+
+# ---- sweeps: many runs over one record in one C call (rw_engine_run_many) ------------------------
+class _Batch(ctypes.Structure):
+    _fields_ = [("peak_s1", ctypes.POINTER(ctypes.c_double)), ("peak_s2", ctypes.POINTER(ctypes.c_double)),
+                ("collapsed", ctypes.POINTER(ctypes.c_int)), ("t_collapse", ctypes.POINTER(ctypes.c_double)),
+                ("impacts", ctypes.POINTER(ctypes.c_long)), ("code", ctypes.POINTER(ctypes.c_int))]
+
+
+def _run_many_function():
+    lib = library()
+    fn = lib.rw_engine_run_many
+    if fn.restype is not ctypes.c_int:
+        fn.argtypes = [ctypes.c_size_t, ctypes.c_void_p, ctypes.c_int, ctypes.POINTER(ctypes.c_double),
+                       ctypes.POINTER(_Record), ctypes.POINTER(_Options), ctypes.POINTER(_Batch), ctypes.c_char_p,
+                       ctypes.c_size_t]
+        fn.restype = ctypes.c_int
+    return fn
+
+
+def run_many(t, ag, scale=None, u_top=None, t_end=None, t_start=0.0, max_events_per_instant=0, **param_values):
+    """N runs over one record in one C call (no Python work between runs; ctypes releases the GIL,
+    so threads can run calls side by side). Each parameter value and `scale` (the factor on ag) is
+    a scalar or an array of length N (N: the longest given; scale None = 1). Returns a dict of
+    arrays of length N: peak_s1, peak_s2, collapsed (bool), t_collapse (NaN if standing),
+    impacts, code (0 ok, else the run's error code as in run(); its peaks are NaN unless Zeno).
+    A bad parameter set makes only its own run fail (code 2), as a sweep wants."""
+    t = _array(t)
+    ag, u_top = _array(ag, t.size), _array(u_top, t.size)
+    t_end = float(t[-1]) if t_end is None else float(t_end)
+    columns = {k: np.atleast_1d(np.asarray(v)) for k, v in param_values.items()}
+    scale_arr = None if scale is None else np.atleast_1d(np.asarray(scale, dtype=np.float64))
+    sizes = {a.size for a in list(columns.values()) + ([scale_arr] if scale_arr is not None else []) if a.size != 1}
+    if len(sizes) > 1:
+        raise ValueError(f"run_many: array arguments of different lengths {sorted(sizes)}")
+    n = sizes.pop() if sizes else 1
+    if scale_arr is not None:
+        scale_arr = np.ascontiguousarray(np.broadcast_to(scale_arr, (n,)), dtype=np.float64)
+    base = params(**{k: v.item() for k, v in columns.items() if v.size == 1})
+    varying = {k: v for k, v in columns.items() if v.size != 1}
+    sets = (type(base) * (n if varying else 1))()
+    for i in range(len(sets)):
+        ctypes.memmove(ctypes.byref(sets, i * ctypes.sizeof(base)), ctypes.byref(base), ctypes.sizeof(base))
+        for k, v in varying.items():
+            setattr(sets[i], k, type(getattr(base, k))(v[i].item()))
+    out = {"peak_s1": np.full(n, np.nan), "peak_s2": np.full(n, np.nan), "collapsed": np.zeros(n, np.intc),
+           "t_collapse": np.full(n, np.nan), "impacts": np.zeros(n, np.int_), "code": np.zeros(n, np.intc)}
+    batch = _Batch(*(out[k].ctypes.data_as(ctypes.POINTER(c)) for k, c in
+                     (("peak_s1", ctypes.c_double), ("peak_s2", ctypes.c_double), ("collapsed", ctypes.c_int),
+                      ("t_collapse", ctypes.c_double), ("impacts", ctypes.c_long), ("code", ctypes.c_int))))
+    rec = _Record(t.size, _ptr(t), _ptr(ag), _ptr(u_top))
+    opt = _Options(float(t_start), t_end, None, 0, None, int(max_events_per_instant))
+    msg = ctypes.create_string_buffer(256)
+    code = _run_many_function()(n, ctypes.cast(sets, ctypes.c_void_p), int(bool(varying)), _ptr(scale_arr),
+                                ctypes.byref(rec), ctypes.byref(opt), ctypes.byref(batch), msg, len(msg))
+    if code:
+        raise EngineError(code, msg.value.decode(errors="replace"))
+    out["collapsed"] = out["collapsed"].astype(bool)
+    return out
