@@ -1027,6 +1027,7 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
         LEAVE(fmi2Discard);
     }
     refresh_inputs(S);
+    msg[0] = '\0'; /* the exact step may leave its reason for declining here (cs_none.c reports it) */
     rc = FMU_NOT_EXACT; /* exact step where the model offers one (RockingWall: cs_exact.c), else CVODE */
     if (S->model.exact_step) {
         unsigned vr[S->n_inputs + 1];
