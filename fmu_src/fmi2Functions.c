@@ -118,6 +118,8 @@ typedef struct {
     cs_solver *cs;
     cs_input *inputs;     /* every Real input, value refreshed before each step */
     size_t n_inputs;
+    unsigned *step_vrs;   /* the inputs' value references and slopes as fmu_model.exact_step takes */
+    double *step_slopes;  /* them (allocated here: MSVC, which builds FMUs from sources, has no VLAs) */
     int terminated;       /* the model ended the run (fmi2Terminated status) */
     int initialized;      /* fmi2ExitInitializationMode succeeded (until fmi2Reset) */
     double last_successful_time;
@@ -434,7 +436,9 @@ fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type fmuType, fmi2Str
     S->name = (char *)alloc(&S->cb, strlen(instanceName) + 1, 1);
     S->M = alloc(&S->cb, 1, S->model.data_size);
     S->inputs = (cs_input *)alloc(&S->cb, S->model.nvars + 1, sizeof(cs_input));
-    if (!S->name || !S->M || !S->inputs) {
+    S->step_vrs = (unsigned *)alloc(&S->cb, S->model.nvars + 1, sizeof(unsigned));
+    S->step_slopes = (double *)alloc(&S->cb, S->model.nvars + 1, sizeof(double));
+    if (!S->name || !S->M || !S->inputs || !S->step_vrs || !S->step_slopes) {
         fmi2FreeInstance(S);
         return NULL;
     }
@@ -461,6 +465,8 @@ void fmi2FreeInstance(fmi2Component c)
     cb = S->cb;
     cs_free(S->cs);
     release(&cb, S->inputs);
+    release(&cb, S->step_vrs);
+    release(&cb, S->step_slopes);
     release(&cb, S->M);
     release(&cb, S->name);
     release(&cb, S);
@@ -1030,10 +1036,9 @@ fmi2Status fmi2DoStep(fmi2Component c, fmi2Real currentCommunicationPoint, fmi2R
     msg[0] = '\0'; /* the exact step may leave its reason for declining here (cs_none.c reports it) */
     rc = FMU_NOT_EXACT; /* exact step where the model offers one (RockingWall: cs_exact.c), else CVODE */
     if (S->model.exact_step) {
-        unsigned vr[S->n_inputs + 1];
-        double slope[S->n_inputs + 1];
-        for (k = 0; k < S->n_inputs; k++) vr[k] = S->inputs[k].vr, slope[k] = S->inputs[k].slope;
-        rc = S->model.exact_step(S->M, S->time, h, vr, slope, S->n_inputs, &S->log, &t_reached, msg, sizeof msg);
+        for (k = 0; k < S->n_inputs; k++) S->step_vrs[k] = S->inputs[k].vr, S->step_slopes[k] = S->inputs[k].slope;
+        rc = S->model.exact_step(S->M, S->time, h, S->step_vrs, S->step_slopes, S->n_inputs, &S->log, &t_reached, msg,
+                                 sizeof msg);
     }
     if (rc == FMU_NOT_EXACT) rc = cs_step(S->cs, S->time, h, S->inputs, S->n_inputs, &S->log, &t_reached, msg, sizeof msg);
     for (k = 0; k < S->n_inputs; k++) S->inputs[k].slope = 0.0; /* derivatives hold for one step */
