@@ -3,18 +3,27 @@
 # cmake/toolchain-mingw-w64.cmake), and their tests, run under wine. Included by
 # fmu_src/CMakeLists.txt, whose rw_add_fmu packs RW_WIN64_BINARY_DIR/NAME.dll into NAME.fmu.
 #
-# RW_WIN64 is ON when the cross compiler is found, OFF otherwise and under the sanitizers (those
-# builds are for testing the Linux binaries; the Windows build would only be built twice).
+# RW_WIN64: ON, OFF or AUTO (the default): AUTO is ON when the cross compiler is found, OFF when
+# not and under the sanitizers (those builds test the Linux binaries; the Windows build would only
+# be built twice). AUTO is decided again at every configure, so a build folder configured before
+# mingw-w64 was installed (scripts/setup.sh --with-windows) builds the Windows binaries after it.
 find_program(RW_MINGW_GCC x86_64-w64-mingw32-gcc)
-if(RW_MINGW_GCC AND NOT RW_SANITIZE)
-  set(_rw_win64_default ON)
-else()
-  set(_rw_win64_default OFF)
+set(RW_WIN64 AUTO CACHE STRING "Cross-compile the FMUs' win64 binaries with mingw-w64: ON, OFF or AUTO")
+set_property(CACHE RW_WIN64 PROPERTY STRINGS AUTO ON OFF)
+if(RW_WIN64 STREQUAL "AUTO")
+  if(RW_MINGW_GCC AND NOT RW_SANITIZE)
+    set(RW_WIN64 ON)
+  else()
+    set(RW_WIN64 OFF)
+  endif()
 endif()
-option(RW_WIN64 "Cross-compile the FMUs' win64 binaries with mingw-w64 and pack them into the FMUs" ${_rw_win64_default})
 if(NOT RW_WIN64)
-  message(STATUS "Windows binaries: off (RW_WIN64=OFF; the cross compiler x86_64-w64-mingw32-gcc is "
-                 "${RW_MINGW_GCC})")
+  message(STATUS "Windows binaries: off (RW_WIN64; cross compiler: ${RW_MINGW_GCC})")
+  if(NOT RW_MINGW_GCC AND NOT RW_SANITIZE AND RW_BUILD_TESTS)
+    add_test(NAME win64_binaries COMMAND sh -c
+             "echo 'SKIPPED: x86_64-w64-mingw32-gcc not found (Debian: scripts/setup.sh --with-windows); the FMUs have no win64 binaries'; exit 77")
+    set_tests_properties(win64_binaries PROPERTIES SKIP_RETURN_CODE 77)
+  endif()
   return()
 endif()
 if(NOT RW_MINGW_GCC)
