@@ -40,6 +40,7 @@ ExternalProject_Add(rw_win64
              -DCMAKE_BUILD_TYPE=Release
              -DRW_SOURCE_DIR=${CMAKE_SOURCE_DIR}
              -DFMI2_HEADERS_DIR=${FMI2_HEADERS_DIR}
+             -DRW_WIN64_TESTS=${RW_BUILD_TESTS}
   BUILD_ALWAYS ON # its own build decides what is out of date (the sources are outside its tree)
   INSTALL_COMMAND ""
   BUILD_BYPRODUCTS ${RW_WIN64_BINARY_DIR}/RockingWall.dll ${RW_WIN64_BINARY_DIR}/Diaphragm.dll)
