@@ -1,4 +1,4 @@
-# The FMUs' Windows binaries (binaries/win64/RockingWall.dll, Diaphragm.dll), cross-compiled with
+# The FMUs' Windows binaries (binaries/win64/RockingWall.dll, Diaphragm.dll, Building.dll), cross-compiled with
 # Debian's mingw-w64 by the ExternalProject rw_win64 (cmake/win64/CMakeLists.txt with
 # cmake/toolchain-mingw-w64.cmake), and their tests, run under wine. Included by
 # fmu_src/CMakeLists.txt, whose rw_add_fmu packs RW_WIN64_BINARY_DIR/NAME.dll into NAME.fmu.
@@ -43,7 +43,8 @@ ExternalProject_Add(rw_win64
              -DRW_WIN64_TESTS=${RW_BUILD_TESTS}
   BUILD_ALWAYS ON # its own build decides what is out of date (the sources are outside its tree)
   INSTALL_COMMAND ""
-  BUILD_BYPRODUCTS ${RW_WIN64_BINARY_DIR}/RockingWall.dll ${RW_WIN64_BINARY_DIR}/Diaphragm.dll)
+  BUILD_BYPRODUCTS ${RW_WIN64_BINARY_DIR}/RockingWall.dll ${RW_WIN64_BINARY_DIR}/Diaphragm.dll
+                   ${RW_WIN64_BINARY_DIR}/Building.dll)
 message(STATUS "Windows binaries: on (${RW_MINGW_GCC})")
 
 if(NOT RW_BUILD_TESTS)
@@ -80,6 +81,7 @@ rw_wine_test(win64_test_fmi2 test_fmi2.exe)
 rw_wine_test(win64_test_fmi2_bad_input test_fmi2_bad_input.exe)
 rw_wine_test(win64_test_cosim_without_cvode_rw test_cosim_without_cvode_rw.exe)
 rw_wine_test(win64_test_cosim_without_cvode_dg test_cosim_without_cvode_dg.exe)
+rw_wine_test(win64_test_cosim_without_cvode_bd test_cosim_without_cvode_bd.exe)
 rw_wine_test(win64_test_fmu_state_dg test_fmu_state_dg.exe)
 rw_wine_test(win64_test_engine test_engine.exe)
 rw_wine_test(win64_test_physics test_physics.exe ${CMAKE_BINARY_DIR}/tests/c/derive_equations.json)
@@ -88,7 +90,7 @@ set_tests_properties(win64_test_physics PROPERTIES FIXTURES_REQUIRED "wine_prefi
 # The packaged FMUs hold binaries/win64/NAME.dll that imports only Windows system DLLs and
 # exports exactly the functions the linux64 binary exports (the fmi2 API).
 find_program(RW_MINGW_OBJDUMP x86_64-w64-mingw32-objdump REQUIRED)
-foreach(_name RockingWall Diaphragm)
+foreach(_name RockingWall Diaphragm Building)
   add_test(NAME win64_binary_${_name}
     COMMAND ${CMAKE_COMMAND} -DFMU=${CMAKE_BINARY_DIR}/${_name}.fmu -DNAME=${_name}
             -DOBJDUMP=${RW_MINGW_OBJDUMP} -DNM=${CMAKE_NM} -DWORK=${RW_WIN64_BINARY_DIR}/check_${_name}

@@ -4,7 +4,8 @@
  *   reach the states the engine's own batch run (rw_engine_run) gives, whatever the step size;
  *   the parapet (support 1) is refused at its first step with fmi2Error and a logged reason;
  *  -DTEST_DIAPHRAGM: the Diaphragm's exact steps (closed form for inputs linear over a step), with
- *   ramped inputs, agree with a fine Runge-Kutta integration, damped, critically damped, undamped.
+ *   ramped inputs, agree with a fine Runge-Kutta integration, damped, critically damped, undamped;
+ *  -DTEST_BUILDING: the Building (hysteretic, no exact step) has its steps refused with a reason.
  * Built for Linux (ctest) and cross-compiled for Windows (run under wine). */
 #include <math.h>
 #include <stdio.h>
@@ -21,8 +22,11 @@
 #elif defined(TEST_DIAPHRAGM)
 #include "diaphragm_variables.h"
 #define GUID DG_GUID
+#elif defined(TEST_BUILDING)
+#include "building_variables.h"
+#define GUID BD_GUID
 #else
-#error "define TEST_ROCKINGWALL or TEST_DIAPHRAGM"
+#error "define TEST_ROCKINGWALL, TEST_DIAPHRAGM or TEST_BUILDING"
 #endif
 
 #define NOT_AVAILABLE "not available in this binary"
@@ -33,6 +37,21 @@ static fmi2Component cs_instance(void)
     if (c) fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0);
     return c;
 }
+
+#if defined(TEST_BUILDING)
+/* an initialized Co-Simulation instance whose first step is refused with fmi2Error and a reason */
+static void expect_refused_step(fmi2Component c, const char *reason)
+{
+    CHECK(c != NULL, "instantiate");
+    if (!c) return;
+    fmi2EnterInitializationMode(c);
+    CHECK(fmi2ExitInitializationMode(c) == fmi2OK, "fmi2ExitInitializationMode: %s", last_log);
+    CHECK(fmi2DoStep(c, 0.0, 0.01, fmi2True) == fmi2Error, "the step was not refused");
+    CHECK(last_status == fmi2Error && strstr(last_message, NOT_AVAILABLE) && strstr(last_message, reason),
+          "the logged reason: %s", last_log);
+    fmi2FreeInstance(c);
+}
+#endif
 
 #if defined(TEST_ROCKINGWALL)
 static const double Q0[RW_NX] = {0.01, -0.01, 0.0, 0.0}; /* free rocking from a tilt */
@@ -190,6 +209,8 @@ int main(void)
     test_exact_steps_match_the_engine(2);
     test_exact_steps_match_the_engine(3);
     test_parapet_refused();
+#elif defined(TEST_BUILDING)
+    expect_refused_step(cs_instance(), "no exact step");
 #else
     test_diaphragm_exact_steps(0.05, 1, 2.0);
     test_diaphragm_exact_steps(0.05, 200, 0.01);
