@@ -113,12 +113,20 @@ static void refresh_inputs(fmu_core *core)
 }
 
 /* the model's exact step over the inputs' slopes, or FMU_NOT_EXACT */
+/* The inputs of a step as exact_step takes them. A fixed bound, not a variable-length array: MSVC,
+ * which importers use to build FMUs from their sources, has none. */
+#define FMU_MAX_STEP_INPUTS 32
+
 static int exact_step(fmu_core *core, double h, const fmu_logger *log, double *t_reached, char *msg, size_t msg_n)
 {
-    unsigned vr[core->n_inputs + 1];
-    double slope[core->n_inputs + 1];
+    unsigned vr[FMU_MAX_STEP_INPUTS];
+    double slope[FMU_MAX_STEP_INPUTS];
     size_t k;
     if (!core->model.exact_step) return FMU_NOT_EXACT;
+    if (core->n_inputs > FMU_MAX_STEP_INPUTS) {
+        snprintf(msg, msg_n, "%zu inputs, more than the %d an exact step takes", core->n_inputs, FMU_MAX_STEP_INPUTS);
+        return -1;
+    }
     for (k = 0; k < core->n_inputs; k++) vr[k] = core->inputs[k].vr, slope[k] = core->inputs[k].slope;
     return core->model.exact_step(core->M, core->time, h, vr, slope, core->n_inputs, log, t_reached, msg, msg_n);
 }
@@ -129,7 +137,8 @@ int fmu_core_step(fmu_core *core, double h, const fmu_logger *log, char *msg, si
     size_t k;
     int rc;
     refresh_inputs(core);
-    rc = exact_step(core, h, log, &t_reached, msg, msg_n); /* RockingWall: cs_exact.c */
+    msg[0] = '\0'; /* the exact step may leave its reason for declining here (cs_none.c reports it) */
+    rc = exact_step(core, h, log, &t_reached, msg, msg_n); /* RockingWall, Diaphragm: closed-form steps */
     if (rc == FMU_NOT_EXACT) rc = cs_step(core->cs, core->time, h, core->inputs, core->n_inputs, log, &t_reached, msg, msg_n);
     for (k = 0; k < core->n_inputs; k++) core->inputs[k].slope = 0.0; /* derivatives hold for one step */
     if (rc < 0) return -1;

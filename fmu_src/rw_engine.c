@@ -1220,7 +1220,7 @@ static int check_run_arguments(const rw_params *p, const rw_record *rec, const r
 
 /* the input of the record on the segment starting at sample i (i = -1: before the first sample,
  * i = n - 1: after the last; both held) */
-static rw_linear_input record_segment(const rw_record *rec, long i)
+static rw_linear_input record_segment(const rw_record *rec, ptrdiff_t i)
 {
     rw_linear_input in;
     memset(&in, 0, sizeof in);
@@ -1242,8 +1242,9 @@ static rw_linear_input record_segment(const rw_record *rec, long i)
     return in;
 }
 
-/* the segment index whose interval [t_i, t_i+1) holds t (-1 before the first sample) */
-static long segment_of(const rw_record *rec, double t)
+/* the segment index whose interval [t_i, t_i+1) holds t (-1 before the first sample); ptrdiff_t, not
+ * long: long has 32 bits on Windows */
+static ptrdiff_t segment_of(const rw_record *rec, double t)
 {
     size_t lo = 0, hi = rec->n;
     if (t < rec->t[0]) return -1;
@@ -1252,7 +1253,7 @@ static long segment_of(const rw_record *rec, double t)
         if (rec->t[mid] <= t) lo = mid;
         else hi = mid;
     }
-    return (long)lo;
+    return (ptrdiff_t)lo;
 }
 
 static void result_init(rw_engine_result *res)
@@ -1274,7 +1275,7 @@ static void result_init(rw_engine_result *res)
 static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_mode *m, double x[RW_NX])
 {
     const rw_linear_input li = record_segment(rec, segment_of(rec, o->t_start));
-    const long seg = segment_of(rec, o->t_start);
+    const ptrdiff_t seg = segment_of(rec, o->t_start);
     rw_input in;
     in.ag = li.ag + li.ag_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
     in.u_top = li.u_top + li.u_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
@@ -1296,7 +1297,7 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     rw_engine *e;
     rw_mode m;
     double x[RW_NX], t;
-    long seg;
+    ptrdiff_t seg;
     int rc;
     if (!res) return RW_ENGINE_BAD_ARGUMENT;
     result_init(res);
@@ -1328,7 +1329,7 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     while (rc == 0 && t < o->t_end) {
         const rw_linear_input in = record_segment(rec, seg);
         const double t_in = seg >= 0 ? rec->t[seg] : t;
-        double t_next = (seg + 1 < (long)rec->n) ? rec->t[seg + 1] : o->t_end;
+        double t_next = (seg + 1 < (ptrdiff_t)rec->n) ? rec->t[seg + 1] : o->t_end;
         if (t_next > o->t_end) t_next = o->t_end;
         if (t_next > t) rc = advance(e, &m, x, &t, t_next, &in, t_in);
         seg++;

@@ -4,11 +4,18 @@
 #   2. the Python virtual environment .venv/ with the pinned requirements,
 #   3. the CMake build in build/ (the FMUs and fmi2sim).
 # Each step is skipped when already done, so running it again is cheap.
+# --with-windows also installs the mingw-w64 cross compiler and wine64, which build and test the
+# FMUs' win64 binaries (docs/windows.md; scripts/run_tests.sh passes it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
               libsundials-dev libxml2-dev libzip-dev valgrind zip unzip)
+case "${1:-}" in
+  --with-windows) APT_PACKAGES+=(mingw-w64 wine64) ;;
+  "") ;;
+  *) echo "usage: scripts/setup.sh [--with-windows]" >&2; exit 2 ;;
+esac
 
 as_root() {
   if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi

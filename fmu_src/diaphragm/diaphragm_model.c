@@ -4,7 +4,11 @@
  *     m (u'' + ag) = F_top - c u' - k u,     c = 2 zeta sqrt(k m)
  *
  * where F_top is the force of the wall's spring on the diaphragm (RockingWall.F_top). Energy
- * bookkeeping: d/dt (m u'^2/2 + k u^2/2) = P_ground + P_wall - P_damping. No events. */
+ * bookkeeping: d/dt (m u'^2/2 + k u^2/2) = P_ground + P_wall - P_damping. No events.
+ *
+ * A Co-Simulation step is exact (exact_step): over a step the inputs are linear in time (held, or
+ * ramped with the derivatives the master gave), and so is the forcing of this linear oscillator,
+ * whose response is then known in closed form. No CVODE is needed (the Windows binary has none). */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -29,6 +33,54 @@ static double damping(const dg_data *S) { return 2.0 * S->zeta * sqrt(S->k * S->
 static double acceleration(const dg_data *S)
 {
     return (S->F_top - damping(S) * S->x[1] - S->k * S->x[0]) / S->m - S->ag;
+}
+
+/* The free response of y'' + 2 sigma y' + w2 y = 0 after a time t, from (y, y'), with
+ * wd2 = w2 - sigma^2 >= 0 (the damping ratio is at most 1): e^(-sigma t) (p C + q S) with
+ * p = y(0), q = y'(0) + sigma p, C = cos(wd t), S = sin(wd t) / wd (C = 1, S = t when critically
+ * damped), and its derivative e^(-sigma t) ((q - sigma p) C - (sigma q + wd2 p) S). */
+static void free_response(double sigma, double wd2, double t, double *y, double *dy)
+{
+    const double e = exp(-sigma * t), p = *y, q = *dy + sigma * p;
+    double C = 1.0, S = t;
+    if (wd2 > 0) {
+        const double wd = sqrt(wd2);
+        C = cos(wd * t);
+        S = sin(wd * t) / wd;
+    }
+    *y = e * (p * C + q * S);
+    *dy = e * ((q - sigma * p) * C - (sigma * q + wd2 * p) * S);
+}
+
+static double slope_of(unsigned vr, const unsigned *slope_vr, const double *slope, size_t n_in)
+{
+    size_t i;
+    for (i = 0; i < n_in; i++)
+        if (slope_vr[i] == vr) return slope[i];
+    return 0.0;
+}
+
+/* u'' + 2 sigma u' + w2 u = g0 + g1 s over the step (s = time into it), g = F_top / m - ag: the
+ * particular solution A + B s plus the free response of what is left. Always exact: returns 0. */
+static int exact_step(void *M, double t, double h, const unsigned *slope_vr, const double *slope, size_t n_in,
+                      const fmu_logger *log, double *t_reached, char *msg, size_t n)
+{
+    dg_data *S = (dg_data *)M;
+    const double ag_slope = slope_of(DG_VR_ag, slope_vr, slope, n_in);
+    const double F_slope = slope_of(DG_VR_F_top, slope_vr, slope, n_in);
+    const double w2 = S->k / S->m, sigma = S->zeta * sqrt(w2);
+    const double g0 = S->F_top / S->m - S->ag, g1 = F_slope / S->m - ag_slope;
+    const double B = g1 / w2, A = (g0 - 2.0 * sigma * B) / w2;
+    double y = S->x[0] - A, dy = S->x[1] - B;
+    (void)log; (void)msg; (void)n;
+    free_response(sigma, w2 * (1.0 - S->zeta * S->zeta), h, &y, &dy);
+    S->x[0] = A + B * h + y;
+    S->x[1] = B + dy;
+    /* the inputs where the step ended, as the CVODE step leaves them */
+    S->ag += ag_slope * h;
+    S->F_top += F_slope * h;
+    *t_reached = t + h;
+    return 0;
 }
 
 static void reset(void *M)
@@ -133,4 +185,5 @@ const fmu_model FMU_MODEL = {
     .set_states = set_states,
     .derivatives = derivatives,
     .nominals = nominals,
+    .exact_step = exact_step,
 };

@@ -32,6 +32,7 @@ static void hostile_derivatives(void *M, double dx[])
 
 const fmu_model FMU_MODEL"""
 CALLBACKS = ".derivatives = derivatives,"
+EXACT_STEP = ".exact_step = exact_step,"  # left out: the hostile slave's steps go through CVODE
 
 
 def _build_flags(build_dir):
@@ -46,10 +47,11 @@ def _build_flags(build_dir):
 
 def _hostile_fmu(repo, build_dir, out_dir, crash):
     src = (repo / "fmu_src" / "diaphragm" / "diaphragm_model.c").read_text()
-    assert src.count(CALLBACKS) == 1 and src.count("const fmu_model FMU_MODEL") == 1, "Diaphragm source changed"
+    assert src.count(CALLBACKS) == 1 and src.count(EXACT_STEP) == 1 and src.count("const fmu_model FMU_MODEL") == 1, \
+        "Diaphragm source changed"
     c_file = out_dir / "hostile.c"
     c_file.write_text(src.replace("const fmu_model FMU_MODEL", HOOK, 1)
-                      .replace(CALLBACKS, ".derivatives = hostile_derivatives,"))
+                      .replace(CALLBACKS, ".derivatives = hostile_derivatives,").replace(EXACT_STEP, ""))
     includes, libs = _build_flags(build_dir)
     so = out_dir / ("crash.so" if crash else "fail.so")
     fmu_src = repo / "fmu_src"
