@@ -1,8 +1,9 @@
 """Speed against accuracy: a work-precision diagram of every way this project can run the wall.
 
 Contenders, all on the same scenes and the same sampled input:
-  fmi2sim (CVODE BDF and Adams, rtol 1e-3 .. 1e-10), fmpy driving the same FMU (CVode at several
-  rtol, forward Euler at several steps), and the Python reference solver (RK45, DOP853, Radau).
+  the exact event-driven engine (in-process, no tolerance: one point), fmi2sim (CVODE BDF and Adams,
+  ARKODE ERK, rtol 1e-3 .. 1e-10), fmpy driving the same FMU (CVode at several rtol, forward Euler
+  at several steps), and the Python reference solver (RK45, DOP853, Radau).
 Error of a run = max(relative error of peak s1, of peak s2, RMS error of s1(t) / peak s1), all on the
 common 0.01 s output grid, against a converged run (fmi2sim BDF at rtol 1e-12).
 Cost = CPU time of the process doing the work (child rusage for fmi2sim, process_time in Python).
@@ -30,7 +31,9 @@ import numpy as np
 from tqdm import tqdm
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
-from rockingwall import fmu as rw_fmu
+from rockingwall import engine as rw_engine  # noqa: E402
+from rockingwall import fmi2sim  # noqa: E402
+from rockingwall import fmu as rw_fmu  # noqa: E402
 from rwref import Params, simulate, inputs  # noqa: E402
 from fmpy import extract  # noqa: E402
 
@@ -65,11 +68,9 @@ class Fmi2sim:
             np.savetxt(inp, np.column_stack([signal.t, signal.a]), delimiter=",", header="time,ag", comments="")
             self._signal = signal
         out = self.workdir / "out.csv"
-        cmd = [str(FMI2SIM), str(self.fmu_dir), "--input", str(inp), "--output", str(out),
-               "--solver", solver, "--rtol", f"{rtol:g}", "--stop-time", f"{t_end or signal.t[-1]:g}",
-               "--output-interval", f"{DT_OUT:g}"]
-        for name, value in rw_fmu.start_values(**params).items():
-            cmd += ["--set", f"{name}={value:g}" if isinstance(value, float) else f"{name}={value}"]
+        cmd = fmi2sim.command(self.fmu_dir, input_csv=inp, output=out, solver=solver, rtol=float(rtol),
+                              stop_time=float(t_end or signal.t[-1]), output_interval=DT_OUT,
+                              sets=rw_fmu.start_values(**params).items(), executable=FMI2SIM)
         before = resource.getrusage(resource.RUSAGE_CHILDREN)
         proc = subprocess.run(cmd, capture_output=True, text=True)
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -86,6 +87,14 @@ def fmpy_run(fmu_dir, signal, params, solver, rtol=None, step=None):
                           output_interval=DT_OUT if step is None else max(step, DT_OUT),
                           solver=solver, step_size=step, **params)
     return run.t, run.s1, run.s2, time.process_time() - start
+
+
+def engine_run(signal, params):
+    """The exact engine in this process, on the output grid."""
+    start = time.process_time()
+    grid = np.arange(0.0, signal.t[-1] + DT_OUT / 2, DT_OUT)
+    r = rw_engine.run(signal.t, signal.a, t_end=float(signal.t[-1]), t_out=grid, **rw_fmu.start_values(**params))
+    return grid, r.s1, r.s2, time.process_time() - start
 
 
 def reference_run(signal, params, method, rtol):
@@ -230,8 +239,8 @@ def main():
         return
     rtols_sim = [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-10] if not args.quick else [1e-4, 1e-6, 1e-8]
     rtols_py = [1e-4, 1e-6, 1e-8] if not args.quick else [1e-4, 1e-6]
-    contenders = []
-    for solver in ("bdf", "adams"):
+    contenders = [("exact engine", 0.0, engine_run)]
+    for solver in ("bdf", "adams", "erk"):
         for rtol in rtols_sim:
             contenders.append((f"fmi2sim {solver.upper()}", rtol,
                                lambda s, p, solver=solver, rtol=rtol: sim.run(s, p, solver, rtol)))
