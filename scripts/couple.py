@@ -201,7 +201,7 @@ def tie_step_limit(real, dia):
     """The largest macro step the tie K_d allows for these wall start values and diaphragm
     parameters (coupling_rules.max_macro_step)."""
     m_w = coupling_rules.wall_top_mass(real["W"], real.get("psi", 0.0), real["h"], real.get("g", 9.81))
-    return coupling_rules.max_macro_step(m_w, dia["m"], real["Kd"], dia["k"], dia.get("zeta", 0.0))
+    return coupling_rules.max_macro_step(m_w, dia["m"], real["Kd"], dia["k"])
 
 
 def choose_macro_step(requested, limit, t_end):
@@ -480,7 +480,8 @@ def parse_args(argv):
                     help=f"exit with status {EXIT_FLAGGED} when the run is flagged (energy residual too large, "
                          f"or a macro step above the tie's limit)")
     ap.add_argument("--monolithic", action="store_true",
-                    help="both FMUs as Model Exchange under one CVODE (fmpy.sundials): no macro step")
+                    help="both FMUs as Model Exchange under one CVODE (fmpy.sundials): no macro step "
+                         f"(--macro-step is then the output interval, default {MACRO_STEP_DEFAULT_MAX:g} s)")
     ap.add_argument("--summary", default=None,
                     help="the summary JSON (default: --out with the suffix .json)")
     ap.add_argument("--t-end", type=float, default=30.0, help=f"[s], in [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}]")
@@ -566,10 +567,13 @@ def resolve_macro_step(a):
     requested step exceeds the limit."""
     wall_real, _ = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
     limit = tie_step_limit(wall_real, {"m": a.m, "k": a.k, "zeta": a.zeta})
+    if a.monolithic:  # no macro step: --macro-step is only the output interval there
+        a.macro_step = a.macro_step or min(MACRO_STEP_DEFAULT_MAX, a.t_end)
+        return limit, None
     a.macro_step, warning = choose_macro_step(a.macro_step, limit, a.t_end)
-    if warning and not a.monolithic:
+    if warning:
         print(f"couple.py: warning: {warning}", file=sys.stderr)
-    return limit, (None if a.monolithic else warning)
+    return limit, warning
 
 
 def main(argv=None):
