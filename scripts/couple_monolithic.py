@@ -15,6 +15,7 @@ run_monolithic() returns couple.CoupledResult on the output grid (plus each even
 the same columns as the Co-Simulation masters, so couple.py's energy check and summary apply.
 """
 import ctypes
+import math
 import os
 import tempfile
 
@@ -105,14 +106,32 @@ class _NoInput:
 
 
 def _event_iteration(model):
-    """The FMU's event iteration; True when it asks to end the run (the wall's collapse)."""
+    """The FMU's event iteration: (terminate, next time event or inf)."""
     fmu = model.fmu
     while True:
-        new_states_needed, terminate, _, _, _, _ = fmu.newDiscreteStates()
+        new_states_needed, terminate, _, _, next_defined, next_time = fmu.newDiscreteStates()
         if terminate:
-            return True
+            return True, math.inf
         if not new_states_needed:
-            return False
+            return False, (next_time if next_defined else math.inf)
+
+
+def _wall_collapsed(system):
+    """RockingWall's `collapsed` output: set at the event where the wall passes its instability
+    point (its terminateSimulation follows a moment later, as a time event)."""
+    return bool(system.wall.fmu.getBoolean([system.wall.vr["collapsed"]])[0])
+
+
+def _events(system, t):
+    """Event mode for both FMUs at t: (terminate, next time event)."""
+    terminate, next_time = False, math.inf
+    for m in (system.wall, system.dia):
+        m.fmu.enterEventMode()
+        system.connect(t)
+        stop, t_ev = _event_iteration(m)
+        terminate, next_time = terminate or stop, min(next_time, t_ev)
+        m.fmu.enterContinuousTimeMode()
+    return terminate or _wall_collapsed(system), next_time
 
 
 def _initialise(model, start, rtol):
@@ -154,11 +173,16 @@ def run_monolithic(wall_fmu, dia_fmu, t_in, ag_in, t_end, wall=None, dia=None, r
 
 
 def _integrate(system, t_end, rtol, output_interval):
+    """CVODE over the coupled states from 0 to t_end, stopping at state, step and time events;
+    the run ends at the wall's collapse (collapsed_at, as the Co-Simulation masters report it)."""
     from fmpy.sundials import CVodeSolver
+    next_time = math.inf
+    system.connect(0.0)
     for m in (system.wall, system.dia):
-        system.connect(0.0)
-        if _event_iteration(m):
+        stop, t_ev = _event_iteration(m)
+        if stop:
             raise couple.CouplingError(f"{m.fmu.instanceName}: terminated at initialisation")
+        next_time = min(next_time, t_ev)
         m.fmu.enterContinuousTimeMode()
     system.connect(0.0)
     solver = CVodeSolver(nx=system.nx, nz=system.nz, get_x=system.get_x, set_x=system.set_x,
@@ -170,7 +194,8 @@ def _integrate(system, t_end, rtol, output_interval):
     _record(system, times, wall_rows, dia_rows, 0.0)
     t, k, collapsed_at = 0.0, 1, None
     while k <= n_out:
-        t_next = min(k * output_interval, t_end)
+        t_out = min(k * output_interval, t_end)
+        t_next = min(t_out, next_time)
         try:
             state_event, _, t = solver.step(t, t_next)
         except RuntimeError as exc:
@@ -178,31 +203,23 @@ def _integrate(system, t_end, rtol, output_interval):
                                        f"{system.wall.fmu.log.last('wall')}") from None
         system.set_time(t)
         system.set_x(solver.px, system.nx)  # the states CVODE reached (step() also sets them)
-        step_event, step_terminate = False, False
+        time_event = t >= next_time - 1e-12 * max(1.0, t_end)
+        step_event, terminate = False, False
         for m in (system.wall, system.dia):
             m.fmu.setTime(t)
             ev, term = m.fmu.completedIntegratorStep()
-            step_event, step_terminate = step_event or ev, step_terminate or term
-        if step_terminate:
-            collapsed_at = t
-            _record(system, times, wall_rows, dia_rows, t)
-            break
-        if state_event or step_event:
+            step_event, terminate = step_event or ev, terminate or term
+        if state_event or step_event or time_event or terminate:
             _record(system, times, wall_rows, dia_rows, t)  # just before the event
-            terminate = False
-            for m in (system.wall, system.dia):
-                m.fmu.enterEventMode()
-                system.connect(t)
-                terminate = _event_iteration(m) or terminate
-                m.fmu.enterContinuousTimeMode()
+            if not terminate:
+                terminate, next_time = _events(system, t)
+            _record(system, times, wall_rows, dia_rows, t)  # just after
             if terminate:
                 collapsed_at = t
-                _record(system, times, wall_rows, dia_rows, t)
                 break
             solver.reset(t)
-            _record(system, times, wall_rows, dia_rows, t)  # just after
-        if t >= t_next - 1e-12 * max(1.0, t_end):
-            if not (state_event and times[-1] == t):
+        if t >= t_out - 1e-12 * max(1.0, t_end):
+            if times[-1] != t:
                 _record(system, times, wall_rows, dia_rows, t)
             k += 1
     r = couple._assemble(times, wall_rows, dia_rows)
