@@ -571,13 +571,12 @@ def resolve_macro_step(a):
         a.macro_step = a.macro_step or min(MACRO_STEP_DEFAULT_MAX, a.t_end)
         return limit, None
     a.macro_step, warning = choose_macro_step(a.macro_step, limit, a.t_end)
-    if warning:
-        print(f"couple.py: warning: {warning}", file=sys.stderr)
-    return limit, warning
+    return limit, warning  # printed after the run: a failure's own error comes first
 
 
 def main(argv=None):
     a = parse_args(argv)
+    step_warning = None
     try:
         if a.json:  # the child: one master here, its arrays to the parent
             check_options(a.t_end, a.macro_step, a.rtol)
@@ -596,7 +595,11 @@ def main(argv=None):
         results = {m: run_child(m, a) for m in masters}
     except (ValueError, OSError, CouplingError) as exc:
         print(f"couple.py: error: {exc}", file=sys.stderr)
+        if step_warning:
+            print(f"couple.py: warning: {step_warning}", file=sys.stderr)
         return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
+    if step_warning:
+        print(f"couple.py: warning: {step_warning}", file=sys.stderr)
     r = results[masters[0]]
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     save_csv(r, a.out)
