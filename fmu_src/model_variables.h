@@ -27,7 +27,7 @@ X(s2,         31, "s2",          Real,    "output",    "continuous", "calculated
 X(F_top,      32, "F_top",       Real,    "output",    "continuous", "calculated", 0,      "N/m",    0,    0,  "Force of the top spring on the diaphragm, Kd*(s2 - u_top) (flexibleTop only)") \
 X(energy,     33, "energy",      Real,    "output",    "continuous", "calculated", 0,      "J/m",    0,    0,  "Mechanical energy of the wall (kinetic + spring + gravity + hinges)") \
 X(collapsed,  34, "collapsed",   Boolean, "output",    "discrete",   "calculated", 0,      "",       0,    0,  "True once the wall has passed its instability point") \
-X(impacts,    35, "impacts",     Integer, "output",    "discrete",   "calculated", 0,      "",       0,    0,  "Number of base impacts") \
+X(impacts,    35, "impacts",     Integer, "output",    "discrete",   "calculated", 0,      "",       0,    0,  "Number of base impacts: base crossings after an uplift (rigid hinges: every crossing; semi-rigid laws: only when the base passed its elastic range since the last crossing, docs/model.md)") \
 X(condition,  36, "condition",   Integer, "output",    "discrete",   "calculated", 0,      "",       0,    0,  "Paper condition 1-4 from the hinge sides; 0 while a rigid hinge is closed") \
 X(P_ground,   37, "P_ground",   Real,    "output",    "continuous", "calculated", 0,      "W/m",    0,    0,  "Power of the ground motion on the wall (energy bookkeeping: d(energy)/dt = P_ground - F_top*der(u_top) between impacts)") \
 X(dissipated, 38, "dissipated", Real,    "output",    "discrete",   "calculated", 0,      "J/m",    0,    0,  "Energy lost so far in impacts and hinge closings (sum of the drops of energy at events)") \

@@ -119,6 +119,27 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw
     return opened;
 }
 
+/* Semi-rigid laws: has the base passed the end of its elastic range, the law's first base
+ * breakpoint (semiRigidHinge, semiRigidPaper: |q1| = theta_y; dohertyHinge and the simply supported
+ * wall: the base displacement Delta_1)? The breakpoint is an event indicator, so the event at that
+ * crossing sees |q1| at the breakpoint to rounding: a relative margin of 1e-6 accepts it. */
+static int base_past_elastic(const rw_params *p, const rw_derived *d, const double x[RW_NX])
+{
+    double z[RW_NBREAK];
+    const double margin = 1e-6 * 2.0 * d->D1 / p->h;
+    if (p->support == RW_SIMPLY_SUPPORTED) return fabs(x[0]) - 2.0 * d->D1 / p->h >= -margin;
+    rw_hinge_law_of(p->hingeLaw)->breakpoints(d, x, z);
+    return z[0] >= -margin;
+}
+
+/* Counting of base impacts: with rigid hinges every base crossing is one (the wall only moves
+ * once uplifted); with a semi-rigid law the base oscillates elastically through q1 = 0 before any
+ * uplift, so a crossing counts only when the base was past its elastic range since the last one. */
+static void note_uplift(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
+{
+    if (!rw_is_rigid(p) && base_past_elastic(p, d, x)) m->uplifted_b = 1;
+}
+
 void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
                    rw_mode *m, rw_log_fn log, void *ctx)
 {
@@ -127,6 +148,8 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
     slave(p, x);
     m->closed_b = m->closed_m = 0;
     m->side_b = m->side_m = 1;
+    m->uplifted_b = 0;
+    note_uplift(p, d, m, x);
     /* base hinge: rotation q1 */
     if (x[0] != 0.0) m->side_b = sgni(x[0]);
     else if (x[2] != 0.0) m->side_b = sgni(x[2]);
@@ -158,8 +181,10 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
 {
     const int rigid = rw_is_rigid(p);
     r->impacts = r->states_changed = r->modes_changed = 0;
+    note_uplift(p, d, m, x);
 
-    /* base: q1 crossing 0 = impact (paper Sec. 4): rates times er, pivot changes side */
+    /* base: q1 crossing 0 = impact (paper Sec. 4): rates times er, pivot changes side; counted
+     * when the wall had uplifted (note_uplift) */
     if (!(rigid && m->closed_b)) {
         if (crossed(m->side_b, x[0], x[2], d)) {
             const int eff = -m->side_b;
@@ -168,7 +193,8 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
             x[3] *= p->er;
             slave(p, x);
             m->side_b = eff;
-            r->impacts++;
+            if (rigid || m->uplifted_b) r->impacts++;
+            m->uplifted_b = 0;
             r->modes_changed = 1;
             if (x[2] != v1 || x[3] != v2) r->states_changed = 1;
             logf_(log, ctx, "base impact: q1 = %g, dq1 %g -> %g, pivot side %+d", x[0], v1, x[2], eff);

@@ -86,6 +86,9 @@ typedef struct {
     int side_b, side_m;     /* active side of each hinge, +1 / -1 */
     double zoff_b, zoff_m;  /* offsets of the open-hinge event indicators side*rotation + zoff, set at
                                each event so that the indicator is >= eps_q > 0 when integration restarts */
+    int uplifted_b;         /* semi-rigid laws: the base has passed the end of its elastic range (the
+                               law's first base breakpoint) since the last base crossing, so the next
+                               crossing is a base impact that is counted (docs/model.md "Impacts") */
 } rw_mode;
 
 typedef struct {

@@ -36,7 +36,9 @@ static const char *usage =
     "  --max-step H             largest CVODE step, >= (stop - start) x 1e-8 (default none)\n"
     "  --start-time T           in [-1e9, 1e9] s; default: DefaultExperiment startTime, else 0\n"
     "  --stop-time T            in [-1e9, 1e9] s, stop - start >= 1e-6 x max(1, |start|, |stop|);\n"
-    "                           default: DefaultExperiment stopTime, else 1\n"
+    "                           default with --input/--ag: the time of the inputs' last sample\n"
+    "                           (the whole record, no tail; a note says when --stop-time ends the\n"
+    "                           run before it); without inputs: DefaultExperiment stopTime, else 1\n"
     "  --output-interval H      regular output grid in [(stop - start) x 1e-7, stop - start]\n"
     "                           (default (stop - start)/500)\n"
     "  --set NAME=VALUE         start value by variable name (repeatable; type-checked)\n"
@@ -240,6 +242,31 @@ static int reopen_closed_std_streams(void)
     return closed;
 }
 
+/* The time of the last sample of any input table: where the record given ends. */
+static double inputs_end_time(const input_table *tabs, size_t ntab)
+{
+    double end = -INFINITY;
+    for (size_t i = 0; i < ntab; i++)
+        if (tabs[i].n > 0 && tabs[i].t[tabs[i].n - 1] > end) end = tabs[i].t[tabs[i].n - 1];
+    return end;
+}
+
+/* The stop time: --stop-time if given; else the end of the inputs, so that a record is run to its
+ * end rather than cut at the FMU's DefaultExperiment (RockingWall's 10 s of a 40-s record); else
+ * DefaultExperiment stopTime, else 1. A given stop time before the inputs' end gets a note. */
+static double choose_stop_time(double requested, const model_description *md, const input_table *tabs, size_t ntab)
+{
+    const double inputs_end = inputs_end_time(tabs, ntab);
+    if (!isnan(requested)) {
+        if (ntab > 0 && requested < inputs_end)
+            fprintf(stderr, "fmi2sim: note: the run stops at t = %.10g s (--stop-time), before the inputs end at "
+                            "t = %.10g s\n", requested, inputs_end);
+        return requested;
+    }
+    if (ntab > 0) return inputs_end;
+    return md->has_stop_time ? md->stop_time : 1.0;
+}
+
 int main(int argc, char **argv)
 {
     const char *fmu_path = NULL, *csv_path = NULL, *at2_path = NULL, *out_path = NULL;
@@ -341,7 +368,7 @@ int main(int argc, char **argv)
     status = 2;
 
     opt.start_time = !isnan(start) ? start : (md.has_start_time ? md.start_time : 0.0);
-    opt.stop_time = !isnan(stop) ? stop : (md.has_stop_time ? md.stop_time : 1.0);
+    opt.stop_time = choose_stop_time(stop, &md, tabs, ntab);
     if (!(opt.stop_time > opt.start_time)) { die("stop time %g is not after start time %g", opt.stop_time, opt.start_time); goto out; }
     if (check_times(&opt, opt.max_step, interval) != 0) goto out;
     opt.output_interval = !isnan(interval) ? interval : (opt.stop_time - opt.start_time) / 500.0;

@@ -19,8 +19,16 @@ temporary folder removed afterwards. The ground motion is held over each step in
     rockingwall couple                                  # wall 1, El Centro x 0.5, fmpy master
     rockingwall couple --master both                    # fmpy and libcosim, and their difference
     rockingwall couple --macro-step 0.005 --t-end 20 --Kd 1e5 --m 2000 --k 7e5 --zeta 0.05
+    rockingwall couple --monolithic                     # both FMUs as Model Exchange under one CVODE
 
-Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms) and results/couple.png.
+The macro step defaults to the largest one the tie K_d allows (coupling_rules.max_macro_step:
+H <= c sqrt(m_r/K_d), docs/coupling.md), at most 1 ms; a larger --macro-step (--step) is run with a
+warning. A run whose energy residual exceeds --energy-share of the peak ground work (1 %) is
+flagged: a warning on stderr, "energy_ok": false in the summary JSON, and exit status 3 with
+--strict. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
+
+Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms), results/couple.png and
+results/couple.json (the summary: peaks, step, step limit, energy residual share and flags).
 """
 import argparse
 import json
@@ -37,12 +45,16 @@ import numpy as np
 from . import _paths, records
 from .names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
 
+from . import coupling_rules
+
 WALL_OUT = ["s1", "s2", "F_top", "energy", "P_ground", "dissipated"]
 DIA_OUT = ["u", "v", "energy", "P_ground", "P_damping"]
 
 
 # Meaningful ranges of the master's own options (low, high); the macro step is also at most t_end.
 T_END_RANGE = (1e-3, 1e5)     # s
+MACRO_STEP_DEFAULT_MAX = 1e-3  # s: the default step is the tie's limit, at most this (accuracy)
+EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 MACRO_STEP_MIN = 1e-6         # s: 30 s at 1 us is 3e7 exchanges, already hours
 RTOL_RANGE = (1e-12, 1e-2)
 
@@ -158,10 +170,47 @@ def _close_slaves(slaves):
             pass
 
 
-def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86):
-    """Real and Integer start values of RockingWall for one of the paper's walls."""
+def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86, overrides=None):
+    """Real and Integer start values of RockingWall for one of the paper's walls, with the
+    parameters in `overrides` ({name: value}, e.g. from --set b=0.23) replacing the wall's."""
     real = dict(paper_wall(wall), Kd=Kd, er=er)
+    real.update(overrides or {})
     return real, {"support": MODELS["flexibleTop"], "hingeLaw": LAWS[hinge_law]}
+
+
+def parse_settings(items):
+    """{name: float} from --set NAME=VALUE items; ValueError naming a malformed one."""
+    out = {}
+    for item in items or []:
+        name, sep, value = item.partition("=")
+        try:
+            if not sep or not name.strip():
+                raise ValueError
+            out[name.strip()] = float(value)
+        except ValueError:
+            raise ValueError(f"--set {item!r}: expected NAME=NUMBER (a Real parameter of RockingWall)") from None
+    return out
+
+
+def tie_step_limit(real, dia):
+    """The largest macro step the tie K_d allows for these wall start values and diaphragm
+    parameters (coupling_rules.max_macro_step)."""
+    m_w = coupling_rules.wall_top_mass(real["W"], real.get("psi", 0.0), real["h"], real.get("g", 9.81))
+    return coupling_rules.max_macro_step(m_w, dia["m"], real["Kd"], dia["k"])
+
+
+def choose_macro_step(requested, limit, t_end):
+    """(H, warning or None): the requested step, with a warning when it exceeds the tie's limit;
+    without a request, the limit (at most MACRO_STEP_DEFAULT_MAX) rounded down to divide t_end."""
+    if requested is not None:
+        if requested > limit * (1 + 1e-9):
+            return requested, (f"--macro-step {requested:g} s exceeds the step the tie allows, {limit:.3g} s "
+                               f"(K_d against the wall's and the diaphragm's masses, docs/coupling.md): the "
+                               f"coupling may pump energy into the tie and the result may be wrong; use "
+                               f"--macro-step {limit:.3g} or smaller, or --monolithic")
+        return requested, None
+    H = min(limit, MACRO_STEP_DEFAULT_MAX, t_end)
+    return t_end / math.ceil(t_end / H - 1e-9), None
 
 
 def ground_motion(record="elcentro", scale=0.5):
@@ -413,11 +462,27 @@ def parse_args(argv):
     ap.add_argument("--m", type=float, default=2000.0, help="diaphragm mass, kg per m of wall")
     ap.add_argument("--k", type=float, default=7e5, help="diaphragm stiffness, N/m per m of wall")
     ap.add_argument("--zeta", type=float, default=0.05)
-    ap.add_argument("--macro-step", type=float, default=1e-3,
-                    help=f"communication step H [s], in [{MACRO_STEP_MIN:g}, t_end]")
+    ap.add_argument("--macro-step", "--step", dest="macro_step", type=float, default=None,
+                    help=f"communication step H [s], in [{MACRO_STEP_MIN:g}, t_end]; default: the largest "
+                         f"step the tie K_d allows (docs/coupling.md), at most {MACRO_STEP_DEFAULT_MAX:g} s; "
+                         f"a larger one runs with a warning")
+    ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                    help="a Real parameter of RockingWall (b, h, W, psi, er, ...) replacing the --wall's; repeatable")
+    ap.add_argument("--energy-share", type=float, default=coupling_rules.ENERGY_SHARE_MAX,
+                    help="flag the run when max |energy residual| exceeds this share of max |ground work| "
+                         f"(default {coupling_rules.ENERGY_SHARE_MAX:g})")
+    ap.add_argument("--strict", action="store_true",
+                    help=f"exit with status {EXIT_FLAGGED} when the run is flagged (energy residual too large, "
+                         f"or a macro step above the tie's limit)")
+    ap.add_argument("--monolithic", action="store_true",
+                    help="both FMUs as Model Exchange under one CVODE (fmpy.sundials): no macro step "
+                         f"(--macro-step is then the output interval, default {MACRO_STEP_DEFAULT_MAX:g} s)")
+    ap.add_argument("--summary", default=None,
+                    help="the summary JSON (default: --out with the suffix .json)")
     ap.add_argument("--t-end", type=float, default=30.0, help=f"[s], in [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}]")
     ap.add_argument("--rtol", type=float, default=1e-6, help=f"the slaves' tolerance, in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]")
-    ap.add_argument("--master", choices=["fmpy", "libcosim", "both"], default="fmpy")
+    ap.add_argument("--master", choices=["fmpy", "libcosim", "both", "monolithic"], default="fmpy",
+                    help="fmpy or libcosim (Co-Simulation), both; monolithic is what --monolithic runs")
     ap.add_argument("--out", default="results/couple.csv")
     ap.add_argument("--plot", default="results/couple.png")
     ap.add_argument("--json", help="run one master in this process and write its result arrays as JSON "
@@ -431,20 +496,33 @@ def parse_args(argv):
 def run_here(a):
     """One master in this process (the child's side of run_master_subprocess)."""
     t_in, ag_in = ground_motion(a.record, a.scale)
-    wall = wall_start_values(a.wall, a.Kd, a.hinge_law)
+    wall = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
     dia = {"m": a.m, "k": a.k, "zeta": a.zeta}
+    if a.master == "monolithic":
+        from . import couple_monolithic
+        return couple_monolithic.run_monolithic(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, wall, dia,
+                                                rtol=a.rtol, output_interval=a.macro_step)
     if a.master == "libcosim":
         return run_libcosim(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia)
     return run_fmpy(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, a.macro_step, wall, dia, a.rtol)
 
 
+def _passthrough(a):
+    """The parent's options as command-line arguments for a child."""
+    out = []
+    for k, v in vars(a).items():
+        if k in ("master", "json", "out", "plot", "summary", "strict", "monolithic") or v is None:
+            continue
+        for item in (v if isinstance(v, list) else [v]):
+            out.append(f"--{k.replace('_', '-')}={item}")
+    return out
+
+
 def run_child(master, a):
     """A master's result, run in a child process; CouplingError with the child's real error."""
-    passthrough = [f"--{k.replace('_', '-')}={v}" for k, v in vars(a).items()
-                   if k not in ("master", "json", "out", "plot")]
     with tempfile.TemporaryDirectory(prefix="couple_result_") as tmp:
         out_json = pathlib.Path(tmp) / f"{master}.json"
-        proc = run_master_subprocess(master, passthrough, out_json)
+        proc = run_master_subprocess(master, _passthrough(a), out_json)
         if proc.returncode != 0 or not out_json.exists():
             raise CouplingError(child_failure(master, proc, (a.wall_fmu, a.diaphragm_fmu)))
         data = json.loads(out_json.read_text())
@@ -456,40 +534,95 @@ def run_child(master, a):
 def report(master, r, a):
     end = (f", wall collapsed at t = {r['collapsed_at']:.3f} s" if r.get("collapsed_at") is not None
            else f", to t = {r['time'][-1]:g} s")
-    print(f"{master} master, H = {a.macro_step:g} s: peak s1 {np.abs(r['wall_s1']).max():.5f} m, "
+    step = "no macro step (one CVODE)" if master == "monolithic" else f"H = {a.macro_step:g} s"
+    print(f"{master} master, {step}: peak s1 {np.abs(r['wall_s1']).max():.5f} m, "
           f"s2 {np.abs(r['wall_s2']).max():.5f} m, diaphragm u {np.abs(r['dia_u']).max():.5f} m{end}")
+
+
+def summary(r, a, master, step_limit, step_warning):
+    """The run's summary: peaks, the step and its limit, the energy residual's share and the flags
+    (energy_ok, step_ok, flagged)."""
+    share, energy_ok = coupling_rules.energy_check(r.energy_residual(), r.ground_work(), a.energy_share)
+    return {
+        "master": master,
+        "macro_step": None if master == "monolithic" else a.macro_step,
+        "macro_step_limit": step_limit,
+        "step_ok": step_warning is None,
+        "peak_s1": float(np.abs(r["wall_s1"]).max()), "peak_s2": float(np.abs(r["wall_s2"]).max()),
+        "peak_u": float(np.abs(r["dia_u"]).max()), "peak_F_top": float(np.abs(r["wall_F_top"]).max()),
+        "collapsed_at": r.get("collapsed_at"),
+        "energy_residual_max": float(np.abs(r.energy_residual()).max()),
+        "ground_work_max": float(np.abs(r.ground_work()).max()),
+        "energy_residual_share": share if math.isfinite(share) else None,
+        "energy_share_max": a.energy_share,
+        "energy_ok": energy_ok,
+        "flagged": not (energy_ok and step_warning is None),
+    }
+
+
+def resolve_macro_step(a):
+    """(limit, warning): sets a.macro_step (the tie's limit by default), warns on stderr when a
+    requested step exceeds the limit."""
+    wall_real, _ = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
+    limit = tie_step_limit(wall_real, {"m": a.m, "k": a.k, "zeta": a.zeta})
+    if a.monolithic:  # no macro step: --macro-step is only the output interval there
+        a.macro_step = a.macro_step or min(MACRO_STEP_DEFAULT_MAX, a.t_end)
+        return limit, None
+    a.macro_step, warning = choose_macro_step(a.macro_step, limit, a.t_end)
+    return limit, warning  # printed after the run: a failure's own error comes first
 
 
 def main(argv=None):
     a = parse_args(argv)
+    step_warning = None
     try:
-        check_options(a.t_end, a.macro_step, a.rtol)
         if a.json:  # the child: one master here, its arrays to the parent
+            check_options(a.t_end, a.macro_step, a.rtol)
             r = run_here(a)
             pathlib.Path(a.json).write_text(json.dumps({k: (np.asarray(v).tolist() if v is not None else None)
                                                         for k, v in r.items()}))
             return 0
-        masters = ["fmpy", "libcosim"] if a.master == "both" else [a.master]
+        if not (math.isfinite(a.energy_share) and a.energy_share > 0):
+            raise ValueError(f"--energy-share {a.energy_share!r} must be a positive number")
+        if a.monolithic and a.master != "fmpy":
+            raise ValueError("--monolithic runs one CVODE over both FMUs: it takes no --master")
+        check_options(a.t_end, a.macro_step if a.macro_step is not None else min(a.t_end, 1e-3), a.rtol)
+        limit, step_warning = resolve_macro_step(a)
+        check_options(a.t_end, a.macro_step, a.rtol)
+        masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
         results = {m: run_child(m, a) for m in masters}
     except (ValueError, OSError, CouplingError) as exc:
         print(f"couple.py: error: {exc}", file=sys.stderr)
+        if step_warning:
+            print(f"couple.py: warning: {step_warning}", file=sys.stderr)
         return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
+    if step_warning:
+        print(f"couple.py: warning: {step_warning}", file=sys.stderr)
     r = results[masters[0]]
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     save_csv(r, a.out)
     title = (f"Wall {a.wall} + diaphragm (m = {a.m:g} kg/m, k = {a.k:g} N/m2, zeta = {a.zeta:g}), "
-             f"K_d = {a.Kd:g} N/m2, H = {a.macro_step:g} s")
+             f"K_d = {a.Kd:g} N/m2, " + ("monolithic" if a.monolithic else f"H = {a.macro_step:g} s"))
     plot(r, a.plot, title, results.get("libcosim") if len(masters) == 2 else None)
     for m in masters:
         report(m, results[m], a)
-    print(f"energy: max |residual| {np.abs(r.energy_residual()).max():.4g} J/m against "
-          f"max |ground work| {np.abs(r.ground_work()).max():.4g} J/m")
+    info = summary(r, a, masters[0], limit, step_warning)
+    summary_path = pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
+    summary_path.write_text(json.dumps(info, indent=1) + "\n")
+    print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
+          f"max |ground work| {info['ground_work_max']:.4g} J/m")
+    if not info["energy_ok"]:
+        share = info["energy_residual_share"]
+        print(f"couple.py: warning: ENERGY CHECK FAILED: the energy residual is "
+              f"{'unbounded' if share is None else f'{100 * share:.3g} %'} of the ground work, above "
+              f"{100 * a.energy_share:g} %: the coupled result is not to be trusted (a smaller --macro-step, "
+              f"or --monolithic)", file=sys.stderr)
     if len(masters) == 2:
         other = results["libcosim"]
         n = min(len(r["time"]), len(other["time"]))
         print(f"max |s1 fmpy - s1 libcosim| = {np.abs(r['wall_s1'][:n] - other['wall_s1'][:n]).max():.3g} m")
-    print(f"wrote {a.out} and {a.plot}")
-    return 0
+    print(f"wrote {a.out}, {a.plot} and {summary_path}" + ("  [FLAGGED: see the warnings]" if info["flagged"] else ""))
+    return EXIT_FLAGGED if (a.strict and info["flagged"]) else 0
 
 
 if __name__ == "__main__":

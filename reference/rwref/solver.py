@@ -86,6 +86,17 @@ def _event_fn(ev, s, bias):
     return f
 
 
+def _base_uplift_rotation(p, model):
+    """The base rotation |q1| where a semi-rigid base leaves its elastic range (the law's first base
+    breakpoint: Delta_1 of the base displacement h q1/2 for the simply supported wall and
+    dohertyHinge, theta_y for semiRigidHinge and semiRigidPaper); None for rigid hinges."""
+    if getattr(model, "rigid", True):
+        return None
+    if p.support == "simplySupported" or p.hinge_law == "dohertyHinge":
+        return 2 * p.Delta_1 / p.h
+    return p.theta_y
+
+
 def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK45", rtol=1e-5,
              atol=1e-10, max_step=np.inf, t_out=None, progress=False, rest_dt=1e-3,
              zeno_count=200, zeno_window=1e-6, max_events=200000):
@@ -124,12 +135,25 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
         for tt in t_out[(t_out > ta) & (t_out < tb)]:
             rec.add(tt, sol(tt) if sol is not None else yconst)
 
+    # Impacts counted (docs/model.md "Impacts"): every base crossing of rigid hinges; with a
+    # semi-rigid law only a crossing after the base passed the end of its elastic range (its first
+    # base breakpoint, an event, so a step ends on it) since the previous crossing: before any
+    # uplift the base oscillates elastically through q1 = 0, which is no impact.
+    uplift_q1 = _base_uplift_rotation(p, model)
+    uplifted = uplift_q1 is not None and abs(y[0]) >= uplift_q1 * (1 - 1e-6)
+
+    def note_uplift(q1_values):
+        nonlocal uplifted
+        if uplift_q1 is not None and np.max(np.abs(q1_values)) >= uplift_q1 * (1 - 1e-6):
+            uplifted = True
+
     def note(tt, kinds):
-        nonlocal impacts
+        nonlocal impacts, uplifted
         for k in kinds:
             events.append((tt, k))
             if k == "base_impact":
-                impacts += 1
+                impacts += 1 if (uplift_q1 is None or uplifted) else 0
+                uplifted = False
         if kinds:
             recent.append(tt)
             if len(recent) == zeno_count and recent[-1] - recent[0] < zeno_window:
@@ -203,6 +227,7 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
         if bar is not None:
             bar.update(ts[-1] - t)
         t, y = float(ts[-1]), ys[:, -1].copy()
+        note_uplift(ys[0])
         if sol.status != 1:
             break
         # which event fired (earliest)

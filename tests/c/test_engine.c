@@ -92,7 +92,9 @@ static void test_stepper(void)
         t = reached;
     }
     CHECK(rc == 0 && fabs(t - 5.0) < 1e-12, "stepper: rc %d t %g", rc, t);
-    CHECK(impacts > 5, "stepper: %ld impacts in 5 s of free rocking", impacts);
+    /* counted only while the rocking exceeds the base's elastic range (docs/model.md "Impacts"):
+     * from 12.5 mm the amplitude falls below Delta_1 = 7.5 mm within a few impacts */
+    CHECK(impacts >= 2, "stepper: %ld impacts in 5 s of free rocking", impacts);
     rw_engine_free(e);
 }
 

@@ -169,7 +169,7 @@ static void test_against_sympy(const char *json_path)
         const char *km[] = {"base_mass", NULL}, *kc[] = {"base_per_qdd", NULL};
         const double x0[RW_NX] = {0, 0, 0, 0};
         double mass, c[2];
-        rw_mode m = {0, 0, 1, -1, 0, 0};
+        rw_mode m = {0, 0, 1, -1, 0, 0, 0};
         rw_input in = {1.0, 0.0};
         double dx[RW_NX] = {0, 0, 0, 0};
         CHECK(json_numbers(json, km, &mass, 1) == 1 && json_numbers(json, kc, c, 2) == 2, "base force not found");
@@ -186,7 +186,7 @@ static void test_against_sympy(const char *json_path)
     for (i = 1; i <= 4; i++) {
         char cond[2] = {(char)('0' + i), 0};
         const char *ka[] = {"conditions", cond, "A", NULL}, *kb[] = {"conditions", cond, "B", NULL};
-        rw_mode m = {0, 0, sides[i][0], sides[i][1], 0, 0};
+        rw_mode m = {0, 0, sides[i][0], sides[i][1], 0, 0, 0};
         double q[RW_NX] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1], 0, 0}, Q[2], a, b;
         rw_hinge_Q(&p, &d, &m, q, Q);
         CHECK(json_numbers(json, ka, &a, 1) == 1 && json_numbers(json, kb, &b, 1) == 1, "condition %d missing", i);
@@ -217,7 +217,7 @@ static void test_trilinear(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m = {0, 0, 1, 1, 0, 0};
+    rw_mode m = {0, 0, 1, 1, 0, 0, 0};
     p.support = RW_SIMPLY_SUPPORTED;
     rw_derive(&p, &d);
     check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, d.D1 / 2), -d.Fi / 2, 1e-12);
@@ -258,11 +258,29 @@ static void test_impact_map(void)
     /* repeated call: nothing */
     rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
     CHECK(r.impacts == 0 && !r.states_changed && !r.modes_changed, "second call changed something");
+    /* the base swings past its elastic range on the new side (an event at the breakpoint), so
+     * the next crossing is an impact that counts */
+    x[0] = -0.01;
+    x[2] = -0.01;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(r.impacts == 0 && m.uplifted_b, "past the elastic range: impacts %d uplifted %d", r.impacts, m.uplifted_b);
     /* early root: still 1e-13 on the old side but moving toward the other one */
     x[0] = -1e-13;
     x[2] = 0.3;
     rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
     CHECK(r.impacts == 1 && m.side_b == 1, "early root: impacts %d side %d", r.impacts, m.side_b);
+    /* a crossing without an uplift since the last one (the base oscillating within its elastic
+     * range): the restitution applies, but it is not counted as an impact */
+    x[0] = -1e-9;
+    x[2] = -0.3;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(m.side_b == -1 && r.impacts == 0 && r.states_changed, "elastic crossing: side %d impacts %d", m.side_b,
+          r.impacts);
+    check_close("dq1 after an elastic crossing", x[2], -0.3 * p.er, 1e-14);
+    x[0] = 1e-9;
+    x[2] = 0.3;
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(m.side_b == 1 && r.impacts == 0, "second elastic crossing: side %d impacts %d", m.side_b, r.impacts);
     /* at zero but moving away from it (e.g. just opened): no impact */
     x[0] = 1e-13;
     x[2] = 0.3;
@@ -474,7 +492,7 @@ static void test_doherty_hinge_reduces_to_trilinear(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m = {0, 0, 1, -1, 0, 0};
+    rw_mode m = {0, 0, 1, -1, 0, 0, 0};
     const double Ds[] = {0.2, 0.9, 1.5, 3.0, 5.0, 15.0, 19.0}; /* in units of Delta_1 */
     int i;
     p.hingeLaw = RW_DOHERTY_HINGE;

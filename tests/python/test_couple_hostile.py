@@ -101,7 +101,9 @@ def test_finding09_couple_leaves_no_extracted_fmus(build_dir, tmp_path, private_
 
 @pytest.mark.parametrize("master", ["fmpy", "libcosim"])
 def test_finding17_failing_slave_exits_nonzero_with_the_real_error(hostile, tmp_path, private_tmp, master):
-    proc = couple_cli(tmp_path, "--t-end", 0.5, "--master", master, "--diaphragm-fmu", hostile["failing"])
+    # at the 1 ms step this failing FMU was written for (the default step now follows the tie)
+    proc = couple_cli(tmp_path, "--t-end", 0.5, "--macro-step", 1e-3, "--master", master,
+                      "--diaphragm-fmu", hostile["failing"])
     assert proc.returncode == 1, (proc.returncode, proc.stdout[-1000:], proc.stderr[-2000:])
     first = proc.stderr.strip().splitlines()[0]
     assert first.startswith("couple.py: error: ") and "cvode failed at t = 0.033" in first.lower(), proc.stderr[-2000:]

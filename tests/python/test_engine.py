@@ -150,7 +150,10 @@ def test_grazing_case_el_centro_kd_10914(law, fmi2sim_exe, rockingwall_fmu, work
     sc = dict(seed=9000 + law, t=sig.t, ag=sig.a, t_end=float(sig.t[-1]), label="El Centro 50 % grazing",
               params=dict(support=3, hingeLaw=law, Kd=10914.9))
     r = engine_run(sc)
-    assert r.events < 20 * max(r.impacts, 1)
+    # no event storm: at most 50 events per second of record (930 events in the record for
+    # law 3); a loop at the breakpoint would give thousands at one instant. (Impacts are no
+    # yardstick: the semi-rigid laws count only the crossings after an uplift.)
+    assert r.events < 50 * sc["t_end"]
     cv = es.fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, 1e-12, workdir)
     assert r.collapsed == cv["collapsed"] and r.impacts == cv["impacts"]
     scale = max(cv["peak_s1"], cv["peak_s2"])
@@ -177,7 +180,9 @@ def test_er_one_keeps_energy_over_600_s(support, law, kd):
     indicator offset), where the active side's force has done work 2 F_r eps_D the potential does
     not count: its bound is that, per impact (measured: exactly that)."""
     t = np.array([0.0, 600.0])
-    q0 = 0.005
+    # past the base's elastic range of every law (semiRigidHinge's theta_y = 0.012 rad is the
+    # largest), so that every crossing is a counted impact (docs/model.md "Impacts")
+    q0 = 0.005 if law == 1 else 0.015
     x0 = [q0, -q0, 0.0, 0.0]  # the simply supported shape: the spring starts unstretched
     r = rw_engine.run(t, np.zeros(2), t_end=600.0, x0=x0, support=support, hingeLaw=law, er=1.0, Kd=kd,
                       impact_log=1000000)

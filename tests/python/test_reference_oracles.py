@@ -48,12 +48,18 @@ CONSERVATIVE = [
 ]
 
 
+def base_crossings(r):
+    """Base crossings, where the restitution applies; `impacts` counts only those after an uplift
+    with the semi-rigid laws (docs/model.md "Impacts")."""
+    return sum(1 for _, kind in r.events if kind == "base_impact")
+
+
 @pytest.mark.parametrize("model,law,q0,dq0", CONSERVATIVE)
 def test_energy_conserved_er1(model, law, q0, dq0):
     p = Params(support=model, hinge_law=law, er=1.0, Kd=1e5)
     r = simulate(p, None, 3.0, q0=q0, dq0=dq0, **TIGHT)
     assert not r.collapsed
-    assert r.impacts >= 2
+    assert base_crossings(r) >= 2
     E0 = r.energy[0]
     assert np.max(np.abs(r.energy - E0)) <= 1e-6 * E0
 
@@ -63,7 +69,7 @@ def test_energy_never_increases(model, law, q0, dq0):
     p = Params(support=model, hinge_law=law, er=0.8, Kd=1e5)
     r = simulate(p, None, 3.0, q0=q0, dq0=dq0, **TIGHT)
     E = r.energy
-    assert r.impacts >= 2
+    assert base_crossings(r) >= 2
     # The spec's closing maps (mid: dq2 := dq1; base: dq1 := 0, applied when the relative rate is
     # below restRate) are not projections in the kinetic-energy metric: they can change the kinetic
     # energy by up to about |M| * restRate * |dq|.  Allow exactly that much at each step.
