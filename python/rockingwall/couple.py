@@ -450,6 +450,12 @@ def plot(r, path, title, other=None):
     plt.close(fig)
 
 
+def _stiffness(text):
+    """A stiffness per metre of wall in N/m per m, from a bare number or a value with its unit."""
+    from .units import parse
+    return parse(text, "N/m2", "stiffness")
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(prog="rockingwall couple", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
@@ -457,10 +463,12 @@ def parse_args(argv):
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")
     ap.add_argument("--scale", type=float, default=0.5)
     ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
-    ap.add_argument("--Kd", type=float, default=1e5, help="wall-to-diaphragm spring, N/m per m")
+    ap.add_argument("--Kd", type=_stiffness, default=1e5,
+                    help="wall-to-diaphragm spring, N/m per m of wall, or with a unit (100kN/m/m)")
     ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(LAWS))
     ap.add_argument("--m", type=float, default=2000.0, help="diaphragm mass, kg per m of wall")
-    ap.add_argument("--k", type=float, default=7e5, help="diaphragm stiffness, N/m per m of wall")
+    ap.add_argument("--k", type=_stiffness, default=7e5,
+                    help="diaphragm stiffness, N/m per m of wall, or with a unit (700kN/m/m)")
     ap.add_argument("--zeta", type=float, default=0.05)
     ap.add_argument("--macro-step", "--step", dest="macro_step", type=float, default=None,
                     help=f"communication step H [s], in [{MACRO_STEP_MIN:g}, t_end]; default: the largest "

@@ -37,6 +37,15 @@ from .lock import Busy
 FEMA_CACHE = pathlib.Path(os.environ.get("RW_RECORDS_CACHE", pathlib.Path.home() / ".cache" / "rockingwall")) / "fema_farfield"
 
 
+def kd_in_kN(text):
+    """K_d in kN/m per m from '30' (taken as kN/m per m) or a value with its unit ('3e4 N/m/m')."""
+    from ..units import parse
+    try:
+        return float(text)
+    except ValueError:
+        return parse(text, "N/m2", "K_d") / 1e3
+
+
 def parse_args(argv=None):
     p = argparse.ArgumentParser(prog="rockingwall sweep", description=__doc__,
                                 formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -45,7 +54,9 @@ def parse_args(argv=None):
                                               "[walls.NAME] tables (b, h, W, psi) of the --config file")
     p.add_argument("--models", nargs="+", help=", ".join(grid.MODELS))
     p.add_argument("--hinge-laws", dest="hinge_laws", nargs="+", help=", ".join(grid.HINGE_LAWS))
-    p.add_argument("--kd", dest="kd_kN", type=float, nargs="+", help="diaphragm stiffness K_d [kN/m per m]")
+    p.add_argument("--kd", dest="kd_kN", type=kd_in_kN, nargs="+",
+                   help="diaphragm stiffnesses K_d: with a unit (30kN/m/m, 3e4N/m/m) or a bare number in kN/m per m "
+                        "(the unit of the results' kd_kN column)")
     p.add_argument("--scales", type=float, nargs="+", help="scale factors on the records as given")
     p.add_argument("--pga", dest="pga_g", type=float, nargs="+", help="target PGAs [g] (replaces --scales)")
     p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 files")

@@ -16,9 +16,9 @@ from tqdm import tqdm
 from . import exact_runner, provenance, runner
 from .store import ResultsFile
 
-# Workers get the run function by value, so a Dask cluster started elsewhere (--scheduler) needs
-# neither this repository nor its scripts on its Python path: only fmi2sim, the FMU and the
-# records at the same paths.
+# Workers get the fmi2sim run function by value; they import the installed package, which the exact
+# engine needs anyway (its records travel with the tasks; fmi2sim runs need fmi2sim, the FMU and the
+# records at the same paths on every worker).
 cloudpickle.register_pickle_by_value(runner)
 
 

@@ -36,18 +36,10 @@ class Record:
     sha256: str = ""  # content hash (rockingwall.sweep.provenance): a result is tied to the bytes, not the name
 
 
-def _at2_header(line):
-    """NPTS and DT from the 4th header line, in both NGA layouts ('NPTS= 2688, DT= .0100 SEC' and
-    '2688 .0100 NPTS, DT'); the same two forms fmi2sim accepts."""
-    m = re.search(r"NPTS\s*=\s*(\d+)\s*,?\s*DT\s*=\s*([0-9.eE+-]+)", line)
-    if not m:
-        m = re.match(r"\s*(\d+)\s+([0-9.eE+-]+)", line)
-    if not m:
-        raise ValueError(f"line 4: expected 'NPTS= N, DT= dt SEC', found '{line.strip()[:200]}'")
-    npts, dt = int(m.group(1)), float(m.group(2))
-    if npts <= 0 or not dt > 0:
-        raise ValueError(f"line 4: NPTS = {npts}, DT = {dt} are not positive")
-    return npts, dt
+def _at2_header(line, name):
+    """NPTS and DT from the 4th header line: the package's one AT2 header rule (rockingwall.records)."""
+    from ..records import at2_header
+    return at2_header(line, name)
 
 
 def check_regular(path):
@@ -121,10 +113,11 @@ def read_at2(path):
         with open(path, "rb") as f:
             head = [f.readline(_HEADER_LINE_BYTES) for _ in range(4)]
             h.update(b"".join(head))
-            npts, dt = _at2_header(head[3].decode("utf-8", errors="replace"))
+            npts, dt = _at2_header(head[3].decode("utf-8", errors="replace"), path.name)
             pga = _scan(f, h)
-    except (OSError, ValueError) as exc:
-        return Record(name, str(path), float("nan"), float("nan"), error=f"{path.name}: {exc}")
+    except (OSError, ValueError) as exc:  # the header rule's messages name the file and line already
+        text = str(exc) if str(exc).startswith(f"{path.name}:") else f"{path.name}: {exc}"
+        return Record(name, str(path), float("nan"), float("nan"), error=text)
     return Record(name, str(path), pga, (npts - 1) * dt, sha256=h.hexdigest()[:provenance.SHORT])
 
 

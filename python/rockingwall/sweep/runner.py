@@ -1,7 +1,7 @@
 """One run of a sweep: fmi2sim with --summary (peaks without the time history), turned into one
 row of the results file. Runs on a Dask worker, so it takes and returns plain dicts (a RunSpec as a dict:
-workers need not import this project; sweep.py ships this module to them by value, so it imports
-only the standard library); a failed run becomes a row instead of an exception, so one bad record
+the sweep ships this module to its workers by value; they import the installed package for the
+fmi2sim command line); a failed run becomes a row instead of an exception, so one bad record
 cannot stop a sweep.
 
 Statuses: 'ok'; 'error' when fmi2sim (or the record) refused the run, which the same inputs would
@@ -32,11 +32,10 @@ TIMEOUT_S = 600.0
 
 def command(spec, fmi2sim, fmu, rtol, summary_path):
     """The fmi2sim command line of a run (also what a user types to repeat one run by hand)."""
-    cmd = [str(fmi2sim), str(fmu), "--ag", spec["record_path"], "--ag-scale", repr(float(spec["scale"])),
-           "--stop-time", repr(float(spec["stop_time"])), "--rtol", repr(float(rtol)), "--summary", str(summary_path)]
-    for name, value in spec["sets"]:
-        cmd += ["--set", f"{name}={value}"]
-    return cmd
+    from rockingwall.fmi2sim import command as fmi2sim_command  # the one copy; workers have the package
+    return fmi2sim_command(fmu, ag=spec["record_path"], ag_scale=float(spec["scale"]),
+                           stop_time=float(spec["stop_time"]), rtol=float(rtol), summary=summary_path,
+                           sets=spec["sets"], executable=fmi2sim)
 
 
 def _row(spec, status, message="", **values):
