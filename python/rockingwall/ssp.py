@@ -17,7 +17,9 @@ or a wall in the top storey of two) can.
 A user replaces the Building FMU by putting another FMU into resources/ and pointing the
 component's `source` at it: it must have the variables the connections name.
 """
+import atexit
 import pathlib
+import shutil
 import tempfile
 import xml.etree.ElementTree as ET
 import zipfile
@@ -162,13 +164,20 @@ def _check_end(inst, var, declared, fmu_vars, where):
     return unit
 
 
+def _temporary_folder():
+    """A folder removed when the process ends (the scene's FMUs live there while it runs)."""
+    folder = tempfile.mkdtemp(prefix="rw_ssp_")
+    atexit.register(shutil.rmtree, folder, True)
+    return folder
+
+
 def read(path, extract_to=None):
     """The Scene of an SSP archive (its FMUs extracted under extract_to, default a temporary folder
-    kept for the life of the process); SSPError naming what is wrong with it."""
+    removed when the process ends); SSPError naming what is wrong with it."""
     path = pathlib.Path(path)
     if not zipfile.is_zipfile(path):
         raise SSPError(f"{path}: not an SSP archive (zip)")
-    dest = pathlib.Path(extract_to or tempfile.mkdtemp(prefix="rw_ssp_"))
+    dest = pathlib.Path(extract_to or _temporary_folder())
     with zipfile.ZipFile(path) as z:
         names = set(z.namelist())
         if "SystemStructure.ssd" not in names:
