@@ -53,7 +53,7 @@ def run_one(record, kd):
         p1, p2, collapsed = paper_scene_peaks(record, kd)
         rows.append(dict(record=record.name, storey=storey, s1=r.peak(storey, "s1"), s2=r.peak(storey, "s2"),
                          paper_s1=p1, paper_s2=p2, paper_collapsed=collapsed,
-                         collapsed_at=r["collapsed_at"]))
+                         collapsed_at=r["collapsed"].get(storey)))
     return rows, spectra
 
 

@@ -183,25 +183,31 @@ class _Exchange:
     def __init__(self, order, H):
         self.order, self.H, self.previous = order, H, None
 
+    def forget_forces(self):
+        """A wall fell out: the building's F_wall inputs jump; no slope across the jump."""
+        if self.previous is not None:
+            self.previous = {k: v for k, v in self.previous.items() if not k[1].startswith("F_wall_")}
+
     def slopes(self, values):
         if self.order < 2 or self.previous is None:
             out = {k: 0.0 for k in values}
         else:
-            out = {k: (v - self.previous[k]) / self.H for k, v in values.items()}
+            out = {k: (v - self.previous[k]) / self.H if k in self.previous else 0.0 for k, v in values.items()}
         self.previous = dict(values)
         return out
 
 
-def _coupled_inputs(scene, b_out, w_out, ag):
-    """{(instance, variable): value} of every input at a communication point, from the outputs."""
+def _coupled_inputs(scene, b_out, w_out, ag, collapsed=()):
+    """{(instance, variable): value} of every input at a communication point, from the outputs.
+    A collapsed wall (in `collapsed`) has fallen out: it takes no inputs and puts no force."""
     n = scene.n_storeys
+    standing = {w.storey: w for w in scene.walls if w.name not in collapsed}
     values = {("building", "ag"): ag}
     for i in range(1, n + 1):
-        below, above = scene.wall_in(i), scene.wall_in(i + 1)
+        below, above = standing.get(i), standing.get(i + 1)
         F = (w_out[below.name]["F_top"] if below else 0.0) + (w_out[above.name]["F_base"] if above else 0.0)
         values[("building", f"F_wall_{i}")] = F
-    for w in scene.walls:
-        i = w.storey
+    for i, w in standing.items():
         values[(w.name, "ag")] = ag if i == 1 else b_out[f"a_diaph_{i - 1}"]
         values[(w.name, "u_top")] = b_out[f"u_top_{i}"]
     return values
@@ -218,20 +224,25 @@ def _set_inputs(slaves, values, slopes, ground_keys, ground_slope, at):
             _fmi_call(s, at, s.setRealInputDerivatives, vr, [1] * len(vr), d)
 
 
-def _read(slaves, scene):
+def _read(slaves, scene, w_last=None, collapsed=()):
+    """The building's floor outputs and the walls' outputs; a collapsed wall keeps its last ones."""
     b = slaves["building"]
     n = scene.n_storeys
     names = [f"{q}_{i}" for i in range(1, n + 1) for q in FLOOR_OUT]
     b_out = dict(zip(names, b.getReal([b.vr[x] for x in names])))
-    w_out = {w.name: dict(zip(WALL_OUT, slaves[w.name].getReal([slaves[w.name].vr[x] for x in WALL_OUT])))
+    w_out = {w.name: (w_last[w.name] if w.name in collapsed else
+                      dict(zip(WALL_OUT, slaves[w.name].getReal([slaves[w.name].vr[x] for x in WALL_OUT]))))
              for w in scene.walls}
     return b_out, w_out
 
 
 def run(scene, record, t_end, H, order=2, rtol=1e-8):
     """The fmpy master over `scene` under `record` (a rockingwall.records.Record, ag in m/s2) to
-    t_end with macro step H. Returns a SceneResult; a wall that collapses ends the run there
-    (result["collapsed_at"], the wall's fmi2Discard); any other failure raises CouplingError."""
+    t_end with macro step H. Returns a SceneResult. A wall that collapses (its fmi2Discard) falls
+    out of the scene: from then on it takes no inputs and puts no force on the building, its
+    outputs stay at the collapse; result["collapsed"] = {storey: t}, result["collapsed_at"] the
+    first (None if none), and the energy terms hold up to then only. Any other failure raises
+    CouplingError."""
     if not (math.isfinite(H) and 1e-6 <= H <= t_end):
         raise ValueError(f"macro step {H!r} is outside [1e-6, t_end = {t_end:g}] s")
     if order not in (1, 2):
@@ -255,7 +266,7 @@ def _jacobi(scene, slaves, t_in, ag_in, t_end, H, order):
     ground_keys = set(scene.ground_inputs())
     n_steps = int(round(t_end / H))
     exchange = _Exchange(order, H)
-    rows, collapsed_at = [], None
+    rows, collapsed = [], {}
     b_out, w_out = _read(slaves, scene)
 
     def ag_at(t):
@@ -265,26 +276,30 @@ def _jacobi(scene, slaves, t_in, ag_in, t_end, H, order):
         t = k * H
         at = f"at t = {t:.6g} s"
         ag = ag_at(t)
-        values = _coupled_inputs(scene, b_out, w_out, ag)
+        values = _coupled_inputs(scene, b_out, w_out, ag, collapsed)
         slopes = exchange.slopes(values)
         ag_slope = (ag_at(t + H) - ag) / H if order == 2 else 0.0
-        _set_inputs(slaves, values, slopes, ground_keys, ag_slope, at)
-        b_out, w_out = _read(slaves, scene)  # the outputs with these inputs (algebraic ones change)
+        standing = {n: s for n, s in slaves.items() if n not in collapsed}
+        _set_inputs(standing, values, slopes, ground_keys, ag_slope, at)
+        b_out, w_out = _read(slaves, scene, w_out, collapsed)  # outputs with these inputs (algebraic ones change)
         rows.append(_row(t, ag, b_out, w_out, values))
         if k == n_steps:
             break
-        try:
-            for name, s in slaves.items():
-                current = name
+        for name, s in standing.items():
+            try:
                 s.doStep(currentCommunicationPoint=t, communicationStepSize=H)
-        except FMICallException as exc:
-            if exc.status != fmi2Discard or current == "building":
-                _fmi_call(slaves[current], at, _raise, exc)
-            collapsed_at = t
-            break
-        b_out, w_out = _read(slaves, scene)
-    r = SceneResult({key: np.asarray([row[key] for row in rows]) for key in rows[0]})
-    r["collapsed_at"] = collapsed_at
+            except FMICallException as exc:
+                if exc.status != fmi2Discard or name == "building":  # an error, not a wall's collapse
+                    _fmi_call(s, at, _raise, exc)
+                collapsed[name] = t
+                w_out[name] = dict(zip(WALL_OUT, s.getReal([s.vr[x] for x in WALL_OUT])))  # at the collapse
+                exchange.forget_forces()
+        if collapsed and len(collapsed) == len(scene.walls):
+            break  # every wall fell: nothing of interest remains
+        b_out, w_out = _read(slaves, scene, w_out, collapsed)
+    r = SceneResult({key: np.asarray([row.get(key, np.nan) for row in rows]) for key in rows[0]})
+    r["collapsed_at"] = min(collapsed.values()) if collapsed else None
+    r["collapsed"] = {int(name.split("_")[1]): t for name, t in collapsed.items()}
     r.meta = dict(_building_meta(slaves["building"], scene.n_storeys), walls=[w.storey for w in scene.walls])
     return r
 
@@ -358,9 +373,11 @@ def main(argv=None):
     for w in scene.walls:
         print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
     e = r.energy_terms()
-    print(f"energy: max |residual| {np.abs(e['residual']).max():.4g} J/m of max input {np.abs(e['input']).max():.4g} J/m")
-    if r["collapsed_at"] is not None:
-        print(f"a wall collapsed at t = {r['collapsed_at']:.3f} s")
+    upto = r["time"] <= (r["collapsed_at"] if r["collapsed_at"] is not None else np.inf)
+    print(f"energy (up to the first collapse): max |residual| {np.abs(e['residual'][upto]).max():.4g} J/m "
+          f"of max input {np.abs(e['input'][upto]).max():.4g} J/m")
+    for storey, t in sorted(r["collapsed"].items()):
+        print(f"the wall in storey {storey} collapsed at t = {t:.3f} s and fell out of the scene")
     return 0
 
 

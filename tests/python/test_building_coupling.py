@@ -6,8 +6,9 @@
   Diaphragm); with ramped inputs (order 2) at 1 ms within 1 % of `rockingwall couple` at 0.25 ms.
 - The macro-step error of peak s1 falls with order >= 1.8 with the extrapolated derivatives
   (against a run at H = 0.125 ms), and about 1 without them.
+- A wall that collapses falls out of the scene; the others run on to the end.
 - Energy bookkeeping of the whole scene (building_scene.SceneResult.energy_terms): the residual
-  falls with the macro step and lies below 1 % of the peak input work at H = 2 ms.
+  falls with the macro step and lies below 0.1 % of the peak input work at H = 2 ms.
 """
 import numpy as np
 import pytest
@@ -68,9 +69,10 @@ def test_one_storey_energy_balance(one_storey_runs):
 
 @pytest.fixture(scope="module")
 def pulse_runs():
-    """Two storeys, a wall in each, pinching diaphragms, the paper's Gaussian impulse D = 0.04 m,
-    T = 1 s: runs at H = 8, 4, 2 ms with and without derivatives, and the reference at 0.125 ms."""
-    rec, t_end = records.gaussian(0.04, 1.0, dt=1e-3), 2.5
+    """Two storeys, a wall in each, pinching diaphragms, the paper's Gaussian impulse D = 0.03 m,
+    T = 1 s (no wall collapses): runs at H = 8, 4, 2 ms with and without derivatives, and the
+    reference at 0.125 ms."""
+    rec, t_end = records.gaussian(0.03, 1.0, dt=1e-3), 2.5
     scene = bs.default_scene(2)
     H = [8e-3, 4e-3, 2e-3]
     ref = bs.run(scene, rec, t_end, 1.25e-4, order=2)
@@ -80,10 +82,12 @@ def pulse_runs():
 
 def test_second_order_coupling_observed_order(pulse_runs):
     H, ref, runs = pulse_runs
-    orders = bs.observed_orders(H, [r.peak(1) for r in runs[2]], ref.peak(1))
-    assert min(orders) >= 1.8, orders  # measured 1.93, 1.85
-    held = bs.observed_orders(H, [r.peak(1) for r in runs[1]], ref.peak(1))
-    assert max(held) < 1.4, held  # inputs held: first order (measured 1.23, 1.11)
+    assert not ref["collapsed"] and all(not r["collapsed"] for r in runs[1] + runs[2])
+    for storey in (1, 2):
+        orders = bs.observed_orders(H, [r.peak(storey) for r in runs[2]], ref.peak(storey))
+        assert min(orders) >= 1.8, (storey, orders)  # measured 1.98, 1.96 (storey 1); 2.04, 1.99 (storey 2)
+    held = bs.observed_orders(H, [r.peak(2) for r in runs[1]], ref.peak(2))
+    assert max(held) < 1.4, held  # inputs held: first order (measured 0.95, 0.98)
 
 
 def test_scene_energy_residual_falls_with_macro_step(pulse_runs):
@@ -93,7 +97,7 @@ def test_scene_energy_residual_falls_with_macro_step(pulse_runs):
         e = r.energy_terms()
         rel.append(np.abs(e["residual"]).max() / np.abs(e["input"]).max())
     assert rel[0] > rel[1] > rel[2], rel
-    assert rel[2] < 0.01, rel
+    assert rel[2] < 1e-3, rel  # measured 5.7e-3, 6.2e-4, 3.0e-4 of about 460 J/m
 
 
 def test_bad_scene_is_refused():
@@ -103,3 +107,20 @@ def test_bad_scene_is_refused():
         bs.Scene({}, {"nStoreys": 1}, [bs.WallSpec(1, {}), bs.WallSpec(1, {})])
     with pytest.raises(ValueError, match="macro step"):
         bs.run(bs.default_scene(1), records.gaussian(), 1.0, 0.0)
+
+
+def test_a_collapsed_wall_falls_out_and_the_rest_runs_on():
+    """The wall of storey 2 collapses under a strong impulse: the run reaches its end, the wall of
+    storey 1 keeps moving, and diaphragm 1 no longer takes the fallen wall's F_base."""
+    rec = records.gaussian(0.05, 1.0, dt=1e-3)
+    r = bs.run(bs.default_scene(2), rec, 2.5, 2e-3)
+    assert list(r["collapsed"]) == [2], r["collapsed"]
+    t_c = r["collapsed"][2]
+    assert r["time"][-1] == pytest.approx(2.5)
+    after = r["time"] > t_c
+    assert np.ptp(r["wall_1_s1"][after]) > 1e-3  # still rocking
+    assert np.all(r["building_F_wall_2_in"][after] == 0.0) and np.abs(r["building_F_wall_2_in"][~after]).max() > 100.0
+    # F_wall_1 is the F_top of the wall below alone (the inputs were built from the outputs at the
+    # end of the previous step, before u_top was set: they differ by the coupling error)
+    F_base_2 = np.abs(r["wall_2_F_base"][~after]).max()
+    assert np.abs(r["building_F_wall_1_in"][after] - r["wall_1_F_top"][after]).max() < 0.05 * F_base_2
