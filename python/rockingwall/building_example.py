@@ -5,7 +5,7 @@ same PGA. Each wall's peaks against the paper's scene (the same wall on the grou
 K_d equal to the diaphragm's stiffness, fixed at its far end), and the floor spectra that reach
 each wall (5 %-damped Sa of the ground and of diaphragm 1's absolute acceleration).
 
-    rockingwall couple-building --example ~/.cache/rockingwall/fema_farfield
+    rockingwall couple-building --example
 
 writes docs/img/building_coupling.png and prints the table of the document.
 """
@@ -69,17 +69,23 @@ def plot(results, path):
     ax[0].set_ylabel("Sa (5 %) [g]")
     ax[0].set_title("the motion reaching each wall's base")
     ax[0].legend(fontsize=7)
-    labels, building, paper = [], [], []
+    labels, building, paper, fell = [], [], [], []
     for name, (rows, _) in results.items():
         for row in rows:
-            labels.append(f"{name[:10]}\nstorey {row['storey']}")
+            labels.append(f"{name.split(' at ')[0].replace(' 1940', '')}\nstorey {row['storey']}")
             building.append(1e3 * row["s1"])
             paper.append(1e3 * row["paper_s1"])
+            fell.append((row["collapsed_at"] is not None, row["paper_collapsed"]))
     x = np.arange(len(labels))
     ax[1].bar(x - 0.2, building, 0.4, label="in the building")
     ax[1].bar(x + 0.2, paper, 0.4, label="paper's scene (K_d = diaphragm's k, on the ground)")
+    for xi, (b, p), (fb, fp) in zip(x, zip(building, paper), fell):
+        for dx, value, f in ((-0.2, b, fb), (0.2, p, fp)):
+            if f:
+                ax[1].text(xi + dx, value, "collapse", ha="center", va="bottom", fontsize=6, rotation=90)
     ax[1].set_xticks(x, labels, fontsize=7)
     ax[1].set_ylabel("peak s1 [mm]")
+    ax[1].set_ylim(0, 1.3e3 * max(max(r["s1"], r["paper_s1"]) for rows, _ in results.values() for r in rows))
     ax[1].set_title(f"wall 1, records at PGA {PGA_G:g} g")
     ax[1].legend(fontsize=7)
     fig.tight_layout()

@@ -343,8 +343,10 @@ def parse_args(argv):
                     help="2: inputs ramped with extrapolated derivatives; 1: inputs held")
     ap.add_argument("--ssp", help="also write the scene as an SSP 1.0 file here")
     ap.add_argument("--from-ssp", help="run the scene of this SSP file instead of the options above")
-    ap.add_argument("--example", metavar="DIR",
-                    help="generate the worked example of docs/building-coupling.md (FEMA P695 records cached in DIR)")
+    ap.add_argument("--example", action="store_true",
+                    help="generate the worked example of docs/building-coupling.md (plot and table)")
+    ap.add_argument("--records-cache", help="folder of the converted FEMA P695 far-field records "
+                                            "(default: the one `rockingwall sweep` uses)")
     return ap.parse_args(argv)
 
 
@@ -353,7 +355,8 @@ def main(argv=None):
     try:
         if a.example:
             from . import building_example
-            return building_example.main(a.example)
+            from .sweep.command import FEMA_CACHE
+            return building_example.main(a.records_cache or FEMA_CACHE)
         if a.from_ssp:
             from . import ssp
             scene = ssp.read(a.from_ssp)
