@@ -24,7 +24,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 import zipfile
 
-from .building_scene import Scene, WallSpec
+from .building_scene import FLOOR_OUT, Scene, WallSpec
 
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
       "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",
@@ -182,13 +182,27 @@ def read(path, extract_to=None):
         names = set(z.namelist())
         if "SystemStructure.ssd" not in names:
             raise SSPError(f"{path}: no SystemStructure.ssd in the archive")
-        root = ET.fromstring(z.read("SystemStructure.ssd"))
+        try:
+            root = ET.fromstring(z.read("SystemStructure.ssd"))
+        except ET.ParseError as exc:
+            raise SSPError(f"{path}: SystemStructure.ssd is not well-formed XML: {exc}") from None
         comps = root.findall("ssd:System/ssd:Elements/ssd:Component", NS)
         for c in comps:
             if c.get("source") not in names:
                 raise SSPError(f"{path}: component {c.get('name')!r}: its FMU {c.get('source')!r} is not in the archive")
         z.extractall(dest)
     return _scene(root, {c.get("name"): c for c in comps}, dest, path)
+
+
+def _check_building_variables(scene, variables, path):
+    """The building FMU (perhaps a user's replacement) has every variable the master reads."""
+    n = scene.n_storeys
+    needed = ["ag", "rayleighMass", "rayleighStiffness"] + [
+        f"{q}_{i}" for i in range(1, n + 1) for q in FLOOR_OUT + ["F_wall", "m", "md", "k", "kd"]]
+    missing = [v for v in needed if v not in variables]
+    if missing:
+        raise SSPError(f"{path}: the building's FMU lacks variables the master reads: {', '.join(missing[:8])}"
+                       + (f" and {len(missing) - 8} more" if len(missing) > 8 else ""))
 
 
 def _scene(root, comps, dest, path):
@@ -222,6 +236,7 @@ def _scene(root, comps, dest, path):
         raise SSPError(f"{path}: the walls use different FMUs {sorted(wall_sources)}; this master takes one")
     scene = Scene(b_real, b_int, walls, building_fmu=str(dest / comps["building"].get("source")),
                   wall_fmu=str(dest / wall_sources.pop()) if wall_sources else None)
+    _check_building_variables(scene, fmu_vars["building"], path)
     names = {w.storey: w.name for w in walls}
     for w, storey in storeys.items():
         if w != names[storey]:

@@ -111,6 +111,24 @@ def test_not_an_archive(tmp_path):
         ssp.read(tmp_path / "x.ssp")
 
 
+def test_not_xml(archive, tmp_path):
+    bad = rewrite(archive, tmp_path / "bad.ssp", edit_ssd=lambda s: s[: len(s) // 2])
+    with pytest.raises(ssp.SSPError, match="not well-formed XML"):
+        ssp.read(bad)
+
+
+def test_replacement_building_without_the_masters_variables(archive, tmp_path):
+    """The Diaphragm FMU put in the building's place: named as lacking what the master reads."""
+    from rockingwall._paths import diaphragm_fmu
+
+    def edit(s):  # its connectors still name the building's variables: drop those checks' cause
+        return s.replace('source="resources/Building.fmu"', 'source="resources/Diaphragm.fmu"')
+    bad = rewrite(archive, tmp_path / "bad.ssp", edit_ssd=edit, drop="resources/Building.fmu",
+                  add={"resources/Diaphragm.fmu": diaphragm_fmu().read_bytes()})
+    with pytest.raises(ssp.SSPError, match="the FMU of 'building' has no variable"):
+        ssp.read(bad)
+
+
 def test_adjacent_walls_cannot_be_written(tmp_path):
     with pytest.raises(ssp.SSPError, match="F_wall_1 takes the sum of 2 outputs"):
         ssp.write(bs.default_scene(2), tmp_path / "x.ssp")
@@ -133,3 +151,12 @@ def test_user_replaces_the_building(archive, tmp_path):
     r_old = bs.run(ssp.read(archive), pulse(), T_END, H)
     # a stiffer diaphragm moves less relative to its floor
     assert np.abs(r_new["u_diaph_2"] - r_new["u_floor_2"]).max() < 0.7 * np.abs(r_old["u_diaph_2"] - r_old["u_floor_2"]).max()
+
+
+def test_building_variables_the_master_reads_are_checked():
+    """A replacement building with the connected variables but not, e.g., the velocities."""
+    full = ssp._fmu_units(scene().building_fmu)
+    ssp._check_building_variables(scene(), full, "x.ssp")  # the Building has them all
+    lacking = {k: v for k, v in full.items() if not k.startswith("v_floor_")}
+    with pytest.raises(ssp.SSPError, match="lacks variables the master reads: v_floor_1, v_floor_2"):
+        ssp._check_building_variables(scene(), lacking, "x.ssp")
