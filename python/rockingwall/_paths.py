@@ -38,6 +38,10 @@ def diaphragm_fmu():
     return binary("Diaphragm.fmu")
 
 
+def building_fmu():
+    return binary("Building.fmu")
+
+
 def fmi2sim():
     return binary("fmi2sim")
 

@@ -63,7 +63,7 @@ class Scene:
     wall_fmu: str = None
 
     def __post_init__(self):
-        self.building_fmu = str(self.building_fmu or _paths.binary("Building.fmu"))
+        self.building_fmu = str(self.building_fmu or _paths.building_fmu())
         self.wall_fmu = str(self.wall_fmu or _paths.wall_fmu())
         n = self.n_storeys
         if not 1 <= n <= MAX_STOREYS:
