@@ -72,7 +72,8 @@ def parse_args(argv=None):
     p.add_argument("--fmu", help="with --engine fmi2sim (default: the installed RockingWall.fmu)")
     p.add_argument("--scheduler", help="address of a running Dask scheduler, or 'synchronous' (no Dask)")
     p.add_argument("--workers", type=int, default=os.cpu_count() or 1, help="LocalCluster workers (default: cores)")
-    p.add_argument("--batch", type=int, default=4, help="runs per Dask task (default 4)")
+    p.add_argument("--batch", type=int, help="runs per Dask task (default: 64 with the exact engine, whose runs take "
+                                            "milliseconds, so that Dask's per-task cost does not dominate; 4 with fmi2sim)")
     p.add_argument("--timeout", type=float, help="seconds a run may take before it is killed (default 600); "
                                                   "timed-out runs are retried on resume")
     p.add_argument("--dry-run", action="store_true", help="print the plan and its size, run nothing")
@@ -128,6 +129,8 @@ def check_artefacts(args):
 def check_command(args):
     """Refuse absurd execution options and an --out that cannot be a results file, before the
     (possibly long) planning."""
+    if args.batch is None:
+        args.batch = 64 if args.engine == "exact" else 4
     check_options(args.workers, args.batch, args.timeout)
     for n in args.scan_workers or []:
         check_options(n, args.batch, args.timeout)
