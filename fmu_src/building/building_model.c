@@ -27,7 +27,7 @@ static const fmu_var VARS[] = {BD_VARIABLES(BD_VAR)};
 /* slots of a floor's value references (BD_SLOT_OF): parameters, input, states, rates, outputs */
 enum {
     SLOT_M = 1, SLOT_K, SLOT_FY, SLOT_ALPHA, SLOT_MD, SLOT_KD, SLOT_FYD, SLOT_ALPHAD,
-    SLOT_F_WALL = 10,
+    SLOT_F_WALL = 10, SLOT_F_ABOVE = 11,
     SLOT_STATE = 20, /* 20..27: the floor's states in the order of building_physics.h */
     SLOT_RATE = 30,  /* 31, 32, 34..37: rates of the states 21, 22, 24..27 */
     SLOT_A_DIAPH = 40, SLOT_U_TOP, SLOT_V_STOREY, SLOT_DRIFT, SLOT_F_DIAPH, SLOT_D_DIAPH
@@ -99,6 +99,7 @@ static double floor_real(bd_data *S, int i, int slot, const double dx[BD_NX])
     if (slot >= SLOT_STATE && slot < SLOT_STATE + BD_STATES_PER_FLOOR) return xf[slot - SLOT_STATE];
     if (slot > SLOT_RATE && slot < SLOT_RATE + BD_STATES_PER_FLOOR) return dx[BD_STATES_PER_FLOOR * i + slot - SLOT_RATE];
     if (slot == SLOT_F_WALL) return S->in.F_wall[i];
+    if (slot == SLOT_F_ABOVE) return S->in.F_above[i];
     /* a floor above nStoreys is not there: its outputs read 0, not the floor below's negative */
     if (!active) return 0.0;
     switch (slot) {
@@ -195,6 +196,7 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
     param = floor_parameter(&S->P, floor - 1, slot);
     if (param) *param = value;
     else if (slot == SLOT_F_WALL) S->in.F_wall[floor - 1] = value;
+    else if (slot == SLOT_F_ABOVE) S->in.F_above[floor - 1] = value;
     else S->x[BD_STATES_PER_FLOOR * (floor - 1) + slot - SLOT_STATE] = value; /* a state's start value */
     return 0;
 }

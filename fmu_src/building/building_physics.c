@@ -72,7 +72,7 @@ double bd_diaphragm_acceleration(const bd_params *p, const bd_input *in, const d
     double c_floor, c_diaph;
     if (i >= p->n_storeys) return 0.0;
     damping_forces(p, x, i, &c_floor, &c_diaph);
-    return (-bd_diaphragm_force(p, x, i) + in->F_wall[i] - c_diaph) / p->md[i];
+    return (-bd_diaphragm_force(p, x, i) + in->F_wall[i] + in->F_above[i] - c_diaph) / p->md[i];
 }
 
 /* the 8 state rates of floor i */

@@ -3,8 +3,9 @@
  *
  *   floor i (the in-plane walls' level, mass m_i) on the storey spring i (the in-plane walls of
  *   storey i, between floor i-1 and floor i; floor 0 is the ground), and
- *   diaphragm i (mass md_i) on a spring relative to floor i; the out-of-plane walls' force
- *   F_wall_i acts on diaphragm i.
+ *   diaphragm i (mass md_i) on a spring relative to floor i; the out-of-plane walls' forces act
+ *   on diaphragm i: F_wall_i (the top spring of the wall below) and F_above_i (the base of the
+ *   wall standing on floor i), two inputs so that each takes one connection (SSP).
  *
  * Displacements relative to the ground; the ground acceleration ag enters as -m ag. Each spring is
  * linear or Bouc-Wen (hysteretic variable a continuous state, no events), the diaphragms
@@ -42,7 +43,8 @@ typedef struct {
 
 typedef struct {
     double ag;
-    double F_wall[BD_MAX_FLOORS];
+    double F_wall[BD_MAX_FLOORS];  /* the wall below's F_top */
+    double F_above[BD_MAX_FLOORS]; /* the wall above's F_base */
 } bd_input;
 
 /* external names (prefixed under FMI2_FUNCTION_PREFIX, see fmu_symbol.h) */

@@ -42,7 +42,8 @@ X(md_1, 105, "md_1", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_1, 106, "kd_1", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 1 relative to its floor, N/m per m (> 0)") \
 X(Fyd_1, 107, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (> 0)") \
 X(alphad_1, 108, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1, in [0, 1]") \
-X(F_wall_1, 110, "F_wall_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force of the out-of-plane walls on diaphragm 1, +x (F_top of the wall below + F_base of the wall above)") \
+X(F_wall_1, 110, "F_wall_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 1 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
+X(F_above_1, 111, "F_above_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 1 of the base of the out-of-plane wall standing on floor 1, +x (RockingWall F_base)") \
 X(u_floor_1, 120, "u_floor_1", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 1 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_1, 121, "v_floor_1", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 120, "Velocity of floor 1 relative to the ground (state, der(u_floor_1))") \
 X(der_v_floor_1, 131, "der(v_floor_1)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 121, "Acceleration of floor 1 relative to the ground") \
@@ -71,7 +72,8 @@ X(md_2, 205, "md_2", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_2, 206, "kd_2", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 2 relative to its floor, N/m per m (> 0)") \
 X(Fyd_2, 207, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (> 0)") \
 X(alphad_2, 208, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2, in [0, 1]") \
-X(F_wall_2, 210, "F_wall_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force of the out-of-plane walls on diaphragm 2, +x (F_top of the wall below + F_base of the wall above)") \
+X(F_wall_2, 210, "F_wall_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 2 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
+X(F_above_2, 211, "F_above_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 2 of the base of the out-of-plane wall standing on floor 2, +x (RockingWall F_base)") \
 X(u_floor_2, 220, "u_floor_2", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 2 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_2, 221, "v_floor_2", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 220, "Velocity of floor 2 relative to the ground (state, der(u_floor_2))") \
 X(der_v_floor_2, 231, "der(v_floor_2)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 221, "Acceleration of floor 2 relative to the ground") \
@@ -100,7 +102,8 @@ X(md_3, 305, "md_3", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_3, 306, "kd_3", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 3 relative to its floor, N/m per m (> 0)") \
 X(Fyd_3, 307, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (> 0)") \
 X(alphad_3, 308, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3, in [0, 1]") \
-X(F_wall_3, 310, "F_wall_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force of the out-of-plane walls on diaphragm 3, +x (F_top of the wall below + F_base of the wall above)") \
+X(F_wall_3, 310, "F_wall_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 3 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
+X(F_above_3, 311, "F_above_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 3 of the base of the out-of-plane wall standing on floor 3, +x (RockingWall F_base)") \
 X(u_floor_3, 320, "u_floor_3", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 3 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_3, 321, "v_floor_3", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 320, "Velocity of floor 3 relative to the ground (state, der(u_floor_3))") \
 X(der_v_floor_3, 331, "der(v_floor_3)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 321, "Acceleration of floor 3 relative to the ground") \
@@ -129,7 +132,8 @@ X(md_4, 405, "md_4", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_4, 406, "kd_4", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 4 relative to its floor, N/m per m (> 0)") \
 X(Fyd_4, 407, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (> 0)") \
 X(alphad_4, 408, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4, in [0, 1]") \
-X(F_wall_4, 410, "F_wall_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force of the out-of-plane walls on diaphragm 4, +x (F_top of the wall below + F_base of the wall above)") \
+X(F_wall_4, 410, "F_wall_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 4 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
+X(F_above_4, 411, "F_above_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 4 of the base of the out-of-plane wall standing on floor 4, +x (RockingWall F_base)") \
 X(u_floor_4, 420, "u_floor_4", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 4 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_4, 421, "v_floor_4", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 420, "Velocity of floor 4 relative to the ground (state, der(u_floor_4))") \
 X(der_v_floor_4, 431, "der(v_floor_4)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 421, "Acceleration of floor 4 relative to the ground") \
@@ -158,7 +162,8 @@ X(md_5, 505, "md_5", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_5, 506, "kd_5", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 5 relative to its floor, N/m per m (> 0)") \
 X(Fyd_5, 507, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (> 0)") \
 X(alphad_5, 508, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5, in [0, 1]") \
-X(F_wall_5, 510, "F_wall_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force of the out-of-plane walls on diaphragm 5, +x (F_top of the wall below + F_base of the wall above)") \
+X(F_wall_5, 510, "F_wall_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 5 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
+X(F_above_5, 511, "F_above_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 5 of the base of the out-of-plane wall standing on floor 5, +x (RockingWall F_base)") \
 X(u_floor_5, 520, "u_floor_5", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 5 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_5, 521, "v_floor_5", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 520, "Velocity of floor 5 relative to the ground (state, der(u_floor_5))") \
 X(der_v_floor_5, 531, "der(v_floor_5)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 521, "Acceleration of floor 5 relative to the ground") \
@@ -197,13 +202,13 @@ D(der_v_floor_1, "ag u_floor_1 u_floor_2 z_storey_1 z_storey_2 u_diaph_1 z_diaph
 D(der_z_storey_1, "v_floor_1 z_storey_1") \
 D(u_diaph_1, "u_diaph_1") \
 D(v_diaph_1, "v_diaph_1") \
-D(der_v_diaph_1, "ag u_floor_1 u_diaph_1 z_diaph_1 v_floor_1 v_diaph_1 F_wall_1") \
+D(der_v_diaph_1, "ag u_floor_1 u_diaph_1 z_diaph_1 v_floor_1 v_diaph_1 F_wall_1 F_above_1") \
 D(der_z_diaph_1, "v_floor_1 v_diaph_1 z_diaph_1") \
 D(work_storey_1, "work_storey_1") \
 D(der_work_storey_1, "u_floor_1 z_storey_1 v_floor_1") \
 D(work_diaph_1, "work_diaph_1") \
 D(der_work_diaph_1, "u_floor_1 u_diaph_1 z_diaph_1 v_floor_1 v_diaph_1") \
-D(a_diaph_1, "u_floor_1 u_diaph_1 z_diaph_1 v_floor_1 v_diaph_1 F_wall_1") \
+D(a_diaph_1, "u_floor_1 u_diaph_1 z_diaph_1 v_floor_1 v_diaph_1 F_wall_1 F_above_1") \
 D(u_top_1, "u_diaph_1") \
 D(V_storey_1, "u_floor_1 z_storey_1") \
 D(drift_1, "u_floor_1") \
@@ -214,13 +219,13 @@ D(der_v_floor_2, "ag u_floor_1 u_floor_2 u_floor_3 z_storey_2 z_storey_3 u_diaph
 D(der_z_storey_2, "v_floor_1 v_floor_2 z_storey_2") \
 D(u_diaph_2, "u_diaph_2") \
 D(v_diaph_2, "v_diaph_2") \
-D(der_v_diaph_2, "ag u_floor_2 u_diaph_2 z_diaph_2 v_floor_2 v_diaph_2 F_wall_2") \
+D(der_v_diaph_2, "ag u_floor_2 u_diaph_2 z_diaph_2 v_floor_2 v_diaph_2 F_wall_2 F_above_2") \
 D(der_z_diaph_2, "v_floor_2 v_diaph_2 z_diaph_2") \
 D(work_storey_2, "work_storey_2") \
 D(der_work_storey_2, "u_floor_1 u_floor_2 z_storey_2 v_floor_1 v_floor_2") \
 D(work_diaph_2, "work_diaph_2") \
 D(der_work_diaph_2, "u_floor_2 u_diaph_2 z_diaph_2 v_floor_2 v_diaph_2") \
-D(a_diaph_2, "u_floor_2 u_diaph_2 z_diaph_2 v_floor_2 v_diaph_2 F_wall_2") \
+D(a_diaph_2, "u_floor_2 u_diaph_2 z_diaph_2 v_floor_2 v_diaph_2 F_wall_2 F_above_2") \
 D(u_top_2, "u_diaph_1 u_diaph_2") \
 D(V_storey_2, "u_floor_1 u_floor_2 z_storey_2") \
 D(drift_2, "u_floor_1 u_floor_2") \
@@ -231,13 +236,13 @@ D(der_v_floor_3, "ag u_floor_2 u_floor_3 u_floor_4 z_storey_3 z_storey_4 u_diaph
 D(der_z_storey_3, "v_floor_2 v_floor_3 z_storey_3") \
 D(u_diaph_3, "u_diaph_3") \
 D(v_diaph_3, "v_diaph_3") \
-D(der_v_diaph_3, "ag u_floor_3 u_diaph_3 z_diaph_3 v_floor_3 v_diaph_3 F_wall_3") \
+D(der_v_diaph_3, "ag u_floor_3 u_diaph_3 z_diaph_3 v_floor_3 v_diaph_3 F_wall_3 F_above_3") \
 D(der_z_diaph_3, "v_floor_3 v_diaph_3 z_diaph_3") \
 D(work_storey_3, "work_storey_3") \
 D(der_work_storey_3, "u_floor_2 u_floor_3 z_storey_3 v_floor_2 v_floor_3") \
 D(work_diaph_3, "work_diaph_3") \
 D(der_work_diaph_3, "u_floor_3 u_diaph_3 z_diaph_3 v_floor_3 v_diaph_3") \
-D(a_diaph_3, "u_floor_3 u_diaph_3 z_diaph_3 v_floor_3 v_diaph_3 F_wall_3") \
+D(a_diaph_3, "u_floor_3 u_diaph_3 z_diaph_3 v_floor_3 v_diaph_3 F_wall_3 F_above_3") \
 D(u_top_3, "u_diaph_2 u_diaph_3") \
 D(V_storey_3, "u_floor_2 u_floor_3 z_storey_3") \
 D(drift_3, "u_floor_2 u_floor_3") \
@@ -248,13 +253,13 @@ D(der_v_floor_4, "ag u_floor_3 u_floor_4 u_floor_5 z_storey_4 z_storey_5 u_diaph
 D(der_z_storey_4, "v_floor_3 v_floor_4 z_storey_4") \
 D(u_diaph_4, "u_diaph_4") \
 D(v_diaph_4, "v_diaph_4") \
-D(der_v_diaph_4, "ag u_floor_4 u_diaph_4 z_diaph_4 v_floor_4 v_diaph_4 F_wall_4") \
+D(der_v_diaph_4, "ag u_floor_4 u_diaph_4 z_diaph_4 v_floor_4 v_diaph_4 F_wall_4 F_above_4") \
 D(der_z_diaph_4, "v_floor_4 v_diaph_4 z_diaph_4") \
 D(work_storey_4, "work_storey_4") \
 D(der_work_storey_4, "u_floor_3 u_floor_4 z_storey_4 v_floor_3 v_floor_4") \
 D(work_diaph_4, "work_diaph_4") \
 D(der_work_diaph_4, "u_floor_4 u_diaph_4 z_diaph_4 v_floor_4 v_diaph_4") \
-D(a_diaph_4, "u_floor_4 u_diaph_4 z_diaph_4 v_floor_4 v_diaph_4 F_wall_4") \
+D(a_diaph_4, "u_floor_4 u_diaph_4 z_diaph_4 v_floor_4 v_diaph_4 F_wall_4 F_above_4") \
 D(u_top_4, "u_diaph_3 u_diaph_4") \
 D(V_storey_4, "u_floor_3 u_floor_4 z_storey_4") \
 D(drift_4, "u_floor_3 u_floor_4") \
@@ -265,13 +270,13 @@ D(der_v_floor_5, "ag u_floor_4 u_floor_5 z_storey_5 u_diaph_5 z_diaph_5 v_floor_
 D(der_z_storey_5, "v_floor_4 v_floor_5 z_storey_5") \
 D(u_diaph_5, "u_diaph_5") \
 D(v_diaph_5, "v_diaph_5") \
-D(der_v_diaph_5, "ag u_floor_5 u_diaph_5 z_diaph_5 v_floor_5 v_diaph_5 F_wall_5") \
+D(der_v_diaph_5, "ag u_floor_5 u_diaph_5 z_diaph_5 v_floor_5 v_diaph_5 F_wall_5 F_above_5") \
 D(der_z_diaph_5, "v_floor_5 v_diaph_5 z_diaph_5") \
 D(work_storey_5, "work_storey_5") \
 D(der_work_storey_5, "u_floor_4 u_floor_5 z_storey_5 v_floor_4 v_floor_5") \
 D(work_diaph_5, "work_diaph_5") \
 D(der_work_diaph_5, "u_floor_5 u_diaph_5 z_diaph_5 v_floor_5 v_diaph_5") \
-D(a_diaph_5, "u_floor_5 u_diaph_5 z_diaph_5 v_floor_5 v_diaph_5 F_wall_5") \
+D(a_diaph_5, "u_floor_5 u_diaph_5 z_diaph_5 v_floor_5 v_diaph_5 F_wall_5 F_above_5") \
 D(u_top_5, "u_diaph_4 u_diaph_5") \
 D(V_storey_5, "u_floor_4 u_floor_5 z_storey_5") \
 D(drift_5, "u_floor_4 u_floor_5") \

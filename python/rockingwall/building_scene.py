@@ -5,13 +5,15 @@ The wall of storey i stands on floor i-1 (the ground for i = 1) and is tied to f
 
     wall_i.ag     <- building.a_diaph_{i-1}  (ag of the record for i = 1)   [m/s2, absolute, +x]
     wall_i.u_top  <- building.u_top_i  = y_i - y_{i-1}                      [m, rel. to its base]
-    building.F_wall_i <- wall_i.F_top + wall_{i+1}.F_base                   [N/m, on diaphragm i, +x]
+    building.F_wall_i  <- wall_i.F_top                                      [N/m, on diaphragm i, +x]
+    building.F_above_i <- wall_{i+1}.F_base                                 [N/m, on diaphragm i, +x]
     building.ag   <- ag of the record
 
 Signs (docs/model.md, docs/building.md): F_top = Kd (s2 - u_top) is the force of the wall's spring
 on the diaphragm it is tied to, F_base the force the wall puts on its base, both +x; F_wall_i is
-the force of the walls on diaphragm i, +x. So both add with a plus sign; the F_base of the wall of
-storey 1 goes into the ground.
+the force of the wall below on diaphragm i and F_above_i that of the wall above, +x; the Building
+adds them. The F_base of the wall of storey 1 goes into the ground. Each input takes one output,
+so the scene is also an SSP 1.0 system (rockingwall.ssp).
 
 Second-order coupling (`order=2`): every coupled input gets, besides its value at the
 communication point t_k, a first derivative through fmi2SetRealInputDerivatives, so the slave
@@ -84,14 +86,14 @@ class Scene:
         return next((w for w in self.walls if w.storey == storey), None)
 
     def connections(self):
-        """(from instance, from variable, to instance, to variable) of every coupled signal; the
-        inputs named more than once are sums (F_wall_i of F_top below and F_base above)."""
+        """(from instance, from variable, to instance, to variable) of every coupled signal, one
+        output to each input."""
         out = []
         for w in sorted(self.walls, key=lambda w: w.storey):
             i = w.storey
             if i > 1:
                 out.append(("building", f"a_diaph_{i - 1}", w.name, "ag"))
-                out.append((w.name, "F_base", "building", f"F_wall_{i - 1}"))
+                out.append((w.name, "F_base", "building", f"F_above_{i - 1}"))
             out.append(("building", f"u_top_{i}", w.name, "u_top"))
             out.append((w.name, "F_top", "building", f"F_wall_{i}"))
         return out
@@ -184,9 +186,9 @@ class _Exchange:
         self.order, self.H, self.previous = order, H, None
 
     def forget_forces(self):
-        """A wall fell out: the building's F_wall inputs jump; no slope across the jump."""
+        """A wall fell out: the building's force inputs jump; no slope across the jump."""
         if self.previous is not None:
-            self.previous = {k: v for k, v in self.previous.items() if not k[1].startswith("F_wall_")}
+            self.previous = {k: v for k, v in self.previous.items() if not k[1].startswith(("F_wall_", "F_above_"))}
 
     def slopes(self, values):
         if self.order < 2 or self.previous is None:
@@ -205,8 +207,8 @@ def _coupled_inputs(scene, b_out, w_out, ag, collapsed=()):
     values = {("building", "ag"): ag}
     for i in range(1, n + 1):
         below, above = standing.get(i), standing.get(i + 1)
-        F = (w_out[below.name]["F_top"] if below else 0.0) + (w_out[above.name]["F_base"] if above else 0.0)
-        values[("building", f"F_wall_{i}")] = F
+        values[("building", f"F_wall_{i}")] = w_out[below.name]["F_top"] if below else 0.0
+        values[("building", f"F_above_{i}")] = w_out[above.name]["F_base"] if above else 0.0
     for i, w in standing.items():
         values[(w.name, "ag")] = ag if i == 1 else b_out[f"a_diaph_{i - 1}"]
         values[(w.name, "u_top")] = b_out[f"u_top_{i}"]

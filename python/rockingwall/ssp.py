@@ -9,10 +9,8 @@ connections. `read` checks what a hand-edited file can get wrong and names it: a
 FMU is missing from the archive, a connection to a connector the component or its FMU does not
 have, a unit that differs between the two ends of a connection or from the FMU's own variable.
 
-Limitation of SSP 1.0: an input takes one connection. F_wall_i of the building is the sum of the
-F_top of the wall below and the F_base of the wall above, so a scene with walls in two adjacent
-storeys cannot be written (`write` says so); walls in non-adjacent storeys (a one-storey building,
-or a wall in the top storey of two) can.
+An SSP 1.0 input takes one connection: the building takes the wall below's F_top as F_wall_i and
+the wall above's F_base as F_above_i and adds them itself, so a wall in every storey can be written.
 
 A user replaces the Building FMU by putting another FMU into resources/ and pointing the
 component's `source` at it: it must have the variables the connections name.
@@ -85,8 +83,7 @@ def _check_single_sources(scene):
     ends = [(c, d) for _, _, c, d in scene.connections()]
     for end in set(ends):
         if ends.count(end) > 1:
-            raise SSPError(f"{end[0]}.{end[1]} takes the sum of {ends.count(end)} outputs (walls in adjacent "
-                           "storeys): an SSP 1.0 input takes one connection")
+            raise SSPError(f"{end[0]}.{end[1]} takes {ends.count(end)} connections: an SSP 1.0 input takes one")
 
 
 def ssd_xml(scene, sources):
@@ -198,7 +195,7 @@ def _check_building_variables(scene, variables, path):
     """The building FMU (perhaps a user's replacement) has every variable the master reads."""
     n = scene.n_storeys
     needed = ["ag", "rayleighMass", "rayleighStiffness"] + [
-        f"{q}_{i}" for i in range(1, n + 1) for q in FLOOR_OUT + ["F_wall", "m", "md", "k", "kd"]]
+        f"{q}_{i}" for i in range(1, n + 1) for q in FLOOR_OUT + ["F_wall", "F_above", "m", "md", "k", "kd"]]
     missing = [v for v in needed if v not in variables]
     if missing:
         raise SSPError(f"{path}: the building's FMU lacks variables the master reads: {', '.join(missing[:8])}"

@@ -120,7 +120,9 @@ def test_a_collapsed_wall_falls_out_and_the_rest_runs_on():
     after = r["time"] > t_c
     assert np.ptp(r["wall_1_s1"][after]) > 1e-3  # still rocking
     assert np.all(r["building_F_wall_2_in"][after] == 0.0) and np.abs(r["building_F_wall_2_in"][~after]).max() > 100.0
-    # F_wall_1 is the F_top of the wall below alone (the inputs were built from the outputs at the
-    # end of the previous step, before u_top was set: they differ by the coupling error)
+    # diaphragm 1 took the fallen wall's F_base through F_above_1 until it fell, nothing after
+    assert np.all(r["building_F_above_1_in"][after] == 0.0) and np.abs(r["building_F_above_1_in"][~after]).max() > 100.0
+    # F_wall_1 is the F_top of the wall below (the inputs were built from the outputs at the end of
+    # the previous step, before u_top was set: they differ by the coupling error)
     F_base_2 = np.abs(r["wall_2_F_base"][~after]).max()
     assert np.abs(r["building_F_wall_1_in"][after] - r["wall_1_F_top"][after]).max() < 0.05 * F_base_2

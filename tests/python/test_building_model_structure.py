@@ -21,7 +21,8 @@ def operating_point(seed):
         u, v = rng.uniform(-0.02, 0.02), rng.uniform(-0.2, 0.2)
         y, w = u + rng.uniform(-0.01, 0.01), rng.uniform(-0.2, 0.2)
         states += [u, v, rng.uniform(-0.8, 0.8), y, w, rng.uniform(-0.8, 0.8), rng.uniform(1, 5), rng.uniform(1, 5)]
-    inputs = dict(ag=rng.uniform(-2, 2), **{f"F_wall_{i}": rng.uniform(-500, 500) for i in range(1, 6)})
+    inputs = dict(ag=rng.uniform(-2, 2), **{f"F_{kind}_{i}": rng.uniform(-500, 500)
+                                            for kind in ("wall", "above") for i in range(1, 6)})
     return dict(states=tuple(states), inputs=inputs)
 
 

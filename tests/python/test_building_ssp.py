@@ -139,9 +139,17 @@ def test_replacement_building_without_the_masters_variables(archive, tmp_path):
         ssp.read(bad)
 
 
-def test_adjacent_walls_cannot_be_written(tmp_path):
-    with pytest.raises(ssp.SSPError, match="F_wall_1 takes the sum of 2 outputs"):
-        ssp.write(bs.default_scene(2), tmp_path / "x.ssp")
+def test_a_wall_in_every_storey_is_written_and_both_masters_agree(tmp_path):
+    """Walls in adjacent storeys: the wall above's F_base goes to the building's F_above_1, the wall
+    below's F_top to F_wall_1, one connection each; both masters agree on both walls, and the
+    archive runs as the in-process scene does."""
+    path = ssp.write(bs.default_scene(2, diaphragm_law=1), tmp_path / "both.ssp")
+    assert ("wall_2", "F_base", "building", "F_above_1") in ssp.read(path).connections()
+    check_masters_agree(path, 1)
+    check_masters_agree(path, 2)
+    direct = bs.run(bs.default_scene(2, diaphragm_law=1), pulse(), T_END, H, order=1, rtol=None)
+    via_ssp = bs.run(ssp.read(path), pulse(), T_END, H, order=1, rtol=None)
+    assert via_ssp.peak(1, "s1") == direct.peak(1, "s1") and via_ssp.peak(2, "s1") == direct.peak(2, "s1")
 
 
 def test_user_replaces_the_building(archive, tmp_path):

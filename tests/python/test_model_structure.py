@@ -60,7 +60,9 @@ class Probe:
             pass
         f.enterContinuousTimeMode()
         self.x0 = list(states)
-        self.u0 = {self.vars[n].valueReference: v for n, v in inputs.items()}
+        # every input set at each evaluation (a probed input must not keep its perturbed value)
+        self.u0 = {v.valueReference: 0.0 for v in self.inputs}
+        self.u0.update({self.vars[n].valueReference: v for n, v in inputs.items()})
 
     def close(self):
         self.fmu.terminate()
