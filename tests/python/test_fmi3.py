@@ -43,7 +43,7 @@ def el_centro():
     return inputs.el_centro(0.5)
 
 
-@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm"])
+@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm", "Building"])
 def test_fmpy_validates_the_fmi3_fmu(fmi3_dir, name):
     assert validate_fmu(str(fmi3_dir / f"{name}.fmu")) == []
 
