@@ -47,7 +47,8 @@ def fragility(frag, im_name, path):
         ax.set_xlabel(im_name)
         ax.grid(alpha=0.3)
     axes[0][0].set_ylabel("P(reached)")
-    axes[0][0].legend(fontsize=6, title="kN/m per m", title_fontsize=6)
+    if axes[0][0].get_legend_handles_labels()[0]:  # no fit at all: nothing to name
+        axes[0][0].legend(fontsize=6, title="kN/m per m", title_fontsize=6)
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
