@@ -93,7 +93,7 @@ static void test_nonfinite(void)
     const double nonfinite[] = {NAN, INFINITY, -INFINITY};
     const fmi2ValueReference params[] = {BD_VR_nBW, BD_VR_betaBW, BD_VR_pinchSize, BD_VR_rayleighMass, BD_VR_m_1,
                                          BD_VR_k_3, BD_VR_Fy_5, BD_VR_alphad_2, BD_VR_u_floor_1, BD_VR_z_diaph_4};
-    const fmi2ValueReference inputs[] = {BD_VR_ag, BD_VR_F_wall_1, BD_VR_F_wall_5};
+    const fmi2ValueReference inputs[] = {BD_VR_ag, BD_VR_F_wall_1, BD_VR_F_wall_5, BD_VR_F_above_1, BD_VR_F_above_5};
     size_t i, k;
     int s;
     for (k = 0; k < 3; k++) {
