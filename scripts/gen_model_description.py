@@ -86,6 +86,23 @@ LOG_CATEGORIES = [
 SOURCE_FILES = MODELS["RockingWall"]["sources"]
 
 
+def write_units_logs_experiment(w, model, variables):
+    """<UnitDefinitions>, <LogCategories> and <DefaultExperiment>: the same in FMI 2.0 and 3.0."""
+    w('  <UnitDefinitions>')
+    for unit in sorted({v["unit"] for v in variables if v["unit"]}):
+        attrs = "".join(f' {k}="{e}"' for k, e in UNITS[unit].items())
+        w(f'    <Unit name="{unit}"><BaseUnit{attrs}/></Unit>')
+    w('  </UnitDefinitions>')
+    w('  <LogCategories>')
+    for cat, desc in LOG_CATEGORIES:
+        w(f'    <Category name="{cat}" description="{escape(desc or model["log_events"])}"/>')
+    w('  </LogCategories>')
+    # stepSize: fmpy (and other importers) take it as the output / communication step, and in
+    # Co-Simulation the inputs are held over it: 5 ms keeps fmpy's defaults within 0.03 % of the
+    # converged peak s1 under El Centro (50 ms, fmpy's stop/500 here, was 24 % low on a soft wall)
+    w('  <DefaultExperiment startTime="0" stopTime="10" tolerance="1e-06" stepSize="0.005"/>')
+
+
 def _unquote(tok):
     return tok[1:-1].replace('\\"', '"') if tok.startswith('"') else tok
 
@@ -194,20 +211,7 @@ def generate(name="RockingWall"):
       'canInterpolateInputs="true" maxOutputDerivativeOrder="0" canRunAsynchronuously="false" '
       'canBeInstantiatedOnlyOncePerProcess="false" canNotUseMemoryManagementFunctions="false" '
       'canGetAndSetFMUstate="true" canSerializeFMUstate="true" providesDirectionalDerivative="false"/>')
-    w('  <UnitDefinitions>')
-    for name in sorted({v["unit"] for v in variables if v["unit"]}):
-        exps = UNITS[name]
-        attrs = "".join(f' {k}="{e}"' for k, e in exps.items())
-        w(f'    <Unit name="{name}"><BaseUnit{attrs}/></Unit>')
-    w('  </UnitDefinitions>')
-    w('  <LogCategories>')
-    for cat, desc in LOG_CATEGORIES:
-        w(f'    <Category name="{cat}" description="{escape(desc or model["log_events"])}"/>')
-    w('  </LogCategories>')
-    # stepSize: fmpy (and other importers) take it as the output / communication step, and in
-    # Co-Simulation the inputs are held over it: 5 ms keeps fmpy's defaults within 0.03 % of the
-    # converged peak s1 under El Centro (50 ms, fmpy's stop/500 here, was 24 % low on a soft wall)
-    w('  <DefaultExperiment startTime="0" stopTime="10" tolerance="1e-06" stepSize="0.005"/>')
+    write_units_logs_experiment(w, model, variables)
     w('  <ModelVariables>')
     for i, v in enumerate(variables, 1):
         attrs = f'name="{escape(v["name"])}" valueReference="{v["vr"]}" description="{escape(v["description"], {chr(34): "&quot;"})}"'
@@ -313,16 +317,7 @@ def generate3(name="RockingWall"):
     w(f'  <CoSimulation {common} canHandleVariableCommunicationStepSize="true" maxOutputDerivativeOrder="0" '
       'providesIntermediateUpdate="false" mightReturnEarlyFromDoStep="false" '
       'canReturnEarlyAfterIntermediateUpdate="false" hasEventMode="true" providesEvaluateDiscreteStates="false"/>')
-    w('  <UnitDefinitions>')
-    for unit in sorted({v["unit"] for v in variables if v["unit"]}):
-        attrs = "".join(f' {k}="{e}"' for k, e in UNITS[unit].items())
-        w(f'    <Unit name="{unit}"><BaseUnit{attrs}/></Unit>')
-    w('  </UnitDefinitions>')
-    w('  <LogCategories>')
-    for cat, desc in LOG_CATEGORIES:
-        w(f'    <Category name="{cat}" description="{escape(desc or model["log_events"])}"/>')
-    w('  </LogCategories>')
-    w('  <DefaultExperiment startTime="0" stopTime="10" tolerance="1e-06" stepSize="0.005"/>')
+    write_units_logs_experiment(w, model, variables)
     w('  <ModelVariables>')
     w(f'    <Float64 name="time" valueReference="{FMI3_TIME_VR}" description="Simulation time" '
       'causality="independent" variability="continuous"/>')
