@@ -7,7 +7,8 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from . import _paths, engine, fmi2sim, names
+from . import _paths, fmi2sim, names
+from . import engine as engine_module  # `engine` is simulate()'s argument
 from .records import Record
 from .wall import Wall
 
@@ -53,17 +54,12 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
-    return Result(wall, record.name, engine, peak_s1, peak_s2, _peak_f_top(wall, peak_s2), collapsed, t_collapse,
-                  impacts, history)
-
-
-def _peak_f_top(wall, peak_s2):
-    """F_top = K_d (s2 - u_top) with u_top = 0 (a wall on its own): K_d times the peak of s2."""
-    return wall.params["Kd"] * peak_s2 if int(wall.params["support"]) == 3 else 0.0
+    return Result(wall, record.name, engine, peak_s1, peak_s2, engine_module.peak_F_top(wall.params, peak_s2),
+                  collapsed, t_collapse, impacts, history)
 
 
 def _exact(wall, record, t_end, grid, rtol, output_interval):
-    r = engine.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    r = engine_module.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
     return r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts, r.s1, r.s2
 
 

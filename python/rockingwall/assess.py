@@ -122,12 +122,12 @@ def main(args):
     cases = run_cases(wall, recs, kds, args, states)
     frag = fragilities(cases, states)
     im_name = "PGA [g]" if args.pga else (f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]")
-    print(report(wall.replace(Kd=kds[0]), kds, states, cases, frag, im_name))
+    print(report(wall, kds, states, cases, frag, im_name))
     cc.write_atomic(out / "cases.csv", lambda tmp: cases.to_csv(tmp, index=False, float_format="%.6g"))
     cc.write_atomic(out / "fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
     from . import assess_plots
     for rec in recs:
-        cc.write_atomic(out / f"{_stem(rec.name)}.png",
+        cc.write_atomic(out / f"{cc.file_stem(rec.name)}.png",
                         lambda tmp, rec=rec: assess_plots.ida(cases[cases.record == rec.name], wall, states, im_name, tmp))
     cc.write_atomic(out / "fragility.png", lambda tmp: assess_plots.fragility(frag, im_name, tmp))
     print(f"wrote {out}/cases.csv, fragility.csv, fragility.png and {len(recs)} IDA plots", file=sys.stderr)
@@ -135,8 +135,7 @@ def main(args):
 
 
 def report(wall, kds, states, cases, frag, im_name):
-    described = wall.describe().split(", K_d = ")[0] + (", hinge law" + wall.describe().split(", hinge law")[1])
-    lines = [f"wall: {described}", "K_d: " + ", ".join(units.format_kd(k) for k in kds), f"Delta_u = {wall.delta_u * 1e3:.1f} mm; limit states: "
+    lines = [f"wall: {wall.describe(with_kd=False)}", "K_d: " + ", ".join(units.format_kd(k) for k in kds), f"Delta_u = {wall.delta_u * 1e3:.1f} mm; limit states: "
              + "; ".join(s.describe() for s in states)]
     if len(cases) <= 60:
         lines.append(f"{'record':<22}{'IM':>7}{'K_d kN/m/m':>11}{'s1 mm':>8}{'s2 mm':>8}{'F_top kN/m':>11}"
@@ -162,6 +161,3 @@ def report(wall, kds, states, cases, frag, im_name):
         lines += [f"  {x}" for x in back]
     return "\n".join(lines)
 
-
-def _stem(name):
-    return "".join(c if c.isalnum() or c in "-_." else "_" for c in name).strip("_") or "record"

@@ -74,6 +74,11 @@ def output_dir(path):
     return out
 
 
+def file_stem(name):
+    """A record's name as a file name: letters, digits, '-', '_' and '.' kept, the rest '_'."""
+    return "".join(c if c.isalnum() or c in "-_." else "_" for c in name).strip("_") or "record"
+
+
 def write_atomic(path, write):
     """write(tmp_path) into a temporary file beside `path`, renamed into place when it succeeded."""
     path = pathlib.Path(path)

@@ -5,6 +5,7 @@ the default hinge law (dohertyHinge).
 
 Prints the peak mid-height and top displacements beside the paper's, writes the time histories
 to a CSV and draws them (results/main_elcentro.csv, results/main_elcentro.png)."""
+import pathlib
 import sys
 
 import matplotlib
@@ -51,7 +52,7 @@ def main(argv=None):
         p2 = f"{paper_s2:.3f}" if (paper_s2 is not None and args.scale == 0.5) else "-"
         lines.append(f"{label:<24}{run.peak_s1:>12.4f}{p1:>8}{run.peak_s2:>13.4f}{p2:>8}{run.impacts:>9}  {run.collapsed}")
     print("\n" + "\n".join(lines))
-    (out / "main_job.txt").write_text("\n".join(lines) + "\n")
+    cc.write_atomic(out / "main_job.txt", lambda tmp: pathlib.Path(tmp).write_text("\n".join(lines) + "\n"))
 
     csv_path = out / "main_elcentro.csv"
     grid = runs[CASES[0][0]].history["time"]

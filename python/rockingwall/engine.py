@@ -143,6 +143,12 @@ def params(**values):
     return p
 
 
+def peak_F_top(params, peak_s2):
+    """Peak |F_top| [N/m] of a wall on its own (u_top = 0): F_top = Kd (s2 - u_top), so Kd times
+    the peak of s2 with the spring (support 3), else 0."""
+    return float(params["Kd"]) * peak_s2 if int(params["support"]) == 3 else 0.0
+
+
 def _ptr(a):
     return a.ctypes.data_as(ctypes.POINTER(ctypes.c_double)) if a is not None else None
 

@@ -4,7 +4,7 @@ out-of-plane demand better than PGA."""
 import numpy as np
 from scipy import signal
 
-G = 9.81
+from .records import G_STD as G
 
 
 def pga(record):

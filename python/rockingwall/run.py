@@ -39,7 +39,7 @@ def main(args):
     if args.out:
         out = cc.output_dir(args.out)
         for r in results:
-            stem = _stem(r.record)
+            stem = cc.file_stem(r.record)
             cc.write_atomic(out / f"{stem}.csv", lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
             cc.write_atomic(out / f"{stem}.png", lambda tmp, r=r: plot(r, tmp))
             print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
@@ -79,10 +79,6 @@ def plot(result, path):
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
 
-
-def _stem(name):
-    keep = "".join(c if c.isalnum() or c in "-_." else "_" for c in name)
-    return keep.strip("_") or "record"
 
 
 

@@ -86,11 +86,12 @@ class Wall:
         psi = self.params["psi"]
         return self.params["b"] * (1 + 0.75 * psi) / (1 + psi)
 
-    def describe(self):
+    def describe(self, with_kd=True):
+        """One line for titles and reports; with_kd=False leaves K_d out (a study over several)."""
         p = self.params
         return (f"b = {p['b']:g} m, h = {p['h']:g} m, W = {p['W'] / 1e3:g} kN/m, psi = {p['psi']:g}, "
                 f"e_r = {p['er']:g}, {names.SUPPORT_NAMES[int(p['support'])]}"
-                + (f", K_d = {units.format_kd(p['Kd'])}" if int(p["support"]) == 3 else "")
+                + (f", K_d = {units.format_kd(p['Kd'])}" if with_kd and int(p["support"]) == 3 else "")
                 + f", hinge law {names.HINGE_LAW_NAMES[int(p['hingeLaw'])]}")
 
 

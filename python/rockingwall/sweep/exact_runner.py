@@ -26,9 +26,8 @@ def run(spec, record):
         r = engine.run(t, np.asarray(ag) * float(spec["scale"]), t_end=float(spec["stop_time"]), **_params(spec))
     except (engine.EngineError, ValueError, KeyError) as exc:
         return _row(spec, ERROR, str(exc))
-    # F_top = Kd (s2 - u_top) with u_top = 0 in a sweep: its peak is Kd times the peak of s2
     params = _params(spec)
-    peak_f_top = params["Kd"] * r.peak_s2 if params.get("support") == 3 else 0.0
+    peak_f_top = engine.peak_F_top(params, r.peak_s2) if "Kd" in params else 0.0  # u_top = 0 in a sweep
     return _row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=peak_f_top, collapsed=bool(r.collapsed), impacts=int(r.impacts),
                 end_time=r.t_reached, steps=r.steps, cpu_s=time.process_time() - c0,
                 elapsed_s=time.perf_counter() - t0)
