@@ -58,28 +58,32 @@ def load_records(specs, csv_units):
     return out
 
 
-def scaled(record, args, level):
-    """(record at this intensity level, IM value of the level)."""
+def scale_factor(record, args, level, sa_record):
+    """(factor on the record for this intensity level, IM value of the level); sa_record is the
+    record's own Sa(T) (scaling the record scales it)."""
     if args.pga:
-        return record.to_pga(level), level
+        return level * intensity.G / record.pga, level
     if args.sa:
-        return record.scaled(level / intensity.sa(record, args.sa_period)), level
-    return record.scaled(level), record.pga * level / intensity.G
+        return level / sa_record, level
+    return level, record.pga * level / intensity.G
 
 
-def run_cases(wall, recs, kds, args, states):
+def run_cases(walls, recs, args, states):
+    """walls: {K_d: Wall}. One row per record, intensity level and K_d."""
     levels = args.pga or args.sa or args.scale
     rows = []
-    with tqdm(total=len(recs) * len(levels) * len(kds), desc="runs", unit="run", file=sys.stderr) as bar:
+    with tqdm(total=len(recs) * len(levels) * len(walls), desc="runs", unit="run", file=sys.stderr) as bar:
         for rec in recs:
+            sa_record = intensity.sa(rec, args.sa_period) if args.sa_period else np.nan  # once per record
             for level in levels:
-                case, im = scaled(rec, args, level)
-                sa = intensity.sa(case, args.sa_period) if args.sa_period else np.nan
-                for kd in kds:
-                    r = simulate(wall.replace(Kd=kd), case, engine=args.engine)
+                factor, im = scale_factor(rec, args, level, sa_record)
+                case = rec.scaled(factor)
+                for kd, wall in walls.items():
+                    r = simulate(wall, case, engine=args.engine)
                     peaks = dict(peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=r.peak_F_top, collapsed=r.collapsed)
-                    rows.append(dict(record=rec.name, level=level, im=im, pga_g=case.pga / intensity.G, sa_g=sa,
-                                     Kd_kN_per_m_per_m=kd / 1e3, peak_s1_mm=r.peak_s1 * 1e3, peak_s2_mm=r.peak_s2 * 1e3,
+                    rows.append(dict(record=rec.name, level=level, im=im, pga_g=case.pga / intensity.G,
+                                     sa_g=sa_record * factor, Kd_kN_per_m_per_m=kd / 1e3,
+                                     peak_s1_mm=r.peak_s1 * 1e3, peak_s2_mm=r.peak_s2 * 1e3,
                                      peak_F_top_kN_per_m=r.peak_F_top / 1e3, s1_over_Delta_u=r.s1_over_delta_u,
                                      collapsed=r.collapsed, impacts=r.impacts,
                                      **{s.name: s.exceeded(peaks) for s in states}))
@@ -114,12 +118,11 @@ def main(args):
     if args.sa and not args.sa_period:
         raise ValueError("--sa needs --sa-period")
     kds = sorted({units.parse(k, "N/m2", "K_d") for k in args.kd_values}) if args.kd_values else [wall.params["Kd"]]
-    for kd in kds:
-        wall.replace(Kd=kd)  # each K_d checked (range, plausibility warnings) before anything runs
+    walls = {kd: wall.replace(Kd=kd) for kd in kds}  # each K_d checked (range, plausibility) before any run
     states = limits.parse_all(args.limit, wall)
     recs = load_records(args.records, args.csv_units)
     out = cc.output_dir(args.out)
-    cases = run_cases(wall, recs, kds, args, states)
+    cases = run_cases(walls, recs, args, states)
     frag = fragilities(cases, states)
     im_name = "PGA [g]" if args.pga else (f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]")
     print(report(wall, kds, states, cases, frag, im_name))
