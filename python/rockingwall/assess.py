@@ -125,7 +125,6 @@ def main(args):
     cases = run_cases(walls, recs, args, states)
     frag = fragilities(cases, states)
     im_name = "PGA [g]" if args.pga else (f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]")
-    print(report(wall, kds, states, cases, frag, im_name))
     cc.write_atomic(out / "cases.csv", lambda tmp: cases.to_csv(tmp, index=False, float_format="%.6g"))
     cc.write_atomic(out / "fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
     from . import assess_plots
@@ -134,6 +133,7 @@ def main(args):
                         lambda tmp, rec=rec: assess_plots.ida(cases[cases.record == rec.name], wall, states, im_name, tmp))
     cc.write_atomic(out / "fragility.png", lambda tmp: assess_plots.fragility(frag, im_name, tmp))
     print(f"wrote {out}/cases.csv, fragility.csv, fragility.png and {len(recs)} IDA plots", file=sys.stderr)
+    print(report(wall, kds, states, cases, frag, im_name))  # last: a closed pipe cannot lose the files
     return 0
 
 

@@ -1,6 +1,7 @@
 """The `rockingwall` command: subcommands thin over the API (rockingwall <command> --help)."""
 import argparse
 import importlib
+import os
 import sys
 
 from . import __version__
@@ -46,6 +47,9 @@ def main(argv=None):
         return cc.fail(str(exc))
     except KeyboardInterrupt:
         return cc.fail("interrupted", 130)
+    except BrokenPipeError:  # the reader of standard output went away (| head): not an error of ours
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return 0
 
 
 if __name__ == "__main__":

@@ -29,6 +29,13 @@ def main(args):
     wall = cc.wall_from_args(args)
     results = [simulate(wall, cc.record_from_args(spec, args), engine=args.engine, stop_time=args.stop_time,
                         tail=args.tail, rtol=args.rtol) for spec in args.records]
+    if args.out:  # files first: a closed pipe on standard output cannot lose them
+        out = cc.output_dir(args.out)
+        for r in results:
+            stem = cc.file_stem(r.record)
+            cc.write_atomic(out / f"{stem}.csv", lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
+            cc.write_atomic(out / f"{stem}.png", lambda tmp, r=r: plot(r, tmp))
+            print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
     if args.json:
         json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u,
                    "runs": [dict(record=r.record, engine=r.engine, **r.peaks()) for r in results]},
@@ -36,13 +43,6 @@ def main(args):
         print()
     else:
         print(table(wall, results))
-    if args.out:
-        out = cc.output_dir(args.out)
-        for r in results:
-            stem = cc.file_stem(r.record)
-            cc.write_atomic(out / f"{stem}.csv", lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
-            cc.write_atomic(out / f"{stem}.png", lambda tmp, r=r: plot(r, tmp))
-            print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
     return 0
 
 
