@@ -188,6 +188,7 @@ static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key
 static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
 {
     rw_cache_entry *c = &e->cache[e->cache_next];
+    int i;
     e->cache_last = e->cache_next;
     e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
     memset(c, 0, sizeof *c);
@@ -196,6 +197,10 @@ static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[
     c->closed_m = cm;
     memcpy(c->key, key, sizeof c->key);
     c->E = *E;
+    for (i = 0; i < 2; i++) {
+        c->w[i] = sqrt(fabs(E->lam[i]));
+        c->col[i] = fmax(fabs(E->P[0][i]), fabs(E->P[1][i]));
+    }
     return c;
 }
 
@@ -258,12 +263,6 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2
     }
     return c;
 }
-
-/* The hinge moments of a region as Q = c + J q, where the law allows it (rw_hinge_law.q_only) */
-typedef struct {
-    int valid;
-    double c[2], J[2][2];
-} rw_affine_Q;
 
 /* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
  * cannot decompose it (msg filled). */
@@ -408,34 +407,33 @@ typedef struct {
     double amp_q[2]; /* bound of the fast modes' free oscillation in (q1, q2) */
 } rw_rates;
 
-static double mode_amplitude(const rw_span *sp, int i)
+/* the squared amplitude of mode i's free oscillation about its quasi-static solution */
+static double mode_amplitude2(const rw_span *sp, int i)
 {
     const double lam = sp->R->E.lam[i];
-    const double a = sp->eta[i] - sp->f0[i] / lam, b = (sp->v[i] - sp->f1[i] / lam) / sqrt(lam);
-    return sqrt(a * a + b * b); /* rotations and rates of a standing wall: no overflow (libm's hypot is slow) */
+    const double a = sp->eta[i] - sp->f0[i] / lam, b = sp->v[i] - sp->f1[i] / lam;
+    return a * a + b * b / lam;
 }
 
 static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
 {
+    const rw_cache_entry *R = sp->R;
+    const double small = 1e-12 * e->D.q_topple;
     double w[2] = {0.0, 0.0};
     int i;
     memset(r, 0, sizeof *r);
     for (i = 0; i < 2; i++) {
-        const double lam = sp->R->E.lam[i];
-        double col;
-        if (lam <= 0.0) { w[i] = sqrt(-lam); continue; }
-        col = fmax(fabs(sp->R->E.P[0][i]), fabs(sp->R->E.P[1][i]));
-        if (mode_amplitude(sp, i) * col > 1e-12 * e->D.q_topple) w[i] = sqrt(lam);
+        if (R->E.lam[i] <= 0.0 || mode_amplitude2(sp, i) * R->col[i] * R->col[i] > small * small) w[i] = R->w[i];
     }
     r->slow_rate = floor_rate;
     for (i = 0; i < 2; i++) {
         const double other = fmax(floor_rate, w[1 - i]);
-        if (sp->R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
-            const double amp = mode_amplitude(sp, i);
+        if (R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
+            const double amp = sqrt(mode_amplitude2(sp, i)); /* rotations of a standing wall: no overflow */
             r->fast[i] = r->any_fast = 1;
             r->fast_rate = fmax(r->fast_rate, w[i]);
-            r->amp_q[0] += amp * fabs(sp->R->E.P[0][i]);
-            r->amp_q[1] += amp * fabs(sp->R->E.P[1][i]);
+            r->amp_q[0] += amp * fabs(R->E.P[0][i]);
+            r->amp_q[1] += amp * fabs(R->E.P[1][i]);
         } else {
             r->slow_rate = fmax(r->slow_rate, w[i]);
         }
@@ -472,19 +470,35 @@ static void indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     }
 }
 
+/* The indicators of `mask` and their rates at the point x (moving at xd) of the span's motion: as
+ * indicators(), the rates from the shared physics (rw_event_indicator_rates) */
+static void indicators_and_rates(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
+                                 const double x[RW_NX], const double xd[RW_NX], unsigned mask, double z[RW_NZ],
+                                 double dz[RW_NZ])
+{
+    const rw_input rate = {sp->ag1, sp->u1};
+    int k;
+    for (k = 0; k < RW_NZ; k++) z[k] = 1.0;
+    if (sp->aq.valid) {
+        const rw_affine_Q *a = &sp->aq;
+        const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
+                             a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
+        rw_event_indicator_rates(&e->P, &e->D, m, in, &rate, x, xd, Q, (const double(*)[2])a->J, mask, z, dz);
+        if (((mask >> RW_Z_COLLAPSE) & 1u) && fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE) /* see indicators() */
+            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, 1u << RW_Z_COLLAPSE, z);
+    } else {
+        rw_event_indicator_rates(&e->P, &e->D, m, in, &rate, x, xd, NULL, NULL, mask, z, dz);
+    }
+}
+
 static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
                        rw_point *pt)
 {
-    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
-    const double dl = 1e-9; /* s: a difference along the exact motion (only signs are used) */
-    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
-    int i;
+    double xd[RW_NX];
+    rw_input in = span_input(sp, s);
     pt->s = s;
     span_eval(sp, s, C, pt->x, xd);
-    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
-    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
-    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
+    indicators_and_rates(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
 static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
@@ -546,6 +560,62 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
     return hi;
 }
 
+/* indicator k and its rate at s */
+static double indicator_and_rate_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s,
+                                    double *rate)
+{
+    double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ];
+    rw_input in = span_input(sp, s);
+    span_eval(sp, s, NULL, x, xd);
+    indicators_and_rates(e, m, sp, &in, x, xd, 1u << k, z, dz);
+    *rate = dz[k];
+    return z[k];
+}
+
+/* The first s in (lo, hi] where indicator k leaves the state `was` (the state at lo), to a few ulps
+ * of the absolute time, from the guess (NaN: none): Newton steps on the exact motion with the
+ * indicator's rate, kept inside the bracket (else a regula falsi step, and a bisection when three
+ * steps have not halved it). Near the root the last Newton step is taken a little past it, so that
+ * the bracket closes. Returns hi, the first point known to be past the root. */
+static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, double lo,
+                          double flo, double hi, double fhi, double guess)
+{
+    double width_before = hi - lo, s = guess;
+    int it, past;
+    for (it = 0; it < 200; it++) {
+        const double tol = 4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300;
+        double fs, rate, step;
+        if (hi - lo <= tol) break;
+        if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
+            if (it > 0 && hi - lo > 0.5 * width_before) s = 0.5 * (lo + hi);
+            width_before = hi - lo;
+        }
+        if (!(s > lo && s < hi)) s = fhi != flo ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
+        if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
+        if (!(s > lo && s < hi)) break; /* adjacent doubles */
+        fs = indicator_and_rate_at(e, m, sp, k, s, &rate);
+        past = (fs > 0.0) != was;
+        if (past) hi = s, fhi = fs;
+        else lo = s, flo = fs;
+        step = rate != 0.0 ? -fs / rate : NAN;
+        /* within rounding of the root the step's direction is noise: probe half the tolerance
+         * toward the other end of the bracket, so that it closes */
+        if (fabs(step) < 0.5 * tol) step = (past ? -0.5 : 0.5) * tol;
+        s += step; /* NaN or outside the bracket: the fallback above */
+    }
+    return hi;
+}
+
+/* The common case of hermite_keeps_sign, with no square root: the interpolant is a convex
+ * combination of za, zb plus at most 4/27 of |ma| + |mb|, so ends of one sign that far from zero
+ * (with hermite_keeps_sign's margin) keep it */
+static int far_from_zero(double za, double da, double zb, double db, double L)
+{
+    const double ma = fabs(L * da), mb = fabs(L * db);
+    const double margin = 0.05 * (ma + mb + fabs(zb - za));
+    return za * zb > 0.0 && fmin(fabs(za), fabs(zb)) - 4.0 / 27.0 * (ma + mb) >= margin;
+}
+
 /* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
  * margin larger than its error? The end values are exact; within a substep every significant mode
  * turns by at most 1 rad, where the interpolation error is below 0.3 % of the swing, and the
@@ -561,9 +631,7 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     const int sign = za + zb > 0.0;
     double roots[2];
     int n = 0, i;
-    /* the interpolant is a convex combination of za, zb plus at most 4/27 of |ma| + |mb|: ends of one
-     * sign that far from zero keep it without the extremum (the common case, no square root) */
-    if (za * zb > 0.0 && fmin(fabs(za), fabs(zb)) - 4.0 / 27.0 * (fabs(ma) + fabs(mb)) >= margin) return 1;
+    if (far_from_zero(za, da, zb, db, L)) return 1;
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -661,18 +729,31 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
         double guess = NAN;
         if ((b->z[k] > 0.0) == was) {
-            if (!dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
+            if (far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s) ||
+                !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi))
+                continue;
         } else if ((a->z[k] > 0.0) == was) {
             guess = a->s + (b->s - a->s) * hermite_root(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
         }
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
-        s = find_switch(indicator_at, e, m, sp, k, lo, flo, hi, fhi, 0.0, guess);
+        s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess);
         if (!found || s < best) best = s;
         found = 1;
     }
     *s_event = best;
     return found;
+}
+
+/* A range that holds hermite_range's (below) (wider, no extremum, no square root): the interpolant is a
+ * convex combination of za, zb plus at most 4/27 of |ma| + |mb|. A substep quiet under it is quiet
+ * under the exact range; only the others need that. */
+static void hermite_range_bound(double za, double da, double zb, double db, double L, double *lo, double *hi)
+{
+    const double ma = L * da, mb = L * db;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
+    *lo = fmin(za, zb) - swing - margin;
+    *hi = fmax(za, zb) + swing + margin;
 }
 
 /* ---- peaks and output grid along a span ----------------------------------------------------- */
@@ -705,8 +786,13 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
     for (w = 0; w < 2; w++) {
         double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
         const double ra = s_of(&e->P, w, va), rb = s_of(&e->P, w, vb);
+        const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
+        double lo, hi;
         track_peak(e, w, s_of(&e->P, w, xb));
-        if ((ra > 0.0) != (rb > 0.0) && sb > sa) {
+        if ((ra > 0.0) == (rb > 0.0) || !(sb > sa)) continue;
+        /* the turning point matters only if it can pass the peak so far */
+        hermite_range_bound(s_of(&e->P, w, xa), ra, s_of(&e->P, w, xb), rb, sb - sa, &lo, &hi);
+        if (fmax(-lo, hi) >= peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
             const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
@@ -760,6 +846,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         e->same_instant = 0;
     }
     e->t_last_event = t;
+    e->region_valid = e->carry_valid = 0;
     do {
         const double energy = rw_energy(&e->P, &e->D, m, in, x);
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
@@ -823,6 +910,30 @@ static int substeps_for(double rate, double *len)
     return (int)RW_MAX_SUBSTEPS;
 }
 
+/* The start point of a span: the end point of the span before, where that holds (rw_engine.carry) */
+static void start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *pa)
+{
+    const int closed = e->rigid && (m->closed_b || m->closed_m);
+    if (e->carry_valid && e->region_valid && !closed && e->carry_t == sp->t0 &&
+        memcmp(e->carry_x, sp->x0, sizeof e->carry_x) == 0) {
+        pa->s = 0.0;
+        memcpy(pa->x, e->carry_x, sizeof pa->x);
+        memcpy(pa->z, e->carry_z, sizeof pa->z);
+        memcpy(pa->dz, e->carry_dz, sizeof pa->dz);
+        return;
+    }
+    eval_point(e, m, sp, 0.0, NULL, pa);
+}
+
+static void carry_point(rw_engine *e, const rw_point *pb, double t)
+{
+    e->carry_valid = 1;
+    e->carry_t = t;
+    memcpy(e->carry_x, pb->x, sizeof e->carry_x);
+    memcpy(e->carry_z, pb->z, sizeof e->carry_z);
+    memcpy(e->carry_dz, pb->dz, sizeof e->carry_dz);
+}
+
 /* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
  * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
  * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
@@ -834,7 +945,7 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
     const double h = len / n, t_end = sp->t0 + len;
     rw_point pa, pb;
     int j;
-    eval_point(e, m, sp, 0.0, NULL, &pa);
+    start_point(e, m, sp, &pa);
     for (j = 0; j < n; j++) {
         double s_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
@@ -857,6 +968,7 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
         memcpy(x, pb.x, sizeof pb.x);
         if (j == n - 1) {
             *t = t_end;
+            carry_point(e, &pb, t_end);
         } else { /* the next piece starts here */
             span_start(sp, R, g0, sp->t0 + h, pb.x, in, t_in);
             *t = sp->t0;
@@ -909,17 +1021,6 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     *hi += margin;
 }
 
-/* A range that holds hermite_range's (wider, no extremum, no square root): the interpolant is a
- * convex combination of za, zb plus at most 4/27 of |ma| + |mb|. A substep quiet under it is quiet
- * under the exact range; only the others need that. */
-static void hermite_range_bound(double za, double da, double zb, double db, double L, double *lo, double *hi)
-{
-    const double ma = L * da, mb = L * db;
-    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
-    *lo = fmin(za, zb) - swing - margin;
-    *hi = fmax(za, zb) + swing + margin;
-}
-
 static int indicator_clear(int state, double lo, double hi, double band)
 {
     return state ? lo > band : hi < -band;
@@ -928,16 +1029,11 @@ static int indicator_clear(int state, double lo, double hi, double band)
 static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
                             rw_point *pt)
 {
-    double xd[RW_NX], xp[RW_NX], zp[RW_NZ];
-    const double dl = 1e-9;
-    rw_input in = span_input(sp, s), ip = span_input(sp, s + dl);
-    int i;
+    double xd[RW_NX];
+    rw_input in = span_input(sp, s);
     pt->s = s;
     span_eval_part(sp, s, NULL, fast, pt->x, xd);
-    indicators(e, m, sp, &in, pt->x, RW_Z_ALL, pt->z);
-    for (i = 0; i < RW_NX; i++) xp[i] = pt->x[i] + dl * xd[i];
-    indicators(e, m, sp, &ip, xp, RW_Z_ALL, zp);
-    for (i = 0; i < RW_NZ; i++) pt->dz[i] = (zp[i] - pt->z[i]) / dl;
+    indicators_and_rates(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
 /* how much the band can change each indicator, near the slow point a */
@@ -1041,6 +1137,29 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 }
 
 /* ---- the stepper ------------------------------------------------------------------------------ */
+/* The region of the motion at (x, t): kept from one input segment to the next, since without an
+ * event no indicator, so no breakpoint and no mode, has changed; found again after each event. */
+static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const double x[RW_NX], double t,
+                                      const rw_linear_input *in, double t_in, double g0[2], rw_affine_Q *aq)
+{
+    rw_cache_entry *R;
+    if (!e->region_valid) {
+        rw_input now;
+        double dq_sel[2];
+        now.ag = in->ag + in->ag_slope * (t - t_in);
+        now.u_top = in->u_top + in->u_slope * (t - t_in);
+        selection_rate(e, m, &now, x, dq_sel);
+        R = region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
+        if (!R) return NULL;
+        e->region = (int)(R - e->cache);
+        e->region_valid = 1;
+    }
+    memcpy(g0, e->region_g0, sizeof e->region_g0);
+    *aq = e->region_aq;
+    return &e->cache[e->region];
+}
+
+
 /* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
  * (x, t at the collapse), or an error code + 1. */
 static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
@@ -1049,14 +1168,10 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
     while (*t < t_end) {
         rw_span sp;
         rw_rates r;
-        double g0[2], dq_sel[2], span_len, h, span_end;
-        rw_input now;
+        double g0[2], span_len, h, span_end;
         rw_cache_entry *R;
         int n, j, rc = 0;
-        now.ag = in->ag + in->ag_slope * (*t - t_in);
-        now.u_top = in->u_top + in->u_slope * (*t - t_in);
-        selection_rate(e, m, &now, x, dq_sel);
-        R = region_of(e, m, x, dq_sel, g0, &sp.aq);
+        R = current_region(e, m, x, *t, in, t_in, g0, &sp.aq);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
         span_rates(e, &sp, rocking_rate(e), &r);
@@ -1147,6 +1262,7 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     /* the engine may be a byte copy restored from a serialized FMU state (fmi2SetFMUstate), made
      * by another process: its one reference into this binary, the law, is taken again */
     e->law = rw_hinge_law_of(e->P.hingeLaw);
+    e->region_valid = e->carry_valid = 0; /* the caller owns x and m between steps */
     now.ag = in->ag;
     now.u_top = in->u_top;
     *t_reached = t;

@@ -103,10 +103,18 @@ typedef struct {
     double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
 } rw_modes2;
 
+/* The hinge moments of a region as Q = c + J q, where the law allows it (rw_hinge_law.q_only) */
+typedef struct {
+    int valid;
+    double c[2], J[2][2];
+} rw_affine_Q;
+
 typedef struct {
     int used, closed_b, closed_m;
     double key[4]; /* J (2DOF) or the 1DOF slope */
     rw_modes2 E;
+    double w[2];   /* sqrt(|lam|) of each mode */
+    double col[2]; /* max |P[.][i]|: mode i's largest share of a rotation */
     double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
     int h_valid[2], h_next;
 } rw_cache_entry;
@@ -119,6 +127,16 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     rw_cache_entry cache[RW_CACHE_SIZE];
     int cache_next;
     int cache_last; /* the entry found last: consecutive input segments mostly stay in one region */
+    /* the region of the current motion (a cache index), kept from one input segment to the next
+     * until an event */
+    int region_valid, region;
+    double region_g0[2];
+    rw_affine_Q region_aq;
+    /* the end point of the last resolved span (time, state, indicators and their rates): the next
+     * input segment starts there, and without an event in between only the closed hinges'
+     * indicators, which depend on the input's rate, differ */
+    int carry_valid;
+    double carry_t, carry_x[RW_NX], carry_z[RW_NZ], carry_dz[RW_NZ];
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
     double peak_s1, peak_s2;

@@ -128,7 +128,7 @@ static int base_past_elastic(const rw_params *p, const rw_derived *d, const doub
     double z[RW_NBREAK];
     const double margin = 1e-6 * 2.0 * d->D1 / p->h;
     if (p->support == RW_SIMPLY_SUPPORTED) return fabs(x[0]) - 2.0 * d->D1 / p->h >= -margin;
-    rw_hinge_law_of(p->hingeLaw)->breakpoints(d, x, z);
+    rw_hinge_law_of(p->hingeLaw)->breakpoints(d, x, NULL, z, NULL);
     return z[0] >= -margin;
 }
 

@@ -261,60 +261,153 @@ static int wanted(unsigned mask, int k)
     return (mask >> k) & 1u;
 }
 
+/* Where an indicator's rate is wanted (rw_event_indicator_rates): the motion and the rates out */
+typedef struct {
+    const rw_input *in_rate;
+    const double *xd;
+    const double (*J)[2]; /* dQ/dq at x (NULL: from the law) */
+    double *dz;
+} rw_rate_request;
+
+/* 1 - |f|/cap + eps of a closed rigid hinge and its rate: f is affine in the inputs and one
+ * rotation (rw_closed_forces), so its rate is the difference over any step along the motion */
+static void closed_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                              const double x[RW_NX], double cb, double cm, double z[2], const rw_rate_request *r,
+                              double dz[2])
+{
+    double f_b, f_m;
+    rw_closed_forces(p, d, m, in, x, &f_b, &f_m);
+    z[0] = 1.0 - fabs(f_b) / cb + RW_EPS_F;
+    z[1] = 1.0 - fabs(f_m) / cm + RW_EPS_F;
+    if (r) {
+        const rw_input in1 = {in->ag + r->in_rate->ag, in->u_top + r->in_rate->u_top};
+        const double x1[RW_NX] = {x[0] + r->xd[0], x[1] + r->xd[1], x[2] + r->xd[2], x[3] + r->xd[3]};
+        double g_b, g_m;
+        rw_closed_forces(p, d, m, &in1, x1, &g_b, &g_m);
+        dz[0] = -sgn(f_b) * (g_b - f_b) / cb;
+        dz[1] = -sgn(f_m) * (g_m - f_m) / cm;
+    }
+}
+
 /* the hinge indicators (base, mid) */
 static void hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
-                             const double x[RW_NX], unsigned mask, double z[RW_NZ])
+                             const double x[RW_NX], unsigned mask, double z[RW_NZ], const rw_rate_request *r)
 {
     /* Hinge indicators carry a small offset so that none is exactly zero when integration restarts
      * after the event that set the mode (CVODE ignores a root function that starts at zero):
      * open: side*rotation + eps_q, root just past zero (|rotation| < tiny, so the direction of
      * motion decides in rw_event_update); closed: margin + eps_f, root just past |f| = cap. */
-    const double eps_q = RW_EPS_Q(d), eps_f = RW_EPS_F;
-    const int rigid = rw_is_rigid(p);
-    double f_b = 0.0, f_m = 0.0, cb, cm;
+    const double eps_q = RW_EPS_Q(d);
+    const int rigid = rw_is_rigid(p), flexible = p->support == RW_FLEXIBLE_TOP;
+    double cb, cm, zc[2] = {1.0, 1.0}, dzc[2] = {0.0, 0.0};
     rw_caps(p, d, &cb, &cm);
-    if (rigid && (m->closed_b || m->closed_m)) rw_closed_forces(p, d, m, in, x, &f_b, &f_m);
-    if (wanted(mask, RW_Z_BASE))
-        z[RW_Z_BASE] = (rigid && m->closed_b) ? 1.0 - fabs(f_b) / cb + eps_f : m->side_b * x[0] + fmax(eps_q, m->zoff_b);
-    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_MID))
-        z[RW_Z_MID] = (rigid && m->closed_m) ? 1.0 - fabs(f_m) / cm + eps_f : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
+    if (rigid && (m->closed_b || m->closed_m)) closed_indicators(p, d, m, in, x, cb, cm, zc, r, dzc);
+    if (wanted(mask, RW_Z_BASE)) {
+        const int closed = rigid && m->closed_b;
+        z[RW_Z_BASE] = closed ? zc[0] : m->side_b * x[0] + fmax(eps_q, m->zoff_b);
+        if (r) r->dz[RW_Z_BASE] = closed ? dzc[0] : m->side_b * r->xd[0];
+    }
+    if (flexible && wanted(mask, RW_Z_MID)) {
+        const int closed = rigid && m->closed_m;
+        z[RW_Z_MID] = closed ? zc[1] : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
+        if (r) r->dz[RW_Z_MID] = closed ? dzc[1] : m->side_m * (r->xd[1] - r->xd[0]);
+    }
+}
+
+/* G(q)/|q|^2/zscale of the 2DOF, clipped, and its rate: with G = q.(K q - Q(q)) and K symmetric,
+ * dG = 2 q.K dq - dq.Q - q.J dq */
+static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+                            const double *Q, const rw_rate_request *r, double *dz)
+{
+    const double q1 = x[0], q2 = x[1], n2 = q1 * q1 + q2 * q2, zmax = 1e3;
+    double Ql[2], J[2][2], v;
+    const double *Qx = Q;
+    const double (*Jx)[2] = r ? r->J : NULL;
+    if (dz) *dz = 0.0;
+    if (!(n2 > 0.0)) return zmax; /* +large near q = 0 for rigid hinges */
+    if (!Qx) {
+        law(p)->moments(d, side_of(q1, m->side_b), side_of(q2 - q1, m->side_m), x, x + 2, Ql, J);
+        Qx = Ql;
+        Jx = (const double(*)[2])J;
+    }
+    v = rw_collapse_G_of(d, x, Qx) / n2 / d->zscale;
+    if (v > zmax) return zmax;
+    if (r) {
+        const double dq1 = r->xd[0], dq2 = r->xd[1];
+        const double Kd1 = d->K[0][0] * dq1 + d->K[0][1] * dq2, Kd2 = d->K[1][0] * dq1 + d->K[1][1] * dq2;
+        const double Jd1 = Jx[0][0] * dq1 + Jx[0][1] * dq2, Jd2 = Jx[1][0] * dq1 + Jx[1][1] * dq2;
+        const double dG = 2.0 * (q1 * Kd1 + q2 * Kd2) - (dq1 * Qx[0] + dq2 * Qx[1]) - (q1 * Jd1 + q2 * Jd2);
+        *dz = (dG / d->zscale - 2.0 * v * (q1 * dq1 + q2 * dq2)) / n2;
+    }
+    return v;
 }
 
 /* the collapse indicator (Q: the hinge moments at x, NULL = from the law) */
-static double collapse_indicator(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
-                                 const double x[RW_NX], const double *Q)
+static double collapse_indicator(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+                                 const double *Q, const rw_rate_request *r)
 {
-    if (p->support == RW_PARAPET) return 1.0 - fabs(x[0]) / d->alpha;
-    if (p->support == RW_SIMPLY_SUPPORTED) return 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
-    {
-        /* G(q)/|q|^2 (clipped): scale-free, +large near q = 0 for rigid hinges, root where G = 0 */
-        const double n2 = x[0] * x[0] + x[1] * x[1], zmax = 1e3;
-        double v = zmax;
-        if (n2 > 0.0) {
-            v = (Q ? rw_collapse_G_of(d, x, Q) : rw_collapse_G(p, d, m, in, x)) / n2 / d->zscale;
-            if (v > zmax) v = zmax;
-        }
-        return v;
+    double *dz = r ? &r->dz[RW_Z_COLLAPSE] : NULL;
+    if (p->support == RW_PARAPET) {
+        if (dz) *dz = -sgn(x[0]) * (r->xd[0]) / d->alpha;
+        return 1.0 - fabs(x[0]) / d->alpha;
     }
+    if (p->support == RW_SIMPLY_SUPPORTED) {
+        if (dz) *dz = -sgn(x[0]) * r->xd[0] * p->h / 2.0 / d->Du;
+        return 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
+    }
+    return collapse_2dof(p, d, m, x, Q, r, dz);
+}
+
+/* 1 - max(|q1|, |q2|)/q_topple and its rate */
+static double topple_indicator(const rw_derived *d, const double x[RW_NX], const rw_rate_request *r)
+{
+    const int i = fabs(x[0]) >= fabs(x[1]) ? 0 : 1;
+    if (r) r->dz[RW_Z_TOPPLE] = -sgn(x[i]) * r->xd[i] / d->q_topple;
+    return 1.0 - fabs(x[i]) / d->q_topple;
+}
+
+static void breakpoint_indicators(const rw_params *p, const rw_derived *d, const double x[RW_NX], double z[RW_NZ],
+                                  const rw_rate_request *r)
+{
+    double *zb = z + RW_Z_BREAK, *dzb = r ? r->dz + RW_Z_BREAK : NULL;
+    if (p->support == RW_SIMPLY_SUPPORTED && !rw_is_rigid(p)) {
+        const double lim[2] = {2.0 * d->D1 / p->h, 2.0 * d->D2 / p->h};
+        int i;
+        for (i = 0; i < 2; i++) {
+            zb[i] = fabs(x[0]) - lim[i];
+            if (dzb) dzb[i] = sgn(x[0]) * r->xd[0];
+        }
+    } else if (p->support == RW_FLEXIBLE_TOP) {
+        law(p)->breakpoints(d, x, r ? r->xd : NULL, zb, dzb);
+    }
+}
+
+static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                          const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ],
+                          const rw_rate_request *r)
+{
+    const unsigned breaks = ((1u << RW_NBREAK) - 1u) << RW_Z_BREAK;
+    if (mask & ((1u << RW_Z_BASE) | (1u << RW_Z_MID))) hinge_indicators(p, d, m, in, x, mask, z, r);
+    if (mask & breaks) breakpoint_indicators(p, d, x, z, r); /* the law's kinks of Q(q) */
+    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = topple_indicator(d, x, r);
+    if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, x, Q, r);
 }
 
 void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ])
 {
-    const unsigned breaks = ((1u << RW_NBREAK) - 1u) << RW_Z_BREAK;
-    if (mask & ((1u << RW_Z_BASE) | (1u << RW_Z_MID))) hinge_indicators(p, d, m, in, x, mask, z);
-    /* breakpoints of the hinge laws */
-    if (mask & breaks) {
-        if (p->support == RW_SIMPLY_SUPPORTED && !rw_is_rigid(p)) {
-            z[RW_Z_BREAK] = fabs(x[0]) - 2.0 * d->D1 / p->h;
-            z[RW_Z_BREAK + 1] = fabs(x[0]) - 2.0 * d->D2 / p->h;
-        } else if (p->support == RW_FLEXIBLE_TOP) {
-            law(p)->breakpoints(d, x, z + RW_Z_BREAK);
-        }
-    }
-    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE))
-        z[RW_Z_TOPPLE] = 1.0 - fmax(fabs(x[0]), fabs(x[1])) / d->q_topple;
-    if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, in, x, Q);
+    indicators_of(p, d, m, in, x, Q, mask, z, NULL);
+}
+
+void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                              const rw_input *in_rate, const double x[RW_NX], const double xd[RW_NX],
+                              const double *Q, const double (*J)[2], unsigned mask, double z[RW_NZ],
+                              double dz[RW_NZ])
+{
+    const rw_rate_request r = {in_rate, xd, J, dz};
+    int k;
+    for (k = 0; k < RW_NZ; k++) dz[k] = 0.0;
+    indicators_of(p, d, m, in, x, Q, mask, z, &r);
 }
 
 int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,

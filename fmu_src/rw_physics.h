@@ -65,8 +65,10 @@ typedef struct {
                     double Q[2], double J[2][2]);
     /* V_h(q) with Q = -grad V_h (semiRigidPaper has none: its value is a measure, not conserved) */
     double (*potential)(const rw_derived *d, const double q[2]);
-    /* RW_NBREAK continuous functions crossing zero where Q(q) has a kink (1 = unused) */
-    void (*breakpoints)(const rw_derived *d, const double q[2], double z[RW_NBREAK]);
+    /* RW_NBREAK continuous functions crossing zero where Q(q) has a kink (1 = unused), and, if dz
+     * is not NULL, their rates along the motion dq (0 = unused) */
+    void (*breakpoints)(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
+                        double dz[RW_NBREAK]);
     /* 1 inside the first linear range of every hinge (collapse is not tested there) */
     int (*elastic)(const rw_derived *d, const double q[2]);
     /* 1 if Q depends on q alone (not on the sides, no kink at zero rotation), so that Q = c + J q
@@ -130,6 +132,14 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
 #define RW_Z_ALL ((1u << RW_NZ) - 1u)
 void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ]);
+/* The same indicators of `mask` with their rates dz = dz/dt along a motion: the state moving at
+ * xd = dx/dt and the inputs at in_rate (d ag/dt, d u_top/dt). Q, J: the hinge moments at x and
+ * their Jacobian dQ/dq, both given or both NULL (from the law). The exact engine's bracketing and
+ * root refinement use the rates (docs/engine.md). */
+void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                              const rw_input *in_rate, const double x[RW_NX], const double xd[RW_NX],
+                              const double *Q, const double (*J)[2], unsigned mask, double z[RW_NZ],
+                              double dz[RW_NZ]);
 /* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                      const double x[RW_NX]);
