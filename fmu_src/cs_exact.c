@@ -40,7 +40,10 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     long impacts = 0;
     double dissipated;
     int rc;
-    if (S->engine_state == 0) S->engine_state = rw_engine_init(&S->engine, &S->P, msg, n) ? -1 : 1;
+    if (S->engine_state == 0) {
+        S->engine_state = rw_engine_init(&S->engine, &S->P, msg, n) ? -1 : 1;
+        S->engine.track_dissipated = 1; /* the FMU's dissipated output */
+    }
     if (S->engine_state < 0) return FMU_NOT_EXACT;
     *t_reached = t;
     S->log = log;

@@ -447,47 +447,44 @@ typedef struct {
     double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
 } rw_point;
 
-/* The model's indicators of `mask` at the state x of the span's motion (the others are 1), with
- * the region's affine hinge moments where the law has them (rw_event_indicators_some) */
-static void indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
-                       const double x[RW_NX], unsigned mask, double z[RW_NZ])
+/* The model's indicators of `mask` at the state x of the span's motion and, if xd is not NULL,
+ * their rates dz along it (x moving at xd, the input at the span's rate). The indicators that are
+ * lines of the rotations (rw_indicator_lines, taken once per region) are evaluated here; the
+ * others (collapse, toppling, closed hinges) by the shared physics, with the region's affine
+ * hinge moments where the law has them (rw_hinge_law.q_only). */
+static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
+                              const double x[RW_NX], const double xd[RW_NX], unsigned mask, double z[RW_NZ],
+                              double dz[RW_NZ])
 {
+    const unsigned collapse = 1u << RW_Z_COLLAPSE, topple = 1u << RW_Z_TOPPLE;
+    unsigned rest = mask & ~e->line_mask;
     int k;
-    for (k = 0; k < RW_NZ; k++) z[k] = 1.0;
-    if (sp->aq.valid) {
-        const rw_affine_Q *a = &sp->aq;
-        const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
-                             a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
-        rw_event_indicators_some(&e->P, &e->D, m, in, x, Q, mask, z);
-        /* Near its root the collapse indicator is taken from the law itself: the affine Q differs
-         * from it by rounding, and every sign decided near zero (the root, the tracked state set
-         * after an event, the collapse test) must come from one function, or an event repeats at
-         * one instant. Away from zero both have the same sign. */
-        if (((mask >> RW_Z_COLLAPSE) & 1u) && fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
-            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, 1u << RW_Z_COLLAPSE, z);
+    if (xd && mask == RW_Z_ALL) { /* every line, without a test per line (the others are overwritten below) */
+        for (k = 0; k < RW_NZ; k++) z[k] = rw_line_value(&e->lines[k], x, xd, &dz[k]);
     } else {
-        rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, mask, z);
+        for (k = 0; k < RW_NZ; k++)
+            if ((mask & e->line_mask) >> k & 1u) z[k] = rw_line_value(&e->lines[k], x, xd, xd ? &dz[k] : NULL);
     }
-}
-
-/* The indicators of `mask` and their rates at the point x (moving at xd) of the span's motion: as
- * indicators(), the rates from the shared physics (rw_event_indicator_rates) */
-static void indicators_and_rates(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
-                                 const double x[RW_NX], const double xd[RW_NX], unsigned mask, double z[RW_NZ],
-                                 double dz[RW_NZ])
-{
-    const rw_input rate = {sp->ag1, sp->u1};
-    int k;
-    for (k = 0; k < RW_NZ; k++) z[k] = 1.0;
-    if (sp->aq.valid) {
-        const rw_affine_Q *a = &sp->aq;
-        const double Q[2] = {a->c[0] + a->J[0][0] * x[0] + a->J[0][1] * x[1],
-                             a->c[1] + a->J[1][0] * x[0] + a->J[1][1] * x[1]};
-        rw_event_indicator_rates(&e->P, &e->D, m, in, &rate, x, xd, Q, (const double(*)[2])a->J, mask, z, dz);
-        if (((mask >> RW_Z_COLLAPSE) & 1u) && fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE) /* see indicators() */
-            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, 1u << RW_Z_COLLAPSE, z);
+    if ((rest & topple) && e->P.support == RW_FLEXIBLE_TOP) {
+        z[RW_Z_TOPPLE] = rw_topple_value(e->D.q_topple, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
+        rest &= ~topple;
+    }
+    if ((rest & collapse) && sp->aq.valid) {
+        z[RW_Z_COLLAPSE] = rw_collapse_form_value(&e->collapse_form, x, xd, xd ? &dz[RW_Z_COLLAPSE] : NULL);
+        /* Near its root the collapse indicator is taken from the law itself: the region's form
+         * differs from it by rounding, and every sign decided near zero (the root, the tracked
+         * state set after an event, the collapse test) must come from one function, or an event
+         * repeats at one instant. Away from zero both have the same sign. */
+        if (fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
+            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, collapse, z);
+        rest &= ~collapse;
+    }
+    if (!rest) return;
+    if (xd) {
+        const rw_input rate = {sp->ag1, sp->u1};
+        rw_event_indicator_rates(&e->P, &e->D, m, in, &rate, x, xd, NULL, NULL, rest, z, dz);
     } else {
-        rw_event_indicator_rates(&e->P, &e->D, m, in, &rate, x, xd, NULL, NULL, mask, z, dz);
+        rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, rest, z);
     }
 }
 
@@ -498,7 +495,7 @@ static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     rw_input in = span_input(sp, s);
     pt->s = s;
     span_eval(sp, s, C, pt->x, xd);
-    indicators_and_rates(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
 static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
@@ -506,7 +503,7 @@ static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *
     double x[RW_NX], z[RW_NZ];
     rw_input in = span_input(sp, s);
     span_eval(sp, s, NULL, x, NULL);
-    indicators(e, m, sp, &in, x, 1u << k, z);
+    region_indicators(e, m, sp, &in, x, NULL, 1u << k, z, NULL);
     return z[k];
 }
 
@@ -567,7 +564,7 @@ static double indicator_and_rate_at(const rw_engine *e, const rw_mode *m, const 
     double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ];
     rw_input in = span_input(sp, s);
     span_eval(sp, s, NULL, x, xd);
-    indicators_and_rates(e, m, sp, &in, x, xd, 1u << k, z, dz);
+    region_indicators(e, m, sp, &in, x, xd, 1u << k, z, dz);
     *rate = dz[k];
     return z[k];
 }
@@ -723,15 +720,20 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
                        double *s_event)
 {
     int k, found = 0;
+    unsigned suspects = 0;
     double best = b->s;
+    /* first every indicator's quick test, without a branch: most substeps end here */
     for (k = 0; k < RW_NZ; k++) {
+        const int quiet = (b->z[k] > 0.0) == e->b[k] && far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
+        suspects |= (unsigned)!quiet << k;
+    }
+    for (k = 0; suspects >> k; k++) {
         const int was = e->b[k];
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
         double guess = NAN;
+        if (!((suspects >> k) & 1u)) continue;
         if ((b->z[k] > 0.0) == was) {
-            if (far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s) ||
-                !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi))
-                continue;
+            if (!dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
         } else if ((a->z[k] > 0.0) == was) {
             guess = a->s + (b->s - a->s) * hermite_root(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
         }
@@ -757,9 +759,11 @@ static void hermite_range_bound(double za, double da, double zb, double db, doub
 }
 
 /* ---- peaks and output grid along a span ----------------------------------------------------- */
-static double s_of(const rw_params *p, int which, const double x[RW_NX])
+/* s1 or s2 (rw_s1, rw_s2: linear in the rotations; their coefficients are taken from them in
+ * rw_engine_init, so that a peak costs no call) */
+static double s_of(const rw_engine *e, int which, const double x[RW_NX])
 {
-    return which == 0 ? rw_s1(p, x) : rw_s2(p, x);
+    return e->s_coef[which][0] * x[0] + e->s_coef[which][1] * x[1];
 }
 
 static double rate_of_s(const rw_engine *e, const rw_mode *m, const rw_span *sp, int which, double s)
@@ -769,7 +773,7 @@ static double rate_of_s(const rw_engine *e, const rw_mode *m, const rw_span *sp,
     span_eval(sp, s, NULL, x, NULL);
     v[0] = x[2];
     v[1] = x[3];
-    return s_of(&e->P, which, v);
+    return s_of(e, which, v);
 }
 
 static void track_peak(rw_engine *e, int which, double value)
@@ -785,19 +789,19 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
     int w;
     for (w = 0; w < 2; w++) {
         double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
-        const double ra = s_of(&e->P, w, va), rb = s_of(&e->P, w, vb);
+        const double ra = s_of(e, w, va), rb = s_of(e, w, vb);
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
         double lo, hi;
-        track_peak(e, w, s_of(&e->P, w, xb));
+        track_peak(e, w, s_of(e, w, xb));
         if ((ra > 0.0) == (rb > 0.0) || !(sb > sa)) continue;
         /* the turning point matters only if it can pass the peak so far */
-        hermite_range_bound(s_of(&e->P, w, xa), ra, s_of(&e->P, w, xb), rb, sb - sa, &lo, &hi);
+        hermite_range_bound(s_of(e, w, xa), ra, s_of(e, w, xb), rb, sb - sa, &lo, &hi);
         if (fmax(-lo, hi) >= peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
             const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
             span_eval(sp, s, NULL, x, NULL);
-            track_peak(e, w, s_of(&e->P, w, x));
+            track_peak(e, w, s_of(e, w, x));
         }
     }
 }
@@ -848,9 +852,11 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
     e->t_last_event = t;
     e->region_valid = e->carry_valid = 0;
     do {
-        const double energy = rw_energy(&e->P, &e->D, m, in, x);
+        /* the energy only for those who read it: the FMU's dissipated output and the impact log */
+        const int energy_wanted = e->track_dissipated || e->impact_t;
+        const double energy = energy_wanted ? rw_energy(&e->P, &e->D, m, in, x) : 0.0;
         rw_event_update(&e->P, &e->D, m, in, x, &r, NULL, NULL);
-        if (r.states_changed) e->dissipated += energy - rw_energy(&e->P, &e->D, m, in, x);
+        if (r.states_changed && e->track_dissipated) e->dissipated += energy - rw_energy(&e->P, &e->D, m, in, x);
         if (r.impacts && e->impact_t && (size_t)e->impacts < e->impact_cap) {
             e->impact_t[e->impacts] = t;
             e->impact_energy[e->impacts] = energy;
@@ -1033,7 +1039,7 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
     rw_input in = span_input(sp, s);
     pt->s = s;
     span_eval_part(sp, s, NULL, fast, pt->x, xd);
-    indicators_and_rates(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
 /* how much the band can change each indicator, near the slow point a */
@@ -1049,8 +1055,8 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
         xp[k] += r->amp_q[k];
         xm[k] -= r->amp_q[k];
     }
-    indicators(e, m, sp, &in, xp, RW_Z_ALL, zp);
-    indicators(e, m, sp, &in, xm, RW_Z_ALL, zm);
+    region_indicators(e, m, sp, &in, xp, NULL, RW_Z_ALL, zp, NULL);
+    region_indicators(e, m, sp, &in, xm, NULL, RW_Z_ALL, zm, NULL);
     for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
 
@@ -1077,9 +1083,9 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
     for (w = 0; w < 2; w++) {
         const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
         const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
-        const double sb = 2.0 * fabs(s_of(&e->P, w, amp));
+        const double sb = 2.0 * fabs(s_of(e, w, amp));
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
-        const double sa_ = s_of(&e->P, w, a.x), ra = s_of(&e->P, w, va), sb_ = s_of(&e->P, w, b.x), rb = s_of(&e->P, w, vb);
+        const double sa_ = s_of(e, w, a.x), ra = s_of(e, w, va), sb_ = s_of(e, w, b.x), rb = s_of(e, w, vb);
         hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
         if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
         hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
@@ -1137,6 +1143,16 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 }
 
 /* ---- the stepper ------------------------------------------------------------------------------ */
+/* the indicators that are lines of the rotations under the modes m (they change only at events) */
+static void region_lines(rw_engine *e, const rw_mode *m)
+{
+    int k;
+    rw_indicator_lines(&e->P, &e->D, m, e->lines);
+    e->line_mask = 0;
+    for (k = 0; k < RW_NZ; k++)
+        if (!e->lines[k].none) e->line_mask |= 1u << k;
+}
+
 /* The region of the motion at (x, t): kept from one input segment to the next, since without an
  * event no indicator, so no breakpoint and no mode, has changed; found again after each event. */
 static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const double x[RW_NX], double t,
@@ -1151,6 +1167,9 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         selection_rate(e, m, &now, x, dq_sel);
         R = region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
         if (!R) return NULL;
+        region_lines(e, m);
+        if (e->region_aq.valid)
+            rw_collapse_form_of(&e->D, e->region_aq.c, (const double(*)[2])e->region_aq.J, &e->collapse_form);
         e->region = (int)(R - e->cache);
         e->region_valid = 1;
     }
@@ -1213,6 +1232,14 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
     e->rigid = rw_is_rigid(p);
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
+    {
+        const double unit[2][RW_NX] = {{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}};
+        int j;
+        for (j = 0; j < 2; j++) {
+            e->s_coef[0][j] = rw_s1(p, unit[j]);
+            e->s_coef[1][j] = rw_s2(p, unit[j]);
+        }
+    }
     e->t_collapse = NAN;
     return 0;
 }

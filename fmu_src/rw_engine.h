@@ -132,6 +132,9 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int region_valid, region;
     double region_g0[2];
     rw_affine_Q region_aq;
+    rw_indicator_line lines[RW_NZ]; /* the indicators that are lines under the current modes */
+    unsigned line_mask;
+    rw_collapse_form collapse_form; /* the collapse indicator of the region (if region_aq.valid) */
     /* the end point of the last resolved span (time, state, indicators and their rates): the next
      * input segment starts there, and without an event in between only the closed hinges'
      * indicators, which depend on the input's rate, differ */
@@ -141,7 +144,9 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int b[RW_NZ];               /* indicator states z > 0 */
     double peak_s1, peak_s2;
     long events, steps, impacts;
-    double dissipated;          /* energy taken out by the event maps (impacts, closings) */
+    double dissipated;          /* energy taken out by the event maps (impacts, closings), if track_dissipated */
+    int track_dissipated;       /* set by the caller that reads `dissipated` (the FMU) */
+    double s_coef[2][2];        /* s1, s2 = s_coef[.] . (q1, q2) */
     int collapsed, reason;
     double t_collapse;
     double t_last_event;

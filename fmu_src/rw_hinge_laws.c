@@ -48,25 +48,21 @@ static double rigid_potential(const rw_derived *d, const double q[2])
     return d->cap_b * fabs(q[0]) + d->cap_m * fabs(q[1] - q[0]);
 }
 
-static void no_breakpoints(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
-                           double dz[RW_NBREAK])
+static void no_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
     int i;
     (void)d;
-    (void)q;
-    (void)dq;
-    for (i = 0; i < RW_NBREAK; i++) z[i] = 1.0;
-    if (dz)
-        for (i = 0; i < RW_NBREAK; i++) dz[i] = 0.0;
+    for (i = 0; i < RW_NBREAK; i++) {
+        const rw_indicator_line unused = {{0.0, 0.0}, 0.0, 0.0, 1.0, 0};
+        z[i] = unused;
+    }
 }
 
-/* A breakpoint at |w| = lim of the rotation w = a0 q1 + a1 q2: the indicator |w| - lim and, if dz is
- * not NULL, its rate along dq */
-static void kink(double a0, double a1, double lim, const double q[2], const double dq[2], double *z, double *dz)
+/* the breakpoint |a0 q1 + a1 q2| = lim */
+static rw_indicator_line kink(double a0, double a1, double lim)
 {
-    const double w = a0 * q[0] + a1 * q[1];
-    *z = fabs(w) - lim;
-    if (dz) *dz = sgn(w) * (a0 * dq[0] + a1 * dq[1]);
+    const rw_indicator_line line = {{a0, a1}, 1.0, 0.0, -lim, 0};
+    return line;
 }
 
 static int rigid_elastic(const rw_derived *d, const double q[2])
@@ -110,12 +106,11 @@ static double hinge_potential(const rw_derived *d, const double q[2])
     return d->cap_b * sat_potential(q[0], d->theta_y) + d->cap_m * sat_potential(q[1] - q[0], d->theta_y);
 }
 
-static void hinge_breakpoints(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
-                              double dz[RW_NBREAK])
+static void hinge_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
-    no_breakpoints(d, q, dq, z, dz);
-    kink(1.0, 0.0, d->theta_y, q, dq, &z[0], dz ? &dz[0] : NULL);
-    kink(-1.0, 1.0, d->theta_y, q, dq, &z[2], dz ? &dz[2] : NULL);
+    no_breakpoints(d, z);
+    z[0] = kink(1.0, 0.0, d->theta_y);
+    z[2] = kink(-1.0, 1.0, d->theta_y);
 }
 
 static int hinge_elastic(const rw_derived *d, const double q[2])
@@ -147,14 +142,13 @@ static void paper_moments(const rw_derived *d, int side_b, int side_m, const dou
     J[1][1] = -d->cap_m * side_m * k2;
 }
 
-static void paper_breakpoints(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
-                              double dz[RW_NBREAK])
+static void paper_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
-    no_breakpoints(d, q, dq, z, dz);
-    kink(1.0, 0.0, d->theta_y, q, dq, &z[0], dz ? &dz[0] : NULL);
-    kink(0.0, 1.0, d->theta_y, q, dq, &z[2], dz ? &dz[2] : NULL);
-    z[3] = q[1] / d->theta_y; /* the kink of |q2| at 0 */
-    if (dz) dz[3] = dq[1] / d->theta_y;
+    const rw_indicator_line sign_q2 = {{0.0, 1.0 / d->theta_y}, 0.0, 1.0, 0.0, 0}; /* the kink of |q2| at 0 */
+    no_breakpoints(d, z);
+    z[0] = kink(1.0, 0.0, d->theta_y);
+    z[2] = kink(0.0, 1.0, d->theta_y);
+    z[3] = sign_q2;
 }
 
 static int paper_elastic(const rw_derived *d, const double q[2])
@@ -227,16 +221,15 @@ static double doherty_potential(const rw_derived *d, const double q[2])
            d->cap_m / cm * doherty_shape_integral(d, cm * fabs(q[1] - q[0]));
 }
 
-static void doherty_breakpoints(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
-                                double dz[RW_NBREAK])
+static void doherty_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
     /* D1, D2 in the rotation of each hinge (D = h|q1|/2, h|x|/4), so that all indicators have the
      * scale of a rotation */
     const double cb = 2.0 / d->h, cm = 4.0 / d->h;
-    kink(1.0, 0.0, d->D1 * cb, q, dq, &z[0], dz ? &dz[0] : NULL);
-    kink(1.0, 0.0, d->D2 * cb, q, dq, &z[1], dz ? &dz[1] : NULL);
-    kink(-1.0, 1.0, d->D1 * cm, q, dq, &z[2], dz ? &dz[2] : NULL);
-    kink(-1.0, 1.0, d->D2 * cm, q, dq, &z[3], dz ? &dz[3] : NULL);
+    z[0] = kink(1.0, 0.0, d->D1 * cb);
+    z[1] = kink(1.0, 0.0, d->D2 * cb);
+    z[2] = kink(-1.0, 1.0, d->D1 * cm);
+    z[3] = kink(-1.0, 1.0, d->D2 * cm);
 }
 
 static int doherty_elastic(const rw_derived *d, const double q[2])

@@ -289,55 +289,87 @@ static void closed_indicators(const rw_params *p, const rw_derived *d, const rw_
     }
 }
 
-/* the hinge indicators (base, mid) */
-static void hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
-                             const double x[RW_NX], unsigned mask, double z[RW_NZ], const rw_rate_request *r)
+void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_indicator_line L[RW_NZ])
 {
     /* Hinge indicators carry a small offset so that none is exactly zero when integration restarts
      * after the event that set the mode (CVODE ignores a root function that starts at zero):
      * open: side*rotation + eps_q, root just past zero (|rotation| < tiny, so the direction of
      * motion decides in rw_event_update); closed: margin + eps_f, root just past |f| = cap. */
+    const rw_indicator_line unused = {{0.0, 0.0}, 0.0, 0.0, 1.0, 0}, none = {{0.0, 0.0}, 0.0, 0.0, 0.0, 1};
     const double eps_q = RW_EPS_Q(d);
-    const int rigid = rw_is_rigid(p), flexible = p->support == RW_FLEXIBLE_TOP;
-    double cb, cm, zc[2] = {1.0, 1.0}, dzc[2] = {0.0, 0.0};
-    rw_caps(p, d, &cb, &cm);
-    if (rigid && (m->closed_b || m->closed_m)) closed_indicators(p, d, m, in, x, cb, cm, zc, r, dzc);
-    if (wanted(mask, RW_Z_BASE)) {
-        const int closed = rigid && m->closed_b;
-        z[RW_Z_BASE] = closed ? zc[0] : m->side_b * x[0] + fmax(eps_q, m->zoff_b);
-        if (r) r->dz[RW_Z_BASE] = closed ? dzc[0] : m->side_b * r->xd[0];
+    const int rigid = rw_is_rigid(p);
+    int k;
+    for (k = 0; k < RW_NZ; k++) L[k] = unused;
+    if (rigid && m->closed_b) {
+        L[RW_Z_BASE] = none;
+    } else {
+        const rw_indicator_line base = {{m->side_b, 0.0}, 0.0, 1.0, fmax(eps_q, m->zoff_b), 0};
+        L[RW_Z_BASE] = base;
     }
-    if (flexible && wanted(mask, RW_Z_MID)) {
-        const int closed = rigid && m->closed_m;
-        z[RW_Z_MID] = closed ? zc[1] : m->side_m * (x[1] - x[0]) + fmax(eps_q, m->zoff_m);
-        if (r) r->dz[RW_Z_MID] = closed ? dzc[1] : m->side_m * (r->xd[1] - r->xd[0]);
+    if (p->support == RW_FLEXIBLE_TOP) {
+        const rw_indicator_line mid = {{-m->side_m, m->side_m}, 0.0, 1.0, fmax(eps_q, m->zoff_m), 0};
+        L[RW_Z_MID] = rigid && m->closed_m ? none : mid;
+        law(p)->breakpoints(d, L + RW_Z_BREAK); /* the law's kinks of Q(q) */
+        L[RW_Z_TOPPLE] = none;
+    } else if (p->support == RW_SIMPLY_SUPPORTED && !rigid) {
+        const rw_indicator_line d1 = {{1.0, 0.0}, 1.0, 0.0, -2.0 * d->D1 / p->h, 0};
+        const rw_indicator_line d2 = {{1.0, 0.0}, 1.0, 0.0, -2.0 * d->D2 / p->h, 0};
+        L[RW_Z_BREAK] = d1;
+        L[RW_Z_BREAK + 1] = d2;
+    }
+    L[RW_Z_COLLAPSE] = none;
+}
+
+/* the indicators of closed rigid hinges (1 - |f|/cap + eps_f, rw_indicator_lines) */
+static void closed_hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                                    const double x[RW_NX], unsigned mask, double z[RW_NZ], const rw_rate_request *r)
+{
+    double cb, cm, zc[2], dzc[2];
+    rw_caps(p, d, &cb, &cm);
+    closed_indicators(p, d, m, in, x, cb, cm, zc, r, dzc);
+    if (m->closed_b && wanted(mask, RW_Z_BASE)) {
+        z[RW_Z_BASE] = zc[0];
+        if (r) r->dz[RW_Z_BASE] = dzc[0];
+    }
+    if (p->support == RW_FLEXIBLE_TOP && m->closed_m && wanted(mask, RW_Z_MID)) {
+        z[RW_Z_MID] = zc[1];
+        if (r) r->dz[RW_Z_MID] = dzc[1];
     }
 }
 
-/* G(q)/|q|^2/zscale of the 2DOF, clipped, and its rate: with G = q.(K q - Q(q)) and K symmetric,
- * dG = 2 q.K dq - dq.Q - q.J dq */
+void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[2][2], rw_collapse_form *f)
+{
+    int i, j;
+    for (i = 0; i < 2; i++) {
+        f->c[i] = c[i];
+        for (j = 0; j < 2; j++) f->A[i][j] = d->K[i][j] - J[i][j];
+    }
+    f->zscale = d->zscale;
+}
+
+/* G(q)/|q|^2/zscale of the 2DOF, clipped, from the hinge moments Q at x (NULL: the law's), and its
+ * rate (rw_collapse_form) */
 static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
                             const double *Q, const rw_rate_request *r, double *dz)
 {
-    const double q1 = x[0], q2 = x[1], n2 = q1 * q1 + q2 * q2, zmax = 1e3;
+    const double q1 = x[0], q2 = x[1], n2 = q1 * q1 + q2 * q2;
     double Ql[2], J[2][2], v;
     const double *Qx = Q;
     const double (*Jx)[2] = r ? r->J : NULL;
     if (dz) *dz = 0.0;
-    if (!(n2 > 0.0)) return zmax; /* +large near q = 0 for rigid hinges */
+    if (!(n2 > 0.0)) return RW_COLLAPSE_ZMAX; /* +large near q = 0 for rigid hinges */
     if (!Qx) {
         law(p)->moments(d, side_of(q1, m->side_b), side_of(q2 - q1, m->side_m), x, x + 2, Ql, J);
         Qx = Ql;
         Jx = (const double(*)[2])J;
     }
     v = rw_collapse_G_of(d, x, Qx) / n2 / d->zscale;
-    if (v > zmax) return zmax;
-    if (r) {
-        const double dq1 = r->xd[0], dq2 = r->xd[1];
-        const double Kd1 = d->K[0][0] * dq1 + d->K[0][1] * dq2, Kd2 = d->K[1][0] * dq1 + d->K[1][1] * dq2;
-        const double Jd1 = Jx[0][0] * dq1 + Jx[0][1] * dq2, Jd2 = Jx[1][0] * dq1 + Jx[1][1] * dq2;
-        const double dG = 2.0 * (q1 * Kd1 + q2 * Kd2) - (dq1 * Qx[0] + dq2 * Qx[1]) - (q1 * Jd1 + q2 * Jd2);
-        *dz = (dG / d->zscale - 2.0 * v * (q1 * dq1 + q2 * dq2)) / n2;
+    if (v > RW_COLLAPSE_ZMAX) return RW_COLLAPSE_ZMAX;
+    if (r) { /* the rate of the form of the region through x */
+        const double c[2] = {Qx[0] - Jx[0][0] * q1 - Jx[0][1] * q2, Qx[1] - Jx[1][0] * q1 - Jx[1][1] * q2};
+        rw_collapse_form f;
+        rw_collapse_form_of(d, c, Jx, &f);
+        rw_collapse_form_value(&f, x, r->xd, dz);
     }
     return v;
 }
@@ -358,38 +390,21 @@ static double collapse_indicator(const rw_params *p, const rw_derived *d, const 
     return collapse_2dof(p, d, m, x, Q, r, dz);
 }
 
-/* 1 - max(|q1|, |q2|)/q_topple and its rate */
-static double topple_indicator(const rw_derived *d, const double x[RW_NX], const rw_rate_request *r)
-{
-    const int i = fabs(x[0]) >= fabs(x[1]) ? 0 : 1;
-    if (r) r->dz[RW_Z_TOPPLE] = -sgn(x[i]) * r->xd[i] / d->q_topple;
-    return 1.0 - fabs(x[i]) / d->q_topple;
-}
-
-static void breakpoint_indicators(const rw_params *p, const rw_derived *d, const double x[RW_NX], double z[RW_NZ],
-                                  const rw_rate_request *r)
-{
-    double *zb = z + RW_Z_BREAK, *dzb = r ? r->dz + RW_Z_BREAK : NULL;
-    if (p->support == RW_SIMPLY_SUPPORTED && !rw_is_rigid(p)) {
-        const double lim[2] = {2.0 * d->D1 / p->h, 2.0 * d->D2 / p->h};
-        int i;
-        for (i = 0; i < 2; i++) {
-            zb[i] = fabs(x[0]) - lim[i];
-            if (dzb) dzb[i] = sgn(x[0]) * r->xd[0];
-        }
-    } else if (p->support == RW_FLEXIBLE_TOP) {
-        law(p)->breakpoints(d, x, r ? r->xd : NULL, zb, dzb);
-    }
-}
-
 static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                           const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ],
                           const rw_rate_request *r)
 {
-    const unsigned breaks = ((1u << RW_NBREAK) - 1u) << RW_Z_BREAK;
-    if (mask & ((1u << RW_Z_BASE) | (1u << RW_Z_MID))) hinge_indicators(p, d, m, in, x, mask, z, r);
-    if (mask & breaks) breakpoint_indicators(p, d, x, z, r); /* the law's kinks of Q(q) */
-    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = topple_indicator(d, x, r);
+    const unsigned never_lines = (1u << RW_Z_COLLAPSE) | (1u << RW_Z_TOPPLE);
+    if (mask & ~never_lines) {
+        rw_indicator_line L[RW_NZ];
+        int k;
+        rw_indicator_lines(p, d, m, L);
+        for (k = 0; k < RW_NZ; k++)
+            if (wanted(mask, k) && !L[k].none)
+                z[k] = rw_line_value(&L[k], x, r ? r->xd : NULL, r ? &r->dz[k] : NULL);
+        if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) closed_hinge_indicators(p, d, m, in, x, mask, z, r);
+    }
+    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = rw_topple_value(d->q_topple, x, r ? r->xd : NULL, r ? &r->dz[RW_Z_TOPPLE] : NULL);
     if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, x, Q, r);
 }
 
@@ -405,8 +420,6 @@ void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_
                               double dz[RW_NZ])
 {
     const rw_rate_request r = {in_rate, xd, J, dz};
-    int k;
-    for (k = 0; k < RW_NZ; k++) dz[k] = 0.0;
     indicators_of(p, d, m, in, x, Q, mask, z, &r);
 }
 
@@ -421,7 +434,7 @@ int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m
     if (past) return RW_PAST_INSTABILITY;
     /* a guard on states the linearised model cannot describe (an importer's unstable integrator
      * may reach them): no body turns past the point where its weight passes over its pivot */
-    return fmax(fabs(x[0]), fabs(x[1])) >= d->q_topple ? RW_PAST_TOPPLING_LIMIT : RW_STANDING;
+    return rw_topple_value(d->q_topple, x, NULL, NULL) <= 0.0 ? RW_PAST_TOPPLING_LIMIT : RW_STANDING;
 }
 
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,

@@ -9,6 +9,7 @@
 #ifndef RW_PHYSICS_H
 #define RW_PHYSICS_H
 
+#include <math.h>
 #include <stddef.h>
 
 #include "rw_parameters.h"
@@ -51,6 +52,61 @@ typedef struct {
     double tiny;               /* rotation below which the direction of motion decides a side */
 } rw_derived;
 
+/* An event indicator that is a function of the rotations alone, as data, so that the exact engine
+ * evaluates it along a motion without a call: z = c + s |w| + t w with w = a.q (a line t = 1,
+ * s = 0, or a breakpoint |w| = -c/s with t = 0); `none`: not of this form (the collapse and
+ * toppling indicators, a closed hinge's). rw_line_value is the one evaluation, for the FMU's
+ * indicators and the engine. */
+typedef struct {
+    double a[2], s, t, c;
+    int none;
+} rw_indicator_line;
+
+/* z of the line at the rotations q = (x[0], x[1]) and its rate *dz along the rotation rates
+ * (xd[0], xd[1]) (xd, dz may be NULL); no branch, so that the engine's loop over all lines stays
+ * short */
+static inline double rw_line_value(const rw_indicator_line *L, const double *x, const double *xd, double *dz)
+{
+    const double w = L->a[0] * x[0] + L->a[1] * x[1];
+    if (dz) *dz = (L->s * ((w > 0.0) - (w < 0.0)) + L->t) * (L->a[0] * xd[0] + L->a[1] * xd[1]);
+    return L->c + L->s * fabs(w) + L->t * w;
+}
+
+/* The 2DOF collapse indicator z = G(q)/(|q|^2 zscale), clipped at RW_COLLAPSE_ZMAX, on a region
+ * whose hinge moments are Q = c + J q: G = q.(K q - Q) = q.A q - c.q with A = K - J (docs/model.md
+ * "Collapse"), as data for the exact engine (rw_collapse_form_of); its rate along dq is
+ * dG = q.(A + A^T) dq - c.dq. The FMU's own value comes from rw_collapse_G_of with the law's Q. */
+#define RW_COLLAPSE_ZMAX 1e3
+typedef struct {
+    double A[2][2], c[2], zscale;
+} rw_collapse_form;
+
+static inline double rw_collapse_form_value(const rw_collapse_form *f, const double *x, const double *xd, double *dz)
+{
+    const double q1 = x[0], q2 = x[1], n2 = q1 * q1 + q2 * q2;
+    const double Aq1 = f->A[0][0] * q1 + f->A[0][1] * q2, Aq2 = f->A[1][0] * q1 + f->A[1][1] * q2;
+    double v;
+    if (dz) *dz = 0.0;
+    if (!(n2 > 0.0)) return RW_COLLAPSE_ZMAX;
+    v = (q1 * Aq1 + q2 * Aq2 - (f->c[0] * q1 + f->c[1] * q2)) / n2 / f->zscale;
+    if (v > RW_COLLAPSE_ZMAX) return RW_COLLAPSE_ZMAX;
+    if (dz) {
+        const double dq1 = xd[0], dq2 = xd[1];
+        const double ATq1 = f->A[0][0] * q1 + f->A[1][0] * q2, ATq2 = f->A[0][1] * q1 + f->A[1][1] * q2;
+        const double dG = (Aq1 + ATq1 - f->c[0]) * dq1 + (Aq2 + ATq2 - f->c[1]) * dq2;
+        *dz = (dG / f->zscale - 2.0 * v * (q1 * dq1 + q2 * dq2)) / n2;
+    }
+    return v;
+}
+
+/* The 2DOF toppling indicator 1 - max(|q1|, |q2|)/q_topple and its rate (xd, dz may be NULL) */
+static inline double rw_topple_value(double q_topple, const double *x, const double *xd, double *dz)
+{
+    const int i = fabs(x[0]) >= fabs(x[1]) ? 0 : 1;
+    if (dz) *dz = -((x[i] > 0.0) - (x[i] < 0.0)) * xd[i] / q_topple;
+    return 1.0 - fabs(x[i]) / q_topple;
+}
+
 /* A 2DOF hinge law: everything that differs between laws, in one place (rw_hinge_laws.c).
  * Generalised hinge moments Q = (-cap_b*mu_b + cap_m*mu_m, -cap_m*mu_m) for the laws that come
  * from a potential; every law's Q(q) is piecewise affine between its breakpoints. */
@@ -65,10 +121,8 @@ typedef struct {
                     double Q[2], double J[2][2]);
     /* V_h(q) with Q = -grad V_h (semiRigidPaper has none: its value is a measure, not conserved) */
     double (*potential)(const rw_derived *d, const double q[2]);
-    /* RW_NBREAK continuous functions crossing zero where Q(q) has a kink (1 = unused), and, if dz
-     * is not NULL, their rates along the motion dq (0 = unused) */
-    void (*breakpoints)(const rw_derived *d, const double q[2], const double dq[2], double z[RW_NBREAK],
-                        double dz[RW_NBREAK]);
+    /* RW_NBREAK indicators crossing zero where Q(q) has a kink, as lines (the constant 1 = unused) */
+    void (*breakpoints)(const rw_derived *d, rw_indicator_line lines[RW_NBREAK]);
     /* 1 inside the first linear range of every hinge (collapse is not tested there) */
     int (*elastic)(const rw_derived *d, const double q[2]);
     /* 1 if Q depends on q alone (not on the sides, no kink at zero rotation), so that Q = c + J q
@@ -123,8 +177,7 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ]);
-/* The same indicators, those of `mask` (bit k = indicator k; others are left or, for the breakpoints
- * of one law, written alongside), with
+/* The same indicators, those of `mask` (bit k = indicator k; the others are left), with
  * the hinge moments Q(q) at x given by the caller (NULL: from the law). One definition of the rules
  * for the FMU and the exact engine: the engine asks only for what it needs (one indicator while it
  * refines a root) and passes the affine Q of its current linear region where the law's Q depends
@@ -132,7 +185,12 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
 #define RW_Z_ALL ((1u << RW_NZ) - 1u)
 void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ]);
-/* The same indicators of `mask` with their rates dz = dz/dt along a motion: the state moving at
+/* The collapse indicator's form on the region Q = c + J q (rw_collapse_form) */
+void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[2][2], rw_collapse_form *f);
+/* The indicators that are lines of the rotations under the modes m (rw_indicator_line; the others
+ * marked none): they change only with the modes, so the exact engine takes them once per region. */
+void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_indicator_line lines[RW_NZ]);
+/* The same indicators of `mask` (the others left) with their rates dz = dz/dt along a motion: the state moving at
  * xd = dx/dt and the inputs at in_rate (d ag/dt, d u_top/dt). Q, J: the hinge moments at x and
  * their Jacobian dQ/dq, both given or both NULL (from the law). The exact engine's bracketing and
  * root refinement use the rates (docs/engine.md). */
