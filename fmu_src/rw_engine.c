@@ -19,6 +19,10 @@
 #define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
 #define RW_AFFINE_Q_CLEARANCE 1e-6 /* scale-free collapse indicator: below this, the law itself decides */
 
+/* min and max of finite values without libm's calls (fmin, fmax handle NaN, which never reaches here) */
+static double min2(double a, double b) { return a < b ? a : b; }
+static double max2(double a, double b) { return a > b ? a : b; }
+
 /* ---- Stumpff functions ----------------------------------------------------------------------
  * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
  * c3 = (1-c1)/z (cosh/sinh for z < 0, polynomial at z = 0). With z = lam s^2 the solution of
@@ -199,7 +203,8 @@ static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[
     c->E = *E;
     for (i = 0; i < 2; i++) {
         c->w[i] = sqrt(fabs(E->lam[i]));
-        c->col[i] = fmax(fabs(E->P[0][i]), fabs(E->P[1][i]));
+        c->col[i] = max2(fabs(E->P[0][i]), fabs(E->P[1][i]));
+        c->inv_lam[i] = 1.0 / E->lam[i]; /* used for lam > 0 only */
     }
     return c;
 }
@@ -410,9 +415,9 @@ typedef struct {
 /* the squared amplitude of mode i's free oscillation about its quasi-static solution */
 static double mode_amplitude2(const rw_span *sp, int i)
 {
-    const double lam = sp->R->E.lam[i];
-    const double a = sp->eta[i] - sp->f0[i] / lam, b = sp->v[i] - sp->f1[i] / lam;
-    return a * a + b * b / lam;
+    const double il = sp->R->inv_lam[i];
+    const double a = sp->eta[i] - sp->f0[i] * il, b = sp->v[i] - sp->f1[i] * il;
+    return a * a + b * b * il;
 }
 
 static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate, rw_rates *r)
@@ -427,25 +432,21 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
     }
     r->slow_rate = floor_rate;
     for (i = 0; i < 2; i++) {
-        const double other = fmax(floor_rate, w[1 - i]);
+        const double other = max2(floor_rate, w[1 - i]);
         if (R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
             const double amp = sqrt(mode_amplitude2(sp, i)); /* rotations of a standing wall: no overflow */
             r->fast[i] = r->any_fast = 1;
-            r->fast_rate = fmax(r->fast_rate, w[i]);
+            r->fast_rate = max2(r->fast_rate, w[i]);
             r->amp_q[0] += amp * fabs(R->E.P[0][i]);
             r->amp_q[1] += amp * fabs(R->E.P[1][i]);
         } else {
-            r->slow_rate = fmax(r->slow_rate, w[i]);
+            r->slow_rate = max2(r->slow_rate, w[i]);
         }
     }
 }
 
 /* ---- indicators along a span ---------------------------------------------------------------- */
-typedef struct {
-    double s;
-    double x[RW_NX];
-    double z[RW_NZ], dz[RW_NZ]; /* indicators and their rates along the motion */
-} rw_point;
+typedef rw_engine_point rw_point; /* rw_engine.h */
 
 /* The model's indicators of `mask` at the state x of the span's motion and, if xd is not NULL,
  * their rates dz along it (x moving at xd, the input at the span's rate). The indicators that are
@@ -529,7 +530,7 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
     double width_before = hi - lo;
     int it, last = 0;
     for (it = 0; it < 400; it++) {
-        const double tol = fmax(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
+        const double tol = max2(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
         double s, fs;
         int bisect = 0;
         if (hi - lo <= tol) break;
@@ -605,12 +606,12 @@ static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *s
 
 /* The common case of hermite_keeps_sign, with no square root: the interpolant is a convex
  * combination of za, zb plus at most 4/27 of |ma| + |mb|, so ends of one sign that far from zero
- * (with hermite_keeps_sign's margin) keep it */
+ * (with hermite_keeps_sign's margin, 5 % of |ma| + |mb| + |zb - za|) keep it. No branch. */
 static int far_from_zero(double za, double da, double zb, double db, double L)
 {
-    const double ma = fabs(L * da), mb = fabs(L * db);
-    const double margin = 0.05 * (ma + mb + fabs(zb - za));
-    return za * zb > 0.0 && fmin(fabs(za), fabs(zb)) - 4.0 / 27.0 * (ma + mb) >= margin;
+    const double aa = fabs(za), ab = fabs(zb);
+    const double need = (4.0 / 27.0 + 0.05) * fabs(L) * (fabs(da) + fabs(db)) + 0.05 * fabs(zb - za);
+    return (za * zb > 0.0) & (min2(aa, ab) >= need);
 }
 
 /* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
@@ -724,7 +725,7 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
     double best = b->s;
     /* first every indicator's quick test, without a branch: most substeps end here */
     for (k = 0; k < RW_NZ; k++) {
-        const int quiet = (b->z[k] > 0.0) == e->b[k] && far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
+        const int quiet = ((b->z[k] > 0.0) == e->b[k]) & far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
         suspects |= (unsigned)!quiet << k;
     }
     for (k = 0; suspects >> k; k++) {
@@ -754,8 +755,8 @@ static void hermite_range_bound(double za, double da, double zb, double db, doub
 {
     const double ma = L * da, mb = L * db;
     const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
-    *lo = fmin(za, zb) - swing - margin;
-    *hi = fmax(za, zb) + swing + margin;
+    *lo = min2(za, zb) - swing - margin;
+    *hi = max2(za, zb) + swing + margin;
 }
 
 /* ---- peaks and output grid along a span ----------------------------------------------------- */
@@ -796,7 +797,7 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
         if ((ra > 0.0) == (rb > 0.0) || !(sb > sa)) continue;
         /* the turning point matters only if it can pass the peak so far */
         hermite_range_bound(s_of(e, w, xa), ra, s_of(e, w, xb), rb, sb - sa, &lo, &hi);
-        if (fmax(-lo, hi) >= peak) {
+        if (max2(-lo, hi) >= peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
             const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
@@ -841,7 +842,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
     rw_event_result r;
     int rounds = 0;
     e->events++;
-    if (t <= e->t_last_event + 1e-14 * fmax(1.0, fabs(t))) {
+    if (t <= e->t_last_event + 1e-14 * max2(1.0, fabs(t))) {
         if (++e->same_instant > e->max_same_instant) {
             snprintf(e->msg, sizeof e->msg, "more than %d events at t = %.17g (Zeno): stopped", e->max_same_instant, t);
             return RW_ENGINE_ZENO + 1;
@@ -850,7 +851,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         e->same_instant = 0;
     }
     e->t_last_event = t;
-    e->region_valid = e->carry_valid = 0;
+    e->region_valid = e->carry_valid = e->slow_carry_valid = 0;
     do {
         /* the energy only for those who read it: the FMU's dissipated output and the impact log */
         const int energy_wanted = e->track_dissipated || e->impact_t;
@@ -910,10 +911,15 @@ static double rocking_rate(const rw_engine *e)
 
 static int substeps_for(double rate, double *len)
 {
-    const double n = ceil(*len * rate / RW_PHASE_PER_SUBSTEP);
-    if (n <= RW_MAX_SUBSTEPS) return n < 1.0 ? 1 : (int)n;
-    *len *= RW_MAX_SUBSTEPS / n;
-    return (int)RW_MAX_SUBSTEPS;
+    const double turns = *len * rate / RW_PHASE_PER_SUBSTEP;
+    int n;
+    if (!(turns <= RW_MAX_SUBSTEPS)) {
+        *len *= RW_MAX_SUBSTEPS / turns;
+        return (int)RW_MAX_SUBSTEPS;
+    }
+    n = (int)turns; /* ceil, without libm's call */
+    n += n < turns;
+    return n < 1 ? 1 : n;
 }
 
 /* The start point of a span: the end point of the span before, where that holds (rw_engine.carry) */
@@ -1004,8 +1010,8 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     const double C = ma, margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
     double roots[2];
     int n = 0, i;
-    *lo = fmin(za, zb);
-    *hi = fmax(za, zb);
+    *lo = min2(za, zb);
+    *hi = max2(za, zb);
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -1019,8 +1025,8 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
         const double u = roots[i], u2 = u * u, u3 = u2 * u;
         if (u > 0.0 && u < 1.0) {
             const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
-            *lo = fmin(*lo, z);
-            *hi = fmax(*hi, z);
+            *lo = min2(*lo, z);
+            *hi = max2(*hi, z);
         }
     }
     *lo -= margin;
@@ -1032,13 +1038,13 @@ static int indicator_clear(int state, double lo, double hi, double band)
     return state ? lo > band : hi < -band;
 }
 
-static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const int *fast,
-                            rw_point *pt)
+static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double (*C)[4],
+                            const int *fast, rw_point *pt)
 {
     double xd[RW_NX];
     rw_input in = span_input(sp, s);
     pt->s = s;
-    span_eval_part(sp, s, NULL, fast, pt->x, xd);
+    span_eval_part(sp, s, C, fast, pt->x, xd);
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
@@ -1057,22 +1063,26 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
     }
     region_indicators(e, m, sp, &in, xp, NULL, RW_Z_ALL, zp, NULL);
     region_indicators(e, m, sp, &in, xm, NULL, RW_Z_ALL, zm, NULL);
-    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * fmax(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
 
 /* Can the substep [0, L] of the span hold no event (see above)? Then *peaks_full says whether a
  * new peak is possible there: the band is then negligible (below 1e-9 of the peak) and the peaks
  * are taken on the full motion at the substep's resolution; a new peak with a larger band makes
  * the substep not quiet. */
-static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const rw_rates *r,
-                            int *peaks_full)
+static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double (*C)[4],
+                            const rw_rates *r, int *peaks_full, rw_point *b_out)
 {
     rw_point a, b;
     double band[RW_NZ], lo, hi;
     int k, w;
     *peaks_full = 0;
-    eval_slow_point(e, m, sp, 0.0, r->fast, &a);
-    eval_slow_point(e, m, sp, L, r->fast, &b);
+    if (e->slow_carry_valid && e->slow_carry_t == sp->t0 && memcmp(e->slow_carry_x0, sp->x0, sizeof sp->x0) == 0)
+        a = e->slow_carry; /* the slow end of the quiet substep before (equal to rounding) */
+    else
+        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &a);
+    eval_slow_point(e, m, sp, L, C, r->fast, &b);
+    *b_out = b;
     band_of(e, m, sp, &a, r, band);
     for (k = 0; k < RW_NZ; k++) {
         hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
@@ -1087,10 +1097,10 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
         const double sa_ = s_of(e, w, a.x), ra = s_of(e, w, va), sb_ = s_of(e, w, b.x), rb = s_of(e, w, vb);
         hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (max2(fabs(lo), fabs(hi)) + sb < peak) continue;
         hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (fmax(fabs(lo), fabs(hi)) + sb < peak) continue;
-        if (sb > 1e-9 * fmax(fabs(lo), fabs(hi))) return 0;
+        if (max2(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (sb > 1e-9 * max2(fabs(lo), fabs(hi))) return 0;
         *peaks_full = 1;
     }
     return 1;
@@ -1101,28 +1111,35 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
  * full, so that only the neighbourhood of an event or a new peak is resolved at the fast rate.
  * Returns as resolve(). */
 static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
-                        const rw_linear_input *in, double t_in, double t_to, const rw_rates *r, double x[RW_NX],
-                        double *t, int depth)
+                        const rw_linear_input *in, double t_in, double t_to, const double (*C)[4], const rw_rates *r,
+                        double x[RW_NX], double *t, int depth)
 {
     const double L = t_to - sp->t0;
     int peaks_full, nf, rc;
     double len = L;
-    if (substep_is_quiet(e, m, sp, L, r, &peaks_full)) {
+    rw_point b;
+    if (substep_is_quiet(e, m, sp, L, C, r, &peaks_full, &b)) {
         double xa[RW_NX];
         memcpy(xa, x, sizeof xa);
         e->steps++;
-        span_eval(sp, L, NULL, x, NULL);
+        span_eval(sp, L, C, x, NULL);
         if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
         outputs_on(e, sp, L);
         *t = t_to;
+        b.s = 0.0; /* the next substep starts here */
+        e->slow_carry = b;
+        e->slow_carry_t = t_to;
+        memcpy(e->slow_carry_x0, x, sizeof e->slow_carry_x0);
+        e->slow_carry_valid = 1;
         return 0;
     }
+    e->slow_carry_valid = 0;
     nf = substeps_for(r->fast_rate, &len);
     if (nf <= 8 || depth >= 40) return resolve(e, m, sp, R, g0, in, t_in, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL, x, t);
-    rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, r, x, t, depth + 1);
+    rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, NULL, r, x, t, depth + 1);
     if (rc) return rc;
     span_start(sp, R, g0, *t, x, in, t_in);
-    return fast_substep(e, m, sp, R, g0, in, t_in, t_to, r, x, t, depth + 1);
+    return fast_substep(e, m, sp, R, g0, in, t_in, t_to, NULL, r, x, t, depth + 1);
 }
 
 /* ---- one region on its own (rw_engine.h) ------------------------------------------------------ */
@@ -1205,7 +1222,9 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         }
         for (j = 0; j < n && rc == 0; j++) {
             const double t_to = j == n - 1 ? span_end : sp.t0 + h;
-            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, &r, x, t, 0);
+            /* the last piece differs from h by rounding at most: the same coefficients */
+            const int same = fabs((t_to - sp.t0) - h) <= 4.0 * DBL_EPSILON * (fabs(t_to) + h);
+            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, same ? substep_coefficients(R, h) : NULL, &r, x, t, 0);
             if (rc > 0) return rc;
             if (rc == 0 && j < n - 1) span_start(&sp, R, g0, *t, x, in, t_in);
         }
@@ -1289,7 +1308,7 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     /* the engine may be a byte copy restored from a serialized FMU state (fmi2SetFMUstate), made
      * by another process: its one reference into this binary, the law, is taken again */
     e->law = rw_hinge_law_of(e->P.hingeLaw);
-    e->region_valid = e->carry_valid = 0; /* the caller owns x and m between steps */
+    e->region_valid = e->carry_valid = e->slow_carry_valid = 0; /* the caller owns x and m between steps */
     now.ag = in->ag;
     now.u_top = in->u_top;
     *t_reached = t;

@@ -91,8 +91,15 @@ typedef struct {
 int rw_engine_run_many(size_t n, const rw_params *params, int params_each, const double *scale, const rw_record *rec,
                        const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t msg_len);
 
-/* ---- the engine's state (public so that it can live inside the FMU's instance data) ------------
- * One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
+/* ---- the engine's state (public so that it can live inside the FMU's instance data) ------------ */
+/* a point of a span: its offset s from the span's start, the state and the indicators with their rates */
+typedef struct {
+    double s;
+    double x[RW_NX];
+    double z[RW_NZ], dz[RW_NZ];
+} rw_engine_point;
+
+/* One linear region in modal coordinates: q = P eta, eta = Pi q, and per mode
  * eta_i'' + lam_i eta_i = g0_i + ga_i ag + gu_i u_top; decompositions are cached by region (the
  * closed flags and J, or the 1DOF slope), with the Stumpff coefficients of the last two step
  * lengths. */
@@ -115,6 +122,7 @@ typedef struct {
     rw_modes2 E;
     double w[2];   /* sqrt(|lam|) of each mode */
     double col[2]; /* max |P[.][i]|: mode i's largest share of a rotation */
+    double inv_lam[2];
     double h[2], C[2][2][4]; /* Stumpff coefficients of the last two step lengths */
     int h_valid[2], h_next;
 } rw_cache_entry;
@@ -140,6 +148,12 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
      * indicators, which depend on the input's rate, differ */
     int carry_valid;
     double carry_t, carry_x[RW_NX], carry_z[RW_NZ], carry_dz[RW_NZ];
+    /* the same for the slow part of a span with fast modes (rw_engine.c "fast modes"): the slow
+     * point at the end of the last quiet substep, which ended at slow_carry_t in the state
+     * slow_carry_x0 */
+    int slow_carry_valid;
+    double slow_carry_t, slow_carry_x0[RW_NX];
+    rw_engine_point slow_carry;
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
     double peak_s1, peak_s2;
