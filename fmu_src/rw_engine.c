@@ -596,9 +596,10 @@ static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *s
         if (past) hi = s, fhi = fs;
         else lo = s, flo = fs;
         step = rate != 0.0 ? -fs / rate : NAN;
-        /* within rounding of the root the step's direction is noise: probe half the tolerance
-         * toward the other end of the bracket, so that it closes */
-        if (fabs(step) < 0.5 * tol) step = (past ? -0.5 : 0.5) * tol;
+        if (past && fabs(step) < 0.5 * tol) break; /* s is past the root, and the root within tol of it */
+        /* within rounding of the root the step's direction is noise: probe half the tolerance past
+         * it, so that the bracket closes */
+        if (fabs(step) < 0.5 * tol) step = 0.5 * tol;
         s += step; /* NaN or outside the bracket: the fallback above */
     }
     return hi;
@@ -718,7 +719,7 @@ static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, i
 /* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a dip
  * through zero and back inside the substep. Returns 1 and *s_event, or 0. */
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
-                       double *s_event)
+                       double *s_event, int *k_event)
 {
     int k, found = 0;
     unsigned suspects = 0;
@@ -741,7 +742,10 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
         s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess);
-        if (!found || s < best) best = s;
+        if (!found || s < best) {
+            best = s;
+            *k_event = k;
+        }
         found = 1;
     }
     *s_event = best;
@@ -864,7 +868,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         }
         e->impacts += r.impacts;
     } while ((r.modes_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
-    set_indicator_states(e, m, in, x);
+    e->b_stale = 1; /* the indicator states at x: from the start point of the next span (advance) */
     e->reason = rw_collapse_reason(&e->P, &e->D, m, in, x);
     if (e->reason != RW_STANDING) {
         e->collapsed = 1;
@@ -946,6 +950,19 @@ static void carry_point(rw_engine *e, const rw_point *pb, double t)
     memcpy(e->carry_dz, pb->dz, sizeof e->carry_dz);
 }
 
+/* After an event of the base or mid-height hinge indicator under a law whose hinge moments depend
+ * on q alone (the region's affine Q), the region is the same: the event maps change rates and
+ * modes, never q, and such a law's region is fixed by q, except on a breakpoint itself, where the
+ * direction of motion picks it (then it is found again). Only the lines (sides, offsets) change. */
+static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k_event, const double x[RW_NX])
+{
+    int k;
+    if (!sp->aq.valid || (k_event != RW_Z_BASE && k_event != RW_Z_MID)) return 0;
+    for (k = RW_Z_BREAK; k < RW_Z_BREAK + RW_NBREAK; k++)
+        if (fabs(rw_line_value(&e->lines[k], x, NULL, NULL)) < 1e-9 * e->D.q_topple) return 0;
+    return 1;
+}
+
 /* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
  * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
  * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
@@ -960,12 +977,13 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
     start_point(e, m, sp, &pa);
     for (j = 0; j < n; j++) {
         double s_ev;
+        int k_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
         /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
         const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
         eval_point(e, m, sp, piece, same ? C : NULL, &pb);
         e->steps++;
-        if (first_event(e, m, sp, &pa, &pb, &s_ev)) {
+        if (first_event(e, m, sp, &pa, &pb, &s_ev, &k_ev)) {
             rw_input ie = span_input(sp, s_ev);
             int rc;
             span_eval(sp, s_ev, NULL, x, NULL);
@@ -973,6 +991,7 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
             outputs_on(e, sp, s_ev);
             *t = sp->t0 + s_ev;
             rc = apply_event(e, m, x, *t, &ie);
+            if (rc == 0 && hinge_event_keeps_region(e, sp, k_ev, x)) e->region_keep = 1;
             return rc ? rc : -1;
         }
         peaks_on(e, m, sp, pa.x, pa.s, pb.x, pb.s);
@@ -1160,6 +1179,19 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 }
 
 /* ---- the stepper ------------------------------------------------------------------------------ */
+/* The indicator states after an event: at the start point of the span that follows, which is kept
+ * for resolve() (the region's own evaluation: the lines and the collapse form as the physics gives
+ * them, so the same signs as rw_event_indicators) */
+static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_span *sp)
+{
+    rw_point pt;
+    int k;
+    eval_point(e, m, sp, 0.0, NULL, &pt);
+    for (k = 0; k < RW_NZ; k++) e->b[k] = pt.z[k] > 0.0;
+    e->b_stale = 0;
+    carry_point(e, &pt, sp->t0);
+}
+
 /* the indicators that are lines of the rotations under the modes m (they change only at events) */
 static void region_lines(rw_engine *e, const rw_mode *m)
 {
@@ -1176,6 +1208,11 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
                                       const rw_linear_input *in, double t_in, double g0[2], rw_affine_Q *aq)
 {
     rw_cache_entry *R;
+    if (!e->region_valid && e->region_keep) { /* hinge_event_keeps_region */
+        region_lines(e, m);
+        e->region_valid = 1;
+    }
+    e->region_keep = 0;
     if (!e->region_valid) {
         rw_input now;
         double dq_sel[2];
@@ -1210,6 +1247,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         R = current_region(e, m, x, *t, in, t_in, g0, &sp.aq);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
+        if (e->b_stale) refresh_indicator_states(e, m, &sp);
         span_rates(e, &sp, rocking_rate(e), &r);
         span_len = t_end - *t;
         n = substeps_for(r.slow_rate, &span_len);
@@ -1308,12 +1346,20 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     /* the engine may be a byte copy restored from a serialized FMU state (fmi2SetFMUstate), made
      * by another process: its one reference into this binary, the law, is taken again */
     e->law = rw_hinge_law_of(e->P.hingeLaw);
-    e->region_valid = e->carry_valid = e->slow_carry_valid = 0; /* the caller owns x and m between steps */
+    /* the caller owns x and m between steps */
+    e->region_valid = e->region_keep = e->carry_valid = e->slow_carry_valid = 0;
     now.ag = in->ag;
     now.u_top = in->u_top;
     *t_reached = t;
     rc = input_jump(e, m, x, t, &now);
     if (rc == 0) rc = advance(e, m, x, t_reached, t + h, in, t);
+    if (rc == 0 && e->b_stale) { /* an event at the step's end: its states, for the next input_jump */
+        rw_input end;
+        end.ag = in->ag + in->ag_slope * (*t_reached - t);
+        end.u_top = in->u_top + in->u_slope * (*t_reached - t);
+        set_indicator_states(e, m, &end, x);
+        e->b_stale = 0;
+    }
     *impacts += e->impacts - before;
     if (rc > 1) snprintf(msg, n, "%s", e->msg);
     return rc;

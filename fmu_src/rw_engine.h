@@ -171,6 +171,8 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     double *impact_t, *impact_energy;
     size_t impact_cap;
     int b_valid;                /* b holds the indicator states of the last step's end */
+    int b_stale;                /* an event changed the modes: b is set at the next span's start */
+    int region_keep;            /* the event kept the region (rw_engine.c hinge_event_keeps_region) */
     char msg[256];
 } rw_engine;
 
