@@ -324,6 +324,121 @@ static void test_indicators(void)
     }
 }
 
+/* a reproducible uniform number in [lo, hi) */
+static double uniform(unsigned long *state, double lo, double hi)
+{
+    *state = *state * 6364136223846793005UL + 1442695040888963407UL;
+    return lo + (hi - lo) * (double)(*state >> 11) / 9007199254740992.0;
+}
+
+/* every indicator at x moved by u along (xd, in_rate) with the modes frozen */
+static void indicators_along(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+                             const rw_input *rate, const double x[RW_NX], const double xd[RW_NX], double u,
+                             double z[RW_NZ])
+{
+    const rw_input iu = {in->ag + u * rate->ag, in->u_top + u * rate->u_top};
+    double y[RW_NX];
+    int i;
+    for (i = 0; i < RW_NX; i++) y[i] = x[i] + u * xd[i];
+    rw_event_indicators(p, d, m, &iu, y, z);
+}
+
+/* The rates the exact engine brackets and refines roots with (rw_event_indicator_rates) against
+ * central differences of the indicators along the same motion, for both supports the engine
+ * covers, every law, both sides of each hinge and (rigid) every closed state; the values are the
+ * FMU's own. Points where a kink lies within the difference step are skipped (the one-sided
+ * differences disagree there). */
+static void test_indicator_rates(void)
+{
+    static const int supports[2] = {RW_SIMPLY_SUPPORTED, RW_FLEXIBLE_TOP};
+    unsigned long rng = 12345;
+    int compared = 0, si, law, trial;
+    for (si = 0; si < 2; si++)
+        for (law = 1; law <= 4; law++)
+            for (trial = 0; trial < 400; trial++) {
+                rw_params p = paper_params();
+                rw_derived d;
+                rw_mode m;
+                rw_input in, rate;
+                double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ], zp[RW_NZ], zm[RW_NZ], zpp[RW_NZ], zmm[RW_NZ];
+                const double u = 1e-6;
+                int k;
+                p.support = supports[si];
+                p.hingeLaw = law;
+                p.Kd = trial % 2 ? 5e4 : 5e7;
+                rw_derive(&p, &d);
+                memset(&m, 0, sizeof m);
+                m.side_b = uniform(&rng, -1, 1) > 0 ? 1 : -1;
+                m.side_m = uniform(&rng, -1, 1) > 0 ? 1 : -1;
+                m.zoff_b = m.zoff_m = uniform(&rng, 0, 1e-9);
+                if (law == RW_RIGID) {
+                    m.closed_b = trial % 4 == 1 || trial % 4 == 3;
+                    m.closed_m = p.support == RW_FLEXIBLE_TOP && trial % 4 >= 2;
+                }
+                for (k = 0; k < RW_NX; k++) {
+                    x[k] = uniform(&rng, -1, 1) * (k < 2 ? 0.6 * d.q_topple : 2.0);
+                    xd[k] = uniform(&rng, -1, 1) * (k < 2 ? 2.0 : 50.0);
+                }
+                if (p.support == RW_SIMPLY_SUPPORTED) x[1] = -x[0], xd[1] = -xd[0];
+                in.ag = uniform(&rng, -5, 5);
+                in.u_top = uniform(&rng, -0.01, 0.01);
+                rate.ag = uniform(&rng, -100, 100);
+                rate.u_top = uniform(&rng, -0.1, 0.1);
+                for (k = 0; k < RW_NZ; k++) z[k] = dz[k] = 7.0;
+                rw_event_indicator_rates(&p, &d, &m, &in, &rate, x, xd, NULL, NULL, RW_Z_ALL, z, dz);
+                indicators_along(&p, &d, &m, &in, &rate, x, xd, 0.0, zp);
+                for (k = 0; k < RW_NZ; k++)
+                    CHECK(z[k] == zp[k] || (z[k] == 7.0 && zp[k] == 1.0), "support %d law %d: z[%d] %.17g, FMU's %.17g",
+                          p.support, law, k, z[k], zp[k]);
+                indicators_along(&p, &d, &m, &in, &rate, x, xd, u, zp);
+                indicators_along(&p, &d, &m, &in, &rate, x, xd, -u, zm);
+                indicators_along(&p, &d, &m, &in, &rate, x, xd, 2 * u, zpp);
+                indicators_along(&p, &d, &m, &in, &rate, x, xd, -2 * u, zmm);
+                for (k = 0; k < RW_NZ; k++) {
+                    const double fwd = (zpp[k] - zp[k]) / u, bwd = (zm[k] - zmm[k]) / u, mid = (zp[k] - zm[k]) / (2 * u);
+                    const double scale = fmax(1e-3, fabs(mid));
+                    if (z[k] == 7.0 || fabs(fwd - bwd) > 1e-3 * scale) continue; /* unused, or a kink nearby */
+                    CHECK(fabs(dz[k] - mid) <= 1e-5 * scale, "support %d law %d trial %d: dz[%d] = %.12g, difference %.12g",
+                          p.support, law, trial, k, dz[k], mid);
+                    compared++;
+                }
+            }
+    CHECK(compared > 10000, "indicator rates compared: %d", compared);
+}
+
+/* The collapse indicator's form on a region (rw_collapse_form) equals G(q)/|q|^2/zscale from the
+ * law's own moments wherever the law's Q is affine in q alone */
+static void test_collapse_form(void)
+{
+    unsigned long rng = 777;
+    int law, trial, compared = 0;
+    for (law = RW_SEMI_RIGID_HINGE; law <= RW_DOHERTY_HINGE; law++)
+        for (trial = 0; trial < 500; trial++) {
+            rw_params p = paper_params();
+            rw_derived d;
+            rw_collapse_form f;
+            const rw_hinge_law *L = rw_hinge_law_of(law);
+            double x[RW_NX], Q[2], J[2][2], c[2], n2, want, got;
+            p.hingeLaw = law;
+            p.Kd = trial % 2 ? 5e3 : 5e6;
+            rw_derive(&p, &d);
+            x[0] = uniform(&rng, -0.5, 0.5) * d.q_topple;
+            x[1] = uniform(&rng, -0.5, 0.5) * d.q_topple;
+            x[2] = x[3] = 0.1;
+            L->moments(&d, 1, 1, x, x + 2, Q, J);
+            c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
+            c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+            rw_collapse_form_of(&d, c, (const double(*)[2])J, &f);
+            n2 = x[0] * x[0] + x[1] * x[1];
+            want = rw_collapse_G_of(&d, x, Q) / n2 / d.zscale;
+            got = rw_collapse_form_value(&f, x, NULL, NULL);
+            if (want >= RW_COLLAPSE_ZMAX) continue;
+            CHECK(fabs(got - want) <= 1e-9 * fmax(1.0, fabs(want)), "law %d: form %.17g, G %.17g", law, got, want);
+            compared++;
+        }
+    CHECK(compared > 500, "collapse forms compared: %d", compared);
+}
+
 static void test_rigid_open_close(void)
 {
     rw_params p = paper_params();
@@ -523,6 +638,8 @@ int main(int argc, char **argv)
     test_trilinear();
     test_impact_map();
     test_indicators();
+    test_indicator_rates();
+    test_collapse_form();
     test_rigid_open_close();
     test_collapse();
     test_energy();
