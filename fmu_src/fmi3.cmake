@@ -73,7 +73,7 @@ rw_add_fmu3(Building ${FMI3_XML_DIR}/Building/modelDescription.xml
 target_include_directories(Building_fmi3 PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/building)
 
 # both FMUs under the FMI 3.0 layer as static libraries, for the C tests of fmi3Functions.c
-add_library(rw_fmi3_static STATIC rw_model.c cs_exact.c rw_engine.c ${FMU3_SHARED_SOURCES})
+add_library(rw_fmi3_static STATIC rw_model.c cs_exact.c ${RW_ENGINE_SOURCES} ${FMU3_SHARED_SOURCES})
 target_include_directories(rw_fmi3_static PUBLIC ${CMAKE_CURRENT_SOURCE_DIR} ${FMI3_HEADERS_DIR})
 target_link_libraries(rw_fmi3_static PUBLIC rw_physics ${RW_SUNDIALS_STATIC})
 add_library(dg_fmi3_static STATIC diaphragm/diaphragm_model.c ${FMU3_SHARED_SOURCES})

@@ -1,11 +1,11 @@
 /* RockingWall exact event-driven engine: see rw_engine.h.
  *
- * Layout: Stumpff functions (the exact scalar solution) -> regions (modal decomposition of one
- * linear region, cached) -> spans (a region with a linear input from a start state) -> event
- * search on a span (bracketing with Hermite extremum checks, safeguarded regula falsi) -> the
- * stepper over one input segment -> the batch run over a record.
+ * Layout: Stumpff functions (the exact scalar solution) -> spans (a region of
+ * rw_engine_regions.c with a linear input from a start state) -> event search on a span (a quiet
+ * test, Hermite extremum checks, Newton root refinement) -> the stepper over one input segment.
+ * The batch runs over a record are in rw_engine_batch.c.
  */
-#include "rw_engine.h"
+#include "rw_engine_internal.h"
 
 #include <float.h>
 #include <math.h>
@@ -18,10 +18,6 @@
 #define RW_MAX_SUBSTEPS 2000000L
 #define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
 #define RW_AFFINE_Q_CLEARANCE 1e-6 /* scale-free collapse indicator: below this, the law itself decides */
-
-/* min and max of finite values without libm's calls (fmin, fmax handle NaN, which never reaches here) */
-static double min2(double a, double b) { return a < b ? a : b; }
-static double max2(double a, double b) { return a > b ? a : b; }
 
 /* ---- Stumpff functions ----------------------------------------------------------------------
  * c_k(z) = sum_j (-z)^j/(2j+k)!: c0 = cos(sqrt z), c1 = sin(sqrt z)/sqrt z, c2 = (1-c0)/z,
@@ -70,236 +66,6 @@ static void stumpff(double z, double c[4])
     }
     c[2] = (1.0 - c[0]) / z;
     c[3] = (1.0 - c[1]) / z;
-}
-
-static void identity_modes(rw_modes2 *E, double p10, double pi10)
-{
-    memset(E, 0, sizeof *E);
-    E->P[0][0] = E->P[1][1] = E->Pi[0][0] = E->Pi[1][1] = 1.0;
-    E->P[1][0] = p10;
-    E->Pi[1][0] = pi10;
-}
-
-/* Symmetric generalised eigenproblem (Ks, M): Ks = k e e^T + G with e = (1, 1) and k = Kd h^2/4
- * (Eq. 3.3), so that the slow eigenvalue under a stiff spring (k up to 1e12) comes from the
- * determinant written without cancellation. M = L L^T; S = L^-1 Ks L^-T = k w w^T + Gs. */
-static void modes_symmetric(const rw_derived *d, double k, const double G[2][2], rw_modes2 *E)
-{
-    const double l00 = sqrt(d->M[0][0]), l10 = d->M[1][0] / l00, l11 = sqrt(d->M[1][1] - l10 * l10);
-    const double i00 = 1.0 / l00, i10 = -l10 / (l00 * l11), i11 = 1.0 / l11; /* L^-1 */
-    const double w0 = i00, w1 = i10 + i11;
-    const double gs00 = i00 * i00 * G[0][0];
-    const double gs01 = i00 * (i10 * G[0][0] + i11 * G[0][1]);
-    const double gs11 = i10 * i10 * G[0][0] + 2.0 * i10 * i11 * G[0][1] + i11 * i11 * G[1][1];
-    const double a = k * w0 * w0 + gs00, b = k * w0 * w1 + gs01, c = k * w1 * w1 + gs11;
-    const double det = k * (w0 * w0 * gs11 - 2.0 * w0 * w1 * gs01 + w1 * w1 * gs00) + (gs00 * gs11 - gs01 * gs01);
-    const double half = 0.5 * (a + c), disc = sqrt(0.25 * (a - c) * (a - c) + b * b);
-    const double big = half + (half >= 0.0 ? disc : -disc), small = big != 0.0 ? det / big : 0.0;
-    const double phi = 0.5 * atan2(2.0 * b, a - c), cs = cos(phi), sn = sin(phi);
-    double V[2][2];
-    int i, j;
-    /* column 0 of V has the eigenvalue half + disc, column 1 half - disc */
-    V[0][0] = cs; V[1][0] = sn; V[0][1] = -sn; V[1][1] = cs;
-    E->lam[0] = half >= 0.0 ? big : small;
-    E->lam[1] = half >= 0.0 ? small : big;
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) {
-            /* P = L^-T V, Pi = V^T L^T */
-            E->P[i][j] = (i == 0 ? i00 * V[0][j] + i10 * V[1][j] : i11 * V[1][j]);
-            E->Pi[i][j] = (j == 0 ? V[0][i] * l00 : V[0][i] * l10 + V[1][i] * l11);
-        }
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) E->fm[i][j] = E->P[j][i]; /* P^T M P = I: modal force = P^T F */
-}
-
-/* General (nonsymmetric) Ks: A = M^-1 Ks, real distinct eigenvalues required. */
-static int modes_general(const rw_derived *d, const double Ks[2][2], rw_modes2 *E)
-{
-    const double dm = d->M[0][0] * d->M[1][1] - d->M[0][1] * d->M[1][0];
-    const double Mi[2][2] = {{d->M[1][1] / dm, -d->M[0][1] / dm}, {-d->M[1][0] / dm, d->M[0][0] / dm}};
-    double A[2][2], tr, det, disc, dp;
-    int i, j;
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) A[i][j] = Mi[i][0] * Ks[0][j] + Mi[i][1] * Ks[1][j];
-    tr = A[0][0] + A[1][1];
-    det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
-    disc = 0.25 * tr * tr - det;
-    if (!(disc > 1e-14 * (0.25 * tr * tr + fabs(det)))) return -1; /* complex or repeated */
-    disc = sqrt(disc);
-    E->lam[0] = 0.5 * tr + disc;
-    E->lam[1] = 0.5 * tr - disc;
-    for (j = 0; j < 2; j++) { /* eigenvector: the larger of the two null-vector candidates */
-        const double u0 = A[0][1], u1 = E->lam[j] - A[0][0], w0 = E->lam[j] - A[1][1], w1 = A[1][0];
-        const int first = u0 * u0 + u1 * u1 >= w0 * w0 + w1 * w1;
-        E->P[0][j] = first ? u0 : w0;
-        E->P[1][j] = first ? u1 : w1;
-    }
-    dp = E->P[0][0] * E->P[1][1] - E->P[0][1] * E->P[1][0];
-    E->Pi[0][0] = E->P[1][1] / dp;
-    E->Pi[0][1] = -E->P[0][1] / dp;
-    E->Pi[1][0] = -E->P[1][0] / dp;
-    E->Pi[1][1] = E->P[0][0] / dp;
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) E->fm[i][j] = E->Pi[i][0] * Mi[0][j] + E->Pi[i][1] * Mi[1][j];
-    return 0;
-}
-
-static void modal_force(const rw_modes2 *E, const double F[2], double out[2])
-{
-    out[0] = E->fm[0][0] * F[0] + E->fm[0][1] * F[1];
-    out[1] = E->fm[1][0] * F[0] + E->fm[1][1] * F[1];
-}
-
-/* 2DOF with open hinges: the region's stiffness K - J (Eq. 3.1, 3.3). */
-static int modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
-{
-    const rw_derived *d = &e->D;
-    const double k = e->P.Kd * e->P.h * e->P.h / 4.0;
-    double G[2][2], Ks[2][2], F[2];
-    int i, j;
-    memset(E, 0, sizeof *E);
-    for (i = 0; i < 2; i++)
-        for (j = 0; j < 2; j++) {
-            G[i][j] = (d->K[i][j] - k) - J[i][j]; /* exact for a stiff spring (Sterbenz) */
-            Ks[i][j] = d->K[i][j] - J[i][j];
-        }
-    if (J[0][1] == J[1][0]) modes_symmetric(d, k, G, E);
-    else if (modes_general(d, Ks, E) != 0) return -1;
-    modal_force(E, d->pa, E->ga);
-    F[0] = F[1] = d->fu;
-    modal_force(E, F, E->gu);
-    return 0;
-}
-
-/* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
-static int cache_matches(const rw_cache_entry *c, int cb, int cm, const double key[4])
-{
-    return c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0;
-}
-
-static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
-{
-    int i;
-    if (cache_matches(&e->cache[e->cache_last], cb, cm, key)) return &e->cache[e->cache_last];
-    for (i = 0; i < RW_CACHE_SIZE; i++)
-        if (cache_matches(&e->cache[i], cb, cm, key)) {
-            e->cache_last = i;
-            return &e->cache[i];
-        }
-    return NULL;
-}
-
-static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
-{
-    rw_cache_entry *c = &e->cache[e->cache_next];
-    int i;
-    e->cache_last = e->cache_next;
-    e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
-    memset(c, 0, sizeof *c);
-    c->used = 1;
-    c->closed_b = cb;
-    c->closed_m = cm;
-    memcpy(c->key, key, sizeof c->key);
-    c->E = *E;
-    for (i = 0; i < 2; i++) {
-        c->w[i] = sqrt(fabs(E->lam[i]));
-        c->col[i] = max2(fabs(E->P[0][i]), fabs(E->P[1][i]));
-        c->inv_lam[i] = 1.0 / E->lam[i]; /* used for lam > 0 only */
-    }
-    return c;
-}
-
-/* Doherty's 1DOF (support 2): mode 0 = q1 with (W/3g) D'' = -(W/2g) ag + F0 + F1 D, D = q1 h/2;
- * mode 1 = q1 + q2 = 0 (slaved, nothing acts on it). */
-static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
-                                   double g0[2])
-{
-    const rw_params *p = &e->P;
-    double key[4] = {0, 0, 0, 0}, F0 = 0.0, F1 = 0.0;
-    rw_cache_entry *c;
-    const int closed = e->rigid && m->closed_b;
-    g0[0] = g0[1] = 0.0;
-    if (!closed) {
-        rw_force_1dof_affine(p, &e->D, m, x[0] * p->h / 2.0, dq_sel[0] * p->h / 2.0, &F0, &F1);
-        key[0] = F1;
-        g0[0] = 6.0 * p->g * F0 / (p->W * p->h);
-    }
-    c = cache_find(e, closed, 0, key);
-    if (!c) {
-        rw_modes2 E;
-        identity_modes(&E, -1.0, 1.0);
-        if (!closed) {
-            E.lam[0] = -3.0 * p->g / p->W * F1;
-            E.ga[0] = -3.0 / p->h;
-        }
-        c = cache_add(e, closed, 0, key, &E);
-    }
-    return c;
-}
-
-/* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
- * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
-static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2])
-{
-    const rw_derived *d = &e->D;
-    const double key[4] = {0, 0, 0, 0};
-    rw_cache_entry *c = cache_find(e, m->closed_b, m->closed_m, key);
-    const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
-    g0[0] = g0[1] = 0.0;
-    if (m->closed_b && !m->closed_m) g0[1] = -d->cap_m * m->side_m / d->M[1][1];
-    if (!m->closed_b && m->closed_m) g0[0] = -d->cap_b * m->side_b / mt;
-    if (!c) {
-        rw_modes2 E;
-        if (m->closed_b && m->closed_m) {
-            identity_modes(&E, 0.0, 0.0);
-        } else if (m->closed_b) {
-            identity_modes(&E, 0.0, 0.0);
-            E.lam[1] = d->K[1][1] / d->M[1][1];
-            E.ga[1] = d->pa[1] / d->M[1][1];
-            E.gu[1] = d->fu / d->M[1][1];
-        } else {
-            const double kt = d->K[0][0] + 2.0 * d->K[0][1] + d->K[1][1];
-            identity_modes(&E, 1.0, -1.0);
-            E.lam[0] = kt / mt;
-            E.ga[0] = (d->pa[0] + d->pa[1]) / mt;
-            E.gu[0] = 2.0 * d->fu / mt;
-        }
-        c = cache_add(e, m->closed_b, m->closed_m, key, &E);
-    }
-    return c;
-}
-
-/* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
- * cannot decompose it (msg filled). */
-static rw_cache_entry *region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
-                                 double g0[2], rw_affine_Q *aq)
-{
-    double Q[2], J[2][2], c[2], key[4];
-    rw_cache_entry *ce;
-    aq->valid = 0;
-    if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
-    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
-    e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
-    c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
-    c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
-    if (e->law->q_only) {
-        aq->valid = 1;
-        memcpy(aq->c, c, sizeof c);
-        memcpy(aq->J, J, sizeof J);
-    }
-    key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
-    ce = cache_find(e, 0, 0, key);
-    if (!ce) {
-        rw_modes2 E;
-        if (modes_open(e, J, &E) != 0) {
-            snprintf(e->msg, sizeof e->msg, "a region of hinge law %s has complex or repeated modes: not supported",
-                     e->law->name);
-            return NULL;
-        }
-        ce = cache_add(e, 0, 0, key, &E);
-    }
-    modal_force(&ce->E, c, g0);
-    return ce;
 }
 
 /* ---- spans: a region with a linear input, from a start state ------------------------------- */
@@ -432,15 +198,15 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
     }
     r->slow_rate = floor_rate;
     for (i = 0; i < 2; i++) {
-        const double other = max2(floor_rate, w[1 - i]);
+        const double other = rw_max2(floor_rate, w[1 - i]);
         if (R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
             const double amp = sqrt(mode_amplitude2(sp, i)); /* rotations of a standing wall: no overflow */
             r->fast[i] = r->any_fast = 1;
-            r->fast_rate = max2(r->fast_rate, w[i]);
+            r->fast_rate = rw_max2(r->fast_rate, w[i]);
             r->amp_q[0] += amp * fabs(R->E.P[0][i]);
             r->amp_q[1] += amp * fabs(R->E.P[1][i]);
         } else {
-            r->slow_rate = max2(r->slow_rate, w[i]);
+            r->slow_rate = rw_max2(r->slow_rate, w[i]);
         }
     }
 }
@@ -530,7 +296,7 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
     double width_before = hi - lo;
     int it, last = 0;
     for (it = 0; it < 400; it++) {
-        const double tol = max2(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
+        const double tol = rw_max2(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
         double s, fs;
         int bisect = 0;
         if (hi - lo <= tol) break;
@@ -612,7 +378,7 @@ static int far_from_zero(double za, double da, double zb, double db, double L)
 {
     const double aa = fabs(za), ab = fabs(zb);
     const double need = (4.0 / 27.0 + 0.05) * fabs(L) * (fabs(da) + fabs(db)) + 0.05 * fabs(zb - za);
-    return (za * zb > 0.0) & (min2(aa, ab) >= need);
+    return (za * zb > 0.0) & (rw_min2(aa, ab) >= need);
 }
 
 /* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
@@ -759,8 +525,8 @@ static void hermite_range_bound(double za, double da, double zb, double db, doub
 {
     const double ma = L * da, mb = L * db;
     const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za)), swing = 4.0 / 27.0 * (fabs(ma) + fabs(mb));
-    *lo = min2(za, zb) - swing - margin;
-    *hi = max2(za, zb) + swing + margin;
+    *lo = rw_min2(za, zb) - swing - margin;
+    *hi = rw_max2(za, zb) + swing + margin;
 }
 
 /* ---- peaks and output grid along a span ----------------------------------------------------- */
@@ -801,7 +567,7 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
         if ((ra > 0.0) == (rb > 0.0) || !(sb > sa)) continue;
         /* the turning point matters only if it can pass the peak so far */
         hermite_range_bound(s_of(e, w, xa), ra, s_of(e, w, xb), rb, sb - sa, &lo, &hi);
-        if (max2(-lo, hi) >= peak) {
+        if (rw_max2(-lo, hi) >= peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
             const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
@@ -846,7 +612,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
     rw_event_result r;
     int rounds = 0;
     e->events++;
-    if (t <= e->t_last_event + 1e-14 * max2(1.0, fabs(t))) {
+    if (t <= e->t_last_event + 1e-14 * rw_max2(1.0, fabs(t))) {
         if (++e->same_instant > e->max_same_instant) {
             snprintf(e->msg, sizeof e->msg, "more than %d events at t = %.17g (Zeno): stopped", e->max_same_instant, t);
             return RW_ENGINE_ZENO + 1;
@@ -1029,8 +795,8 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     const double C = ma, margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
     double roots[2];
     int n = 0, i;
-    *lo = min2(za, zb);
-    *hi = max2(za, zb);
+    *lo = rw_min2(za, zb);
+    *hi = rw_max2(za, zb);
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -1044,8 +810,8 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
         const double u = roots[i], u2 = u * u, u3 = u2 * u;
         if (u > 0.0 && u < 1.0) {
             const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
-            *lo = min2(*lo, z);
-            *hi = max2(*hi, z);
+            *lo = rw_min2(*lo, z);
+            *hi = rw_max2(*hi, z);
         }
     }
     *lo -= margin;
@@ -1082,7 +848,7 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
     }
     region_indicators(e, m, sp, &in, xp, NULL, RW_Z_ALL, zp, NULL);
     region_indicators(e, m, sp, &in, xm, NULL, RW_Z_ALL, zm, NULL);
-    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
 
 /* Can the substep [0, L] of the span hold no event (see above)? Then *peaks_full says whether a
@@ -1116,10 +882,10 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
         const double sa_ = s_of(e, w, a.x), ra = s_of(e, w, va), sb_ = s_of(e, w, b.x), rb = s_of(e, w, vb);
         hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (max2(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
         hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (max2(fabs(lo), fabs(hi)) + sb < peak) continue;
-        if (sb > 1e-9 * max2(fabs(lo), fabs(hi))) return 0;
+        if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
+        if (sb > 1e-9 * rw_max2(fabs(lo), fabs(hi))) return 0;
         *peaks_full = 1;
     }
     return 1;
@@ -1170,8 +936,8 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
     double g0[2];
     if (!e || e->P.support != RW_FLEXIBLE_TOP) return RW_ENGINE_UNSUPPORTED;
     memset(&R, 0, sizeof R);
-    if (modes_open(e, J, &R.E) != 0) return RW_ENGINE_UNSUPPORTED;
-    modal_force(&R.E, c, g0);
+    if (rw_engine_modes_open(e, J, &R.E) != 0) return RW_ENGINE_UNSUPPORTED;
+    rw_engine_modal_force(&R.E, c, g0);
     memset(&sp, 0, sizeof sp);
     span_start(&sp, &R, g0, 0.0, x0, in, 0.0);
     span_eval(&sp, s, NULL, x, NULL);
@@ -1219,7 +985,7 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         now.ag = in->ag + in->ag_slope * (t - t_in);
         now.u_top = in->u_top + in->u_slope * (t - t_in);
         selection_rate(e, m, &now, x, dq_sel);
-        R = region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
+        R = rw_engine_region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
         if (!R) return NULL;
         region_lines(e, m);
         if (e->region_aq.valid)
@@ -1365,261 +1131,32 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     return rc;
 }
 
-/* ---- the batch run ---------------------------------------------------------------------------- */
-static int check_increasing(const double *v, size_t n, const char *what, char *msg, size_t len)
+/* ---- for the batch run (rw_engine_internal.h) ------------------------------------------------- */
+/* The start of a run at t0 from the state x (the modes from it, the hosts' initial event iteration,
+ * the collapse test): 0, 1 if collapsed, or an error code + 1. */
+int rw_engine_begin(rw_engine *e, rw_mode *m, double x[RW_NX], double t0, const rw_input *in)
 {
-    size_t i;
-    for (i = 0; i < n; i++) {
-        if (!isfinite(v[i])) {
-            snprintf(msg, len, "%s[%zu] is not finite", what, i);
-            return 1;
-        }
-        if (i > 0 && !(v[i] > v[i - 1])) {
-            snprintf(msg, len, "%s must be strictly increasing (%s[%zu] = %.17g after %.17g)", what, what, i, v[i],
-                     v[i - 1]);
-            return 1;
-        }
-    }
-    return 0;
-}
-
-static int check_finite(const double *v, size_t n, const char *what, char *msg, size_t len)
-{
-    size_t i;
-    for (i = 0; v && i < n; i++)
-        if (!isfinite(v[i])) {
-            snprintf(msg, len, "%s[%zu] is not finite", what, i);
-            return 1;
-        }
-    return 0;
-}
-
-static int check_run_arguments(const rw_params *p, const rw_record *rec, const rw_engine_options *o, char *msg,
-                               size_t n)
-{
-    if (!p || !rec || !o) {
-        snprintf(msg, n, "rw_engine_run: params, record and options must not be NULL");
-        return RW_ENGINE_BAD_ARGUMENT;
-    }
-    if (rec->n < 1 || !rec->t || !rec->ag) {
-        snprintf(msg, n, "the record needs n >= 1 samples with times t and accelerations ag");
-        return RW_ENGINE_BAD_ARGUMENT;
-    }
-    if (check_increasing(rec->t, rec->n, "t", msg, n) || check_finite(rec->ag, rec->n, "ag", msg, n) ||
-        check_finite(rec->u_top, rec->n, "u_top", msg, n))
-        return RW_ENGINE_BAD_ARGUMENT;
-    if (!isfinite(o->t_start) || !isfinite(o->t_end) || !(o->t_end > o->t_start)) {
-        snprintf(msg, n, "need finite t_start < t_end, got %g, %g", o->t_start, o->t_end);
-        return RW_ENGINE_BAD_ARGUMENT;
-    }
-    if (check_finite(o->x0, o->x0 ? RW_NX : 0, "x0", msg, n)) return RW_ENGINE_BAD_ARGUMENT;
-    if (o->n_out > 0) {
-        if (!o->t_out || check_increasing(o->t_out, o->n_out, "t_out", msg, n)) {
-            if (!o->t_out) snprintf(msg, n, "n_out > 0 needs the output times t_out");
-            return RW_ENGINE_BAD_ARGUMENT;
-        }
-        if (o->t_out[0] < o->t_start || o->t_out[o->n_out - 1] > o->t_end) {
-            snprintf(msg, n, "output times must lie in [t_start, t_end]");
-            return RW_ENGINE_BAD_ARGUMENT;
-        }
-    }
-    return 0;
-}
-
-/* the input of the record on the segment starting at sample i (i = -1: before the first sample,
- * i = n - 1: after the last; both held) */
-static rw_linear_input record_segment(const rw_record *rec, ptrdiff_t i)
-{
-    rw_linear_input in;
-    memset(&in, 0, sizeof in);
-    if (i < 0 || (size_t)i >= rec->n - 1) {
-        const size_t k = i < 0 ? 0 : rec->n - 1;
-        in.ag = rec->ag[k];
-        in.u_top = rec->u_top ? rec->u_top[k] : 0.0;
-        return in;
-    }
-    {
-        const double dt = rec->t[i + 1] - rec->t[i];
-        in.ag = rec->ag[i];
-        in.ag_slope = (rec->ag[i + 1] - rec->ag[i]) / dt;
-        if (rec->u_top) {
-            in.u_top = rec->u_top[i];
-            in.u_slope = (rec->u_top[i + 1] - rec->u_top[i]) / dt;
-        }
-    }
-    return in;
-}
-
-/* the segment index whose interval [t_i, t_i+1) holds t (-1 before the first sample); ptrdiff_t, not
- * long: long has 32 bits on Windows */
-static ptrdiff_t segment_of(const rw_record *rec, double t)
-{
-    size_t lo = 0, hi = rec->n;
-    if (t < rec->t[0]) return -1;
-    while (hi - lo > 1) { /* rec->t[lo] <= t < rec->t[hi] */
-        const size_t mid = (lo + hi) / 2;
-        if (rec->t[mid] <= t) lo = mid;
-        else hi = mid;
-    }
-    return (ptrdiff_t)lo;
-}
-
-static void result_init(rw_engine_result *res)
-{
-    double *x_out = res->x_out, *s1 = res->s1_out, *s2 = res->s2_out;
-    double *it = res->impact_t, *ie = res->impact_energy;
-    const size_t cap = res->impact_cap;
-    memset(res, 0, sizeof *res);
-    res->impact_t = it;
-    res->impact_energy = ie;
-    res->impact_cap = cap;
-    res->x_out = x_out;
-    res->s1_out = s1;
-    res->s2_out = s2;
-    res->t_collapse = NAN;
-}
-
-/* Start: the modes from the start states, the hosts' initial event iteration, the collapse test. */
-static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_mode *m, double x[RW_NX])
-{
-    const rw_linear_input li = record_segment(rec, segment_of(rec, o->t_start));
-    const ptrdiff_t seg = segment_of(rec, o->t_start);
-    rw_input in;
-    in.ag = li.ag + li.ag_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
-    in.u_top = li.u_top + li.u_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
-    if (o->x0) memcpy(x, o->x0, sizeof(double) * RW_NX);
-    else memset(x, 0, sizeof(double) * RW_NX);
     memset(m, 0, sizeof *m);
-    rw_init_modes(&e->P, &e->D, &in, x, m, NULL, NULL);
-    e->t_last_event = o->t_start;
+    rw_init_modes(&e->P, &e->D, in, x, m, NULL, NULL);
+    e->t_last_event = t0;
     e->same_instant = 0;
     e->events--; /* the initial iteration is not a located event */
-    if (e->n_out > 0 && e->t_out[0] <= o->t_start) record_output(e, x);
+    if (e->n_out > 0 && e->t_out[0] <= t0) record_output(e, x);
     track_peak(e, 0, rw_s1(&e->P, x));
     track_peak(e, 1, rw_s2(&e->P, x));
-    return apply_event(e, m, x, o->t_start, &in);
+    return apply_event(e, m, x, t0, in);
 }
 
-int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *o, rw_engine_result *res)
+int rw_engine_advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
+                      double t_in)
 {
-    rw_engine *e;
-    rw_mode m;
-    double x[RW_NX], t;
-    ptrdiff_t seg;
-    int rc;
-    if (!res) return RW_ENGINE_BAD_ARGUMENT;
-    result_init(res);
-    rc = check_run_arguments(p, rec, o, res->message, sizeof res->message);
-    if (rc) return rc;
-    e = rw_engine_new(p, res->message, sizeof res->message);
-    if (!e) {
-        if (p->support == RW_PARAPET && !rw_params_validate(p, res->message, sizeof res->message)) {
-            snprintf(res->message, sizeof res->message,
-                     "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
-            return RW_ENGINE_UNSUPPORTED;
-        }
-        return strstr(res->message, "memory") ? RW_ENGINE_NO_MEMORY : RW_ENGINE_BAD_PARAMETERS;
-    }
-    if (o->max_events_per_instant > 0) e->max_same_instant = o->max_events_per_instant;
-    e->t_out = o->t_out;
-    e->n_out = o->n_out;
-    e->x_out = res->x_out;
-    e->s1_out = res->s1_out;
-    e->s2_out = res->s2_out;
-    if (res->impact_t && res->impact_energy) {
-        e->impact_t = res->impact_t;
-        e->impact_energy = res->impact_energy;
-        e->impact_cap = res->impact_cap;
-    }
-    rc = run_start(e, rec, o, &m, x);
-    t = o->t_start;
-    seg = segment_of(rec, t);
-    while (rc == 0 && t < o->t_end) {
-        const rw_linear_input in = record_segment(rec, seg);
-        const double t_in = seg >= 0 ? rec->t[seg] : t;
-        double t_next = (seg + 1 < (ptrdiff_t)rec->n) ? rec->t[seg + 1] : o->t_end;
-        if (t_next > o->t_end) t_next = o->t_end;
-        if (t_next > t) rc = advance(e, &m, x, &t, t_next, &in, t_in);
-        seg++;
-    }
+    return advance(e, m, x, t, t_end, in, t_in);
+}
+
+void rw_engine_fill_outputs(rw_engine *e)
+{
     while (e->i_out < e->n_out) { /* after a collapse or a Zeno stop: no values */
         const double nan4[RW_NX] = {NAN, NAN, NAN, NAN};
         record_output(e, nan4);
     }
-    res->peak_s1 = e->peak_s1;
-    res->peak_s2 = e->peak_s2;
-    res->collapsed = e->collapsed;
-    res->collapse_reason = e->reason;
-    res->t_collapse = e->t_collapse;
-    res->impacts = e->impacts;
-    res->events = e->events;
-    res->steps = e->steps;
-    res->t_reached = t;
-    memcpy(res->x_end, x, sizeof x);
-    if (rc > 1) snprintf(res->message, sizeof res->message, "%s", e->msg);
-    rw_engine_free(e);
-    return rc > 1 ? rc - 1 : 0;
-}
-
-/* ---- sweeps ----------------------------------------------------------------------------------- */
-static int check_many_arguments(size_t n, const rw_params *params, const double *scale, const rw_record *rec,
-                                const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t len)
-{
-    size_t i;
-    if (!params || !rec || !opt || !out || (n > 0 && !rec->ag)) {
-        snprintf(msg, len, "rw_engine_run_many: params, record, options and outputs must not be NULL");
-        return RW_ENGINE_BAD_ARGUMENT;
-    }
-    if (opt->n_out > 0) {
-        snprintf(msg, len, "rw_engine_run_many gives peaks only: no output grid (n_out = 0)");
-        return RW_ENGINE_BAD_ARGUMENT;
-    }
-    for (i = 0; scale && i < n; i++)
-        if (!isfinite(scale[i])) {
-            snprintf(msg, len, "scale[%zu] is not finite", i);
-            return RW_ENGINE_BAD_ARGUMENT;
-        }
-    return 0;
-}
-
-static void store_summary(const rw_engine_batch *out, size_t i, int code, const rw_engine_result *r)
-{
-    const int ran = code == 0 || code == RW_ENGINE_ZENO;
-    if (out->peak_s1) out->peak_s1[i] = ran ? r->peak_s1 : NAN;
-    if (out->peak_s2) out->peak_s2[i] = ran ? r->peak_s2 : NAN;
-    if (out->collapsed) out->collapsed[i] = r->collapsed;
-    if (out->t_collapse) out->t_collapse[i] = r->collapsed ? r->t_collapse : NAN;
-    if (out->impacts) out->impacts[i] = r->impacts;
-    if (out->code) out->code[i] = code;
-}
-
-int rw_engine_run_many(size_t n, const rw_params *params, int params_each, const double *scale, const rw_record *rec,
-                       const rw_engine_options *opt, const rw_engine_batch *out, char *msg, size_t msg_len)
-{
-    double *ag = NULL;
-    rw_record scaled;
-    size_t i, j;
-    int rc = check_many_arguments(n, params, scale, rec, opt, out, msg, msg_len);
-    if (rc || n == 0) return rc;
-    if (scale) { /* one buffer for the scaled record, reused by every run */
-        ag = (double *)malloc(sizeof(double) * (rec->n > 0 ? rec->n : 1));
-        if (!ag) {
-            snprintf(msg, msg_len, "out of memory");
-            return RW_ENGINE_NO_MEMORY;
-        }
-    }
-    scaled = *rec;
-    for (i = 0; i < n; i++) {
-        rw_engine_result r;
-        int code;
-        memset(&r, 0, sizeof r);
-        if (scale) {
-            for (j = 0; j < rec->n; j++) ag[j] = scale[i] * rec->ag[j];
-            scaled.ag = ag;
-        }
-        code = rw_engine_run(&params[params_each ? i : 0], &scaled, opt, &r);
-        store_summary(out, i, code, &r);
-    }
-    free(ag);
-    return 0;
 }

@@ -51,7 +51,13 @@ SCENES = [  # label, FMU parameters, reference-solver names (None: not in the re
     ("1DOF trilinear (simply supported)", dict(support=2, hingeLaw=4), ("simplySupported", "semiRigidHinge")),
 ]
 FMI2SIM_RTOLS = (1e-6, 1e-8, 1e-10)
-FLOPS_PER_STEP, FLOPS_PER_EVENT, FLOPS_PER_NS = 60, 2000, 1.0
+# The floor: the arithmetic the algorithm cannot skip, counted by the engine's own steps and events.
+# A closed-form step: two modes with cached coefficients (~30 flop), the map to q, dq, ddq (~16), the
+# eight indicators with their rates (~50) and a sign-and-margin test of each (~50): ~150 flop. An
+# event: ~3.5 root evaluations (two Stumpff series, the step and one indicator: ~100 flop each), the
+# event map and the next region's set-up (~250): ~600 flop. At 2 flop/ns, scalar doubles on this
+# 2-3 GHz core.
+FLOPS_PER_STEP, FLOPS_PER_EVENT, FLOPS_PER_NS = 150, 600, 2.0
 
 
 def fmi2sim(csv, params, rtol, t_end, workdir, solver="bdf"):
@@ -199,8 +205,8 @@ def main():
                     ref_txt = f"n/a ({type(exc).__name__})"
         print(f"{label:<36} {t_eng * 1e3:8.2f} {floor:7.3f} {t_cli * 1e3:7.1f} {e_eng:8.0e} {rps:7.0f} | {cols[0]} | "
               f"{cols[1]} | {cols[2]} | {fp_txt:>16} | {ref_txt:>16}", flush=True)
-    print("engine: ms per record in-process (best of 3); floor: the engine's own counts (closed-form steps x 60"
-          " flop + events x 2000 flop) at 1 flop/ns;\nCLI: build/rwengine as a whole process, ms wall (best of 5);"
+    print("engine: ms per record in-process (best of 3); floor: the engine's own counts (closed-form steps x 150"
+          " flop + events x 600 flop) at 2 flop/ns;\nCLI: build/rwengine as a whole process, ms wall (best of 5);"
           " runs/s: run_many on one core; ratio: CPU of the cheapest fmi2sim run at least as accurate as the"
           " engine (else its most accurate) over the engine's time.")
     if not args.quick:

@@ -1,0 +1,239 @@
+/* The exact engine's linear regions (rw_engine.h): the modal decomposition of each region of the
+ * model between events (open hinges under a law's affine moments, Doherty's 1DOF, closed rigid
+ * hinges) and the cache of decompositions. */
+#include "rw_engine_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static void identity_modes(rw_modes2 *E, double p10, double pi10)
+{
+    memset(E, 0, sizeof *E);
+    E->P[0][0] = E->P[1][1] = E->Pi[0][0] = E->Pi[1][1] = 1.0;
+    E->P[1][0] = p10;
+    E->Pi[1][0] = pi10;
+}
+
+/* Symmetric generalised eigenproblem (Ks, M): Ks = k e e^T + G with e = (1, 1) and k = Kd h^2/4
+ * (Eq. 3.3), so that the slow eigenvalue under a stiff spring (k up to 1e12) comes from the
+ * determinant written without cancellation. M = L L^T; S = L^-1 Ks L^-T = k w w^T + Gs. */
+static void modes_symmetric(const rw_derived *d, double k, const double G[2][2], rw_modes2 *E)
+{
+    const double l00 = sqrt(d->M[0][0]), l10 = d->M[1][0] / l00, l11 = sqrt(d->M[1][1] - l10 * l10);
+    const double i00 = 1.0 / l00, i10 = -l10 / (l00 * l11), i11 = 1.0 / l11; /* L^-1 */
+    const double w0 = i00, w1 = i10 + i11;
+    const double gs00 = i00 * i00 * G[0][0];
+    const double gs01 = i00 * (i10 * G[0][0] + i11 * G[0][1]);
+    const double gs11 = i10 * i10 * G[0][0] + 2.0 * i10 * i11 * G[0][1] + i11 * i11 * G[1][1];
+    const double a = k * w0 * w0 + gs00, b = k * w0 * w1 + gs01, c = k * w1 * w1 + gs11;
+    const double det = k * (w0 * w0 * gs11 - 2.0 * w0 * w1 * gs01 + w1 * w1 * gs00) + (gs00 * gs11 - gs01 * gs01);
+    const double half = 0.5 * (a + c), disc = sqrt(0.25 * (a - c) * (a - c) + b * b);
+    const double big = half + (half >= 0.0 ? disc : -disc), small = big != 0.0 ? det / big : 0.0;
+    const double phi = 0.5 * atan2(2.0 * b, a - c), cs = cos(phi), sn = sin(phi);
+    double V[2][2];
+    int i, j;
+    /* column 0 of V has the eigenvalue half + disc, column 1 half - disc */
+    V[0][0] = cs; V[1][0] = sn; V[0][1] = -sn; V[1][1] = cs;
+    E->lam[0] = half >= 0.0 ? big : small;
+    E->lam[1] = half >= 0.0 ? small : big;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            /* P = L^-T V, Pi = V^T L^T */
+            E->P[i][j] = (i == 0 ? i00 * V[0][j] + i10 * V[1][j] : i11 * V[1][j]);
+            E->Pi[i][j] = (j == 0 ? V[0][i] * l00 : V[0][i] * l10 + V[1][i] * l11);
+        }
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->P[j][i]; /* P^T M P = I: modal force = P^T F */
+}
+
+/* General (nonsymmetric) Ks: A = M^-1 Ks, real distinct eigenvalues required. */
+static int modes_general(const rw_derived *d, const double Ks[2][2], rw_modes2 *E)
+{
+    const double dm = d->M[0][0] * d->M[1][1] - d->M[0][1] * d->M[1][0];
+    const double Mi[2][2] = {{d->M[1][1] / dm, -d->M[0][1] / dm}, {-d->M[1][0] / dm, d->M[0][0] / dm}};
+    double A[2][2], tr, det, disc, dp;
+    int i, j;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) A[i][j] = Mi[i][0] * Ks[0][j] + Mi[i][1] * Ks[1][j];
+    tr = A[0][0] + A[1][1];
+    det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+    disc = 0.25 * tr * tr - det;
+    if (!(disc > 1e-14 * (0.25 * tr * tr + fabs(det)))) return -1; /* complex or repeated */
+    disc = sqrt(disc);
+    E->lam[0] = 0.5 * tr + disc;
+    E->lam[1] = 0.5 * tr - disc;
+    for (j = 0; j < 2; j++) { /* eigenvector: the larger of the two null-vector candidates */
+        const double u0 = A[0][1], u1 = E->lam[j] - A[0][0], w0 = E->lam[j] - A[1][1], w1 = A[1][0];
+        const int first = u0 * u0 + u1 * u1 >= w0 * w0 + w1 * w1;
+        E->P[0][j] = first ? u0 : w0;
+        E->P[1][j] = first ? u1 : w1;
+    }
+    dp = E->P[0][0] * E->P[1][1] - E->P[0][1] * E->P[1][0];
+    E->Pi[0][0] = E->P[1][1] / dp;
+    E->Pi[0][1] = -E->P[0][1] / dp;
+    E->Pi[1][0] = -E->P[1][0] / dp;
+    E->Pi[1][1] = E->P[0][0] / dp;
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) E->fm[i][j] = E->Pi[i][0] * Mi[0][j] + E->Pi[i][1] * Mi[1][j];
+    return 0;
+}
+
+void rw_engine_modal_force(const rw_modes2 *E, const double F[2], double out[2])
+{
+    out[0] = E->fm[0][0] * F[0] + E->fm[0][1] * F[1];
+    out[1] = E->fm[1][0] * F[0] + E->fm[1][1] * F[1];
+}
+
+/* 2DOF with open hinges: the region's stiffness K - J (Eq. 3.1, 3.3). */
+int rw_engine_modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
+{
+    const rw_derived *d = &e->D;
+    const double k = e->P.Kd * e->P.h * e->P.h / 4.0;
+    double G[2][2], Ks[2][2], F[2];
+    int i, j;
+    memset(E, 0, sizeof *E);
+    for (i = 0; i < 2; i++)
+        for (j = 0; j < 2; j++) {
+            G[i][j] = (d->K[i][j] - k) - J[i][j]; /* exact for a stiff spring (Sterbenz) */
+            Ks[i][j] = d->K[i][j] - J[i][j];
+        }
+    if (J[0][1] == J[1][0]) modes_symmetric(d, k, G, E);
+    else if (modes_general(d, Ks, E) != 0) return -1;
+    rw_engine_modal_force(E, d->pa, E->ga);
+    F[0] = F[1] = d->fu;
+    rw_engine_modal_force(E, F, E->gu);
+    return 0;
+}
+
+/* The cache of decompositions, keyed by the closed flags and J (or the 1DOF slope). */
+static int cache_matches(const rw_cache_entry *c, int cb, int cm, const double key[4])
+{
+    return c->used && c->closed_b == cb && c->closed_m == cm && memcmp(c->key, key, sizeof c->key) == 0;
+}
+
+static rw_cache_entry *cache_find(rw_engine *e, int cb, int cm, const double key[4])
+{
+    int i;
+    if (cache_matches(&e->cache[e->cache_last], cb, cm, key)) return &e->cache[e->cache_last];
+    for (i = 0; i < RW_CACHE_SIZE; i++)
+        if (cache_matches(&e->cache[i], cb, cm, key)) {
+            e->cache_last = i;
+            return &e->cache[i];
+        }
+    return NULL;
+}
+
+static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[4], const rw_modes2 *E)
+{
+    rw_cache_entry *c = &e->cache[e->cache_next];
+    int i;
+    e->cache_last = e->cache_next;
+    e->cache_next = (e->cache_next + 1) % RW_CACHE_SIZE;
+    memset(c, 0, sizeof *c);
+    c->used = 1;
+    c->closed_b = cb;
+    c->closed_m = cm;
+    memcpy(c->key, key, sizeof c->key);
+    c->E = *E;
+    for (i = 0; i < 2; i++) {
+        c->w[i] = sqrt(fabs(E->lam[i]));
+        c->col[i] = rw_max2(fabs(E->P[0][i]), fabs(E->P[1][i]));
+        c->inv_lam[i] = 1.0 / E->lam[i]; /* used for lam > 0 only */
+    }
+    return c;
+}
+
+/* Doherty's 1DOF (support 2): mode 0 = q1 with (W/3g) D'' = -(W/2g) ag + F0 + F1 D, D = q1 h/2;
+ * mode 1 = q1 + q2 = 0 (slaved, nothing acts on it). */
+static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                   double g0[2])
+{
+    const rw_params *p = &e->P;
+    double key[4] = {0, 0, 0, 0}, F0 = 0.0, F1 = 0.0;
+    rw_cache_entry *c;
+    const int closed = e->rigid && m->closed_b;
+    g0[0] = g0[1] = 0.0;
+    if (!closed) {
+        rw_force_1dof_affine(p, &e->D, m, x[0] * p->h / 2.0, dq_sel[0] * p->h / 2.0, &F0, &F1);
+        key[0] = F1;
+        g0[0] = 6.0 * p->g * F0 / (p->W * p->h);
+    }
+    c = cache_find(e, closed, 0, key);
+    if (!c) {
+        rw_modes2 E;
+        identity_modes(&E, -1.0, 1.0);
+        if (!closed) {
+            E.lam[0] = -3.0 * p->g / p->W * F1;
+            E.ga[0] = -3.0 / p->h;
+        }
+        c = cache_add(e, closed, 0, key, &E);
+    }
+    return c;
+}
+
+/* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
+ * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
+static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2])
+{
+    const rw_derived *d = &e->D;
+    const double key[4] = {0, 0, 0, 0};
+    rw_cache_entry *c = cache_find(e, m->closed_b, m->closed_m, key);
+    const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
+    g0[0] = g0[1] = 0.0;
+    if (m->closed_b && !m->closed_m) g0[1] = -d->cap_m * m->side_m / d->M[1][1];
+    if (!m->closed_b && m->closed_m) g0[0] = -d->cap_b * m->side_b / mt;
+    if (!c) {
+        rw_modes2 E;
+        if (m->closed_b && m->closed_m) {
+            identity_modes(&E, 0.0, 0.0);
+        } else if (m->closed_b) {
+            identity_modes(&E, 0.0, 0.0);
+            E.lam[1] = d->K[1][1] / d->M[1][1];
+            E.ga[1] = d->pa[1] / d->M[1][1];
+            E.gu[1] = d->fu / d->M[1][1];
+        } else {
+            const double kt = d->K[0][0] + 2.0 * d->K[0][1] + d->K[1][1];
+            identity_modes(&E, 1.0, -1.0);
+            E.lam[0] = kt / mt;
+            E.ga[0] = (d->pa[0] + d->pa[1]) / mt;
+            E.gu[0] = 2.0 * d->fu / mt;
+        }
+        c = cache_add(e, m->closed_b, m->closed_m, key, &E);
+    }
+    return c;
+}
+
+/* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
+ * cannot decompose it (msg filled). */
+rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+                                 double g0[2], rw_affine_Q *aq)
+{
+    double Q[2], J[2][2], c[2], key[4];
+    rw_cache_entry *ce;
+    aq->valid = 0;
+    if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
+    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
+    e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
+    c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
+    c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
+    if (e->law->q_only) {
+        aq->valid = 1;
+        memcpy(aq->c, c, sizeof c);
+        memcpy(aq->J, J, sizeof J);
+    }
+    key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
+    ce = cache_find(e, 0, 0, key);
+    if (!ce) {
+        rw_modes2 E;
+        if (rw_engine_modes_open(e, J, &E) != 0) {
+            snprintf(e->msg, sizeof e->msg, "a region of hinge law %s has complex or repeated modes: not supported",
+                     e->law->name);
+            return NULL;
+        }
+        ce = cache_add(e, 0, 0, key, &E);
+    }
+    rw_engine_modal_force(&ce->E, c, g0);
+    return ce;
+}
+
