@@ -12,7 +12,7 @@ Prints the table, the speed ratios at equal accuracy measured side by side in th
 the model ladder (what each simpler model costs and how far its peaks are), and writes
 results/bench_*.csv and results/work_precision.png.
 
-    .venv/bin/python scripts/bench.py [--quick]
+    .venv/bin/python scripts/bench.py [--quick] [--summary-only]
 """
 import argparse
 import csv
@@ -225,9 +225,14 @@ def main():
     parser.add_argument("--quick", action="store_true", help="fewer tolerances, 15 s of El Centro")
     parser.add_argument("--ladder-only", action="store_true", help="only the model ladder and the K_d sweep")
     parser.add_argument("--out", default=str(REPO / "results"))
+    parser.add_argument("--summary-only", action="store_true",
+                        help="rewrite the ratio table of bench_summary.txt from bench_work_precision.csv")
     args = parser.parse_args()
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
+    if args.summary_only:
+        summary_from_csv(out)
+        return
 
     fmu_dir = extract(str(FMU))
     work = tempfile.mkdtemp(prefix="rw_bench_")
@@ -295,22 +300,42 @@ def main():
 
     # Speed ratios at equal accuracy, from this one run.
     tee = Tee(out / "bench_summary.txt").__enter__()
-    targets = [1e-2, 1e-3, 1e-4]
-    print("\nCPU seconds to reach an error target (cheapest run that does), and ratios to fmi2sim BDF")
-    print(f"{'scene':<34}{'target':>8}{'fmi2sim':>10}{'fmpy':>10}{'reference':>11}{'ref/sim':>9}{'fmpy/sim':>9}")
-    for label, _, _ in cases:
-        for target in targets:
-            def best(prefix):
-                pts = [(r[3], r[4]) for r in rows if r[0] == label and r[1].startswith(prefix)]
-                return cost_at(pts, target)
-            c_sim, c_fmpy, c_ref = best("fmi2sim"), best("fmpy"), best("reference")
-            fmt = lambda c: f"{c:.3f}" if c is not None else "-"
-            ratio = lambda c: f"{c / c_sim:.0f}x" if (c is not None and c_sim) else "-"
-            print(f"{label:<34}{target:>8g}{fmt(c_sim):>10}{fmt(c_fmpy):>10}{fmt(c_ref):>11}"
-                  f"{ratio(c_ref):>9}{ratio(c_fmpy):>9}")
+    print_ratios(rows, [label for label, _, _ in cases])
     model_ladder(sim, ladder_cases, out)
     tee.__exit__(None, None, None)
     print(f"\nwrote {out}/bench_work_precision.csv, bench_model_ladder.csv, bench_kd_sweep.csv and work_precision.png")
+
+
+def print_ratios(rows, labels):
+    """CPU seconds each family needs to reach an error target, the ratios to fmi2sim (the cheapest
+    of BDF, Adams and ERK), and the exact engine's one run when it reaches the target."""
+    print("\nCPU seconds to reach an error target (cheapest run that does), and ratios to fmi2sim "
+          "(BDF, Adams or ERK); the exact engine has no tolerance: its one run, if it reaches the target")
+    print(f"{'scene':<34}{'target':>8}{'engine':>9}{'fmi2sim':>10}{'fmpy':>10}{'reference':>11}"
+          f"{'sim/eng':>9}{'ref/sim':>9}{'fmpy/sim':>9}")
+    for label in labels:
+        for target in (1e-2, 1e-3, 1e-4):
+            def best(prefix):
+                pts = [(r[3], r[4]) for r in rows if r[0] == label and r[1].startswith(prefix)]
+                return cost_at(pts, target)
+            c_eng, c_sim, c_fmpy, c_ref = best("exact engine"), best("fmi2sim"), best("fmpy"), best("reference")
+            fmt = lambda c: f"{c:.3f}" if c is not None else "-"
+            ratio = lambda a, b: f"{a / b:.0f}x" if (a is not None and b) else "-"
+            print(f"{label:<34}{target:>8g}{fmt(c_eng):>9}{fmt(c_sim):>10}{fmt(c_fmpy):>10}{fmt(c_ref):>11}"
+                  f"{ratio(c_sim, c_eng):>9}{ratio(c_ref, c_sim):>9}{ratio(c_fmpy, c_sim):>9}")
+
+
+def summary_from_csv(out):
+    """--summary-only: the ratio table again from bench_work_precision.csv, the model ladder kept"""
+    with open(out / "bench_work_precision.csv") as f:
+        rows = [(r["scene"], r["contender"], float(r["setting"]), float(r["error"]), float(r["cpu_s"]))
+                for r in csv.DictReader(f)]
+    summary = out / "bench_summary.txt"
+    ladder = summary.read_text()
+    ladder = ladder[ladder.index("Model ladder"):] if "Model ladder" in ladder else ""
+    with Tee(summary):
+        print_ratios(rows, list(dict.fromkeys(r[0] for r in rows)))
+        print("\n" + ladder, end="")
 
 
 if __name__ == "__main__":

@@ -34,6 +34,7 @@ import numpy as np
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
 from rockingwall import engine as rw_engine  # noqa: E402
+from rockingwall.records import G_STD, read_at2  # noqa: E402
 from rwref import inputs  # noqa: E402
 
 FMU = REPO / "build" / "RockingWall.fmu"
@@ -134,15 +135,15 @@ def sweep(workers=2):
     from concurrent.futures import ThreadPoolExecutor
     from rockingwall.sweep.records import fema_farfield
     cache = pathlib.Path(os.environ.get("XDG_CACHE_HOME", pathlib.Path.home() / ".cache")) / "rockingwall" / "fema_farfield"
-    records = [inputs.read_at2(r.path) for r in fema_farfield(cache)]
-    jobs = [(sig, kd) for sig in records for kd in SWEEP_KD]
+    records = [read_at2(r.path) for r in fema_farfield(cache)]
+    jobs = [(rec, kd) for rec in records for kd in SWEEP_KD]
 
     def one(job):
-        sig, kd = job
-        scale = SWEEP_PGA_G * inputs.G_STD / np.max(np.abs(sig.a))
-        r = rw_engine.run_many(sig.t, sig.a, scale=scale, t_end=float(sig.t[-1]), support=3, hingeLaw=4, Kd=kd,
+        rec, kd = job
+        scale = SWEEP_PGA_G * G_STD / rec.pga
+        r = rw_engine.run_many(rec.t, rec.ag, scale=scale, t_end=float(rec.t[-1]), support=3, hingeLaw=4, Kd=kd,
                                **WALL_1)
-        return len(scale), int(r["collapsed"].sum()), int((r["code"] != 0).sum()), float(sig.t[-1])
+        return len(scale), int(r["collapsed"].sum()), int((r["code"] != 0).sum()), float(rec.t[-1])
 
     cpu0, start = time.process_time(), time.perf_counter()
     with ThreadPoolExecutor(workers) as pool:
