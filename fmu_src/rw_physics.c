@@ -239,12 +239,19 @@ double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double
     return q1 * Kq1 + q2 * Kq2 - (q1 * Q[0] + q2 * Q[1]);
 }
 
+/* The hinge moments the collapse test takes at x: the sides from the rotations themselves */
+static void collapse_moments(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+                             double Q[2], double J[2][2])
+{
+    law(p)->moments(d, side_of(x[0], m->side_b), side_of(x[1] - x[0], m->side_m), x, x + 2, Q, J);
+}
+
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                      const double x[RW_NX])
 {
     double Q[2], J[2][2];
     (void)in; /* the spring counts as if the diaphragm held still (docs/model.md "Collapse") */
-    law(p)->moments(d, side_of(x[0], m->side_b), side_of(x[1] - x[0], m->side_m), x, x + 2, Q, J);
+    collapse_moments(p, d, m, x, Q, J);
     return rw_collapse_G_of(d, x, Q);
 }
 
@@ -359,7 +366,7 @@ static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_mo
     if (dz) *dz = 0.0;
     if (!(n2 > 0.0)) return RW_COLLAPSE_ZMAX; /* +large near q = 0 for rigid hinges */
     if (!Qx) {
-        law(p)->moments(d, side_of(q1, m->side_b), side_of(q2 - q1, m->side_m), x, x + 2, Ql, J);
+        collapse_moments(p, d, m, x, Ql, J);
         Qx = Ql;
         Jx = (const double(*)[2])J;
     }
