@@ -220,14 +220,20 @@ typedef rw_engine_point rw_point; /* rw_engine.h */
  * others (collapse, toppling, closed hinges) by the shared physics, with the region's affine
  * hinge moments where the law has them (rw_hinge_law.q_only). */
 static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
-                              const double x[RW_NX], const double xd[RW_NX], unsigned mask, double z[RW_NZ],
-                              double dz[RW_NZ])
+                              const double x[RW_NX], const double xd[RW_NX], unsigned mask, double *restrict z,
+                              double *restrict dz)
 {
     const unsigned collapse = 1u << RW_Z_COLLAPSE, topple = 1u << RW_Z_TOPPLE;
     unsigned rest = mask & ~e->line_mask;
     int k;
     if (xd && mask == RW_Z_ALL) { /* every line, without a test per line (the others are overwritten below) */
-        for (k = 0; k < RW_NZ; k++) z[k] = rw_line_value(&e->lines[k], x, xd, &dz[k]);
+        const rw_line_arrays *A = &e->line_arrays;
+        for (k = 0; k < RW_NZ; k++) { /* rw_line_value's arithmetic on arrays, which the compiler vectorizes */
+            const double w = A->a0[k] * x[0] + A->a1[k] * x[1], wd = A->a0[k] * xd[0] + A->a1[k] * xd[1];
+            const double sign = (double)(w > 0.0) - (double)(w < 0.0);
+            dz[k] = (A->s[k] * sign + A->t[k]) * wd;
+            z[k] = A->c[k] + A->s[k] * fabs(w) + A->t[k] * w;
+        }
     } else {
         for (k = 0; k < RW_NZ; k++)
             if ((mask & e->line_mask) >> k & 1u) z[k] = rw_line_value(&e->lines[k], x, xd, xd ? &dz[k] : NULL);
@@ -324,23 +330,43 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
     return hi;
 }
 
-/* indicator k and its rate at s */
-static double indicator_and_rate_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s,
-                                    double *rate)
+/* Indicator k and its rate at s and, for a line of the rotations, its second rate (*curv; NaN for
+ * the others). A line's value comes from the same state and the same evaluation as
+ * region_indicators', so its sign at the root is the one every other test sees. */
+static double indicator_rates_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s,
+                                 double *rate, double *curv)
 {
     double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ];
-    rw_input in = span_input(sp, s);
+    rw_input in;
     span_eval(sp, s, NULL, x, xd);
+    if ((e->line_mask >> k) & 1u) {
+        const rw_indicator_line *L = &e->lines[k];
+        const double w = L->a[0] * x[0] + L->a[1] * x[1];
+        const double slope = L->s * ((w > 0.0) - (w < 0.0)) + L->t;
+        *curv = slope * (L->a[0] * xd[2] + L->a[1] * xd[3]);
+        return rw_line_value(L, x, xd, rate);
+    }
+    in = span_input(sp, s);
     region_indicators(e, m, sp, &in, x, xd, 1u << k, z, dz);
     *rate = dz[k];
+    *curv = NAN;
     return z[k];
 }
 
+/* The next iterate from s: Halley's step where the second rate is known (cubic convergence: from
+ * the Hermite guess one step reaches rounding), else Newton's; NaN if neither is defined. */
+static double root_step(double f, double df, double ddf)
+{
+    const double den = 2.0 * df * df - f * ddf;
+    if (ddf == ddf && den > 0.0) return -2.0 * f * df / den; /* ddf == ddf: not NaN */
+    return df != 0.0 ? -f / df : NAN;
+}
+
 /* The first s in (lo, hi] where indicator k leaves the state `was` (the state at lo), to a few ulps
- * of the absolute time, from the guess (NaN: none): Newton steps on the exact motion with the
- * indicator's rate, kept inside the bracket (else a regula falsi step, and a bisection when three
- * steps have not halved it). Near the root the last Newton step is taken a little past it, so that
- * the bracket closes. Returns hi, the first point known to be past the root. */
+ * of the absolute time, from the guess (NaN: none): Halley or Newton steps on the exact motion,
+ * kept inside the bracket (else a regula falsi step, and a bisection when three steps have not
+ * halved it). Near the root the last step is taken a little past it, so that the bracket closes.
+ * Returns hi, the first point known to be past the root. */
 static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, double lo,
                           double flo, double hi, double fhi, double guess)
 {
@@ -348,7 +374,7 @@ static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *s
     int it, past;
     for (it = 0; it < 200; it++) {
         const double tol = 4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300;
-        double fs, rate, step;
+        double fs, rate, curv, step;
         if (hi - lo <= tol) break;
         if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
             if (it > 0 && hi - lo > 0.5 * width_before) s = 0.5 * (lo + hi);
@@ -357,15 +383,17 @@ static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *s
         if (!(s > lo && s < hi)) s = fhi != flo ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
-        fs = indicator_and_rate_at(e, m, sp, k, s, &rate);
+        fs = indicator_rates_at(e, m, sp, k, s, &rate, &curv);
         past = (fs > 0.0) != was;
         if (past) hi = s, fhi = fs;
         else lo = s, flo = fs;
-        step = rate != 0.0 ? -fs / rate : NAN;
+        step = root_step(fs, rate, curv);
         if (past && fabs(step) < 0.5 * tol) break; /* s is past the root, and the root within tol of it */
         /* within rounding of the root the step's direction is noise: probe half the tolerance past
-         * it, so that the bracket closes */
+         * it, so that the bracket closes; else aim a quarter of it past the root, so that the next
+         * point, when the step has converged, is the one returned */
         if (fabs(step) < 0.5 * tol) step = 0.5 * tol;
+        else step += 0.25 * tol;
         s += step; /* NaN or outside the bracket: the fallback above */
     }
     return hi;
@@ -482,19 +510,34 @@ static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, i
     return 0;
 }
 
-/* Earliest s in (a->s, b->s] where an indicator changes its state e->b[k], including a dip
- * through zero and back inside the substep. Returns 1 and *s_event, or 0. */
+/* The indicators that the quick test does not clear over [a, b] (a bit each): those whose state at
+ * b differs from the tracked one, or that are not far from zero at both ends. No branch: most
+ * substeps end with none. */
+static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const double dza[RW_NZ],
+                            const double zb[RW_NZ], const double dzb[RW_NZ], double L)
+{
+    double clear[RW_NZ];
+    unsigned suspects = 0;
+    int k;
+    /* far_from_zero with both ends on the tracked side (z times its sign positive), as one pass of
+     * array arithmetic that the compiler vectorizes: clear >= 0 when quiet */
+    for (k = 0; k < RW_NZ; k++) {
+        const double ta = za[k] * e->b_sign[k], tb = zb[k] * e->b_sign[k];
+        const double nearest = ta < tb ? ta : tb;
+        const double need = (4.0 / 27.0 + 0.05) * fabs(L) * (fabs(dza[k]) + fabs(dzb[k])) + 0.05 * fabs(zb[k] - za[k]);
+        clear[k] = nearest > 0.0 ? nearest - need : -1.0;
+    }
+    for (k = 0; k < RW_NZ; k++) suspects |= (unsigned)(clear[k] < 0.0) << k;
+    return suspects;
+}
+
+/* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
+ * e->b[k], including a dip through zero and back inside the substep. Returns 1 and *s_event, or 0. */
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
-                       double *s_event, int *k_event)
+                       unsigned suspects, double *s_event, int *k_event)
 {
     int k, found = 0;
-    unsigned suspects = 0;
     double best = b->s;
-    /* first every indicator's quick test, without a branch: most substeps end here */
-    for (k = 0; k < RW_NZ; k++) {
-        const int quiet = ((b->z[k] > 0.0) == e->b[k]) & far_from_zero(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
-        suspects |= (unsigned)!quiet << k;
-    }
     for (k = 0; suspects >> k; k++) {
         const int was = e->b[k];
         double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
@@ -559,15 +602,16 @@ static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const do
 {
     int w;
     for (w = 0; w < 2; w++) {
-        double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
-        const double ra = s_of(e, w, va), rb = s_of(e, w, vb);
-        const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
+        const double c0 = e->s_coef[w][0], c1 = e->s_coef[w][1];
+        const double ra = c0 * xa[2] + c1 * xa[3], rb = c0 * xb[2] + c1 * xb[3];
+        const double vb = c0 * xb[0] + c1 * xb[1];
+        double *peak = w == 0 ? &e->peak_s1 : &e->peak_s2;
         double lo, hi;
-        track_peak(e, w, s_of(e, w, xb));
+        if (fabs(vb) > *peak) *peak = fabs(vb);
         if ((ra > 0.0) == (rb > 0.0) || !(sb > sa)) continue;
         /* the turning point matters only if it can pass the peak so far */
-        hermite_range_bound(s_of(e, w, xa), ra, s_of(e, w, xb), rb, sb - sa, &lo, &hi);
-        if (rw_max2(-lo, hi) >= peak) {
+        hermite_range_bound(c0 * xa[0] + c1 * xa[1], ra, vb, rb, sb - sa, &lo, &hi);
+        if (rw_max2(-lo, hi) >= *peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
             const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
             double x[RW_NX];
@@ -602,7 +646,10 @@ static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input 
     double z[RW_NZ];
     int k;
     rw_event_indicators(&e->P, &e->D, m, in, x, z);
-    for (k = 0; k < RW_NZ; k++) e->b[k] = z[k] > 0.0;
+    for (k = 0; k < RW_NZ; k++) {
+        e->b[k] = z[k] > 0.0;
+        e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
+    }
 }
 
 /* The model's event iteration at t (as the FMU's hosts run it), then its collapse test.
@@ -621,7 +668,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
         e->same_instant = 0;
     }
     e->t_last_event = t;
-    e->region_valid = e->carry_valid = e->slow_carry_valid = 0;
+    e->region_valid = e->carry_valid = e->slow_carry_valid = e->pending_valid = 0;
     do {
         /* the energy only for those who read it: the FMU's dissipated output and the impact log */
         const int energy_wanted = e->track_dissipated || e->impact_t;
@@ -655,12 +702,18 @@ static void selection_rate(const rw_engine *e, const rw_mode *m, const rw_input 
     dq_sel[1] = x[3] + RW_SELECT_DT * dx[3];
 }
 
-/* Stumpff coefficients of a full substep h, cached per region */
-static const double (*substep_coefficients(rw_cache_entry *c, double h))[4]
+/* Stumpff coefficients of a full substep h, cached per region. A length within rounding of the
+ * absolute time t of a cached one takes its coefficients: the record's sample spacing, t[i+1] - t[i],
+ * differs from one segment to the next by the rounding of t, and so does the motion's time. */
+static const double (*substep_coefficients(rw_cache_entry *c, double h, double t))[4]
 {
+    const double same = 4.0 * DBL_EPSILON * (fabs(t) + h);
     int j, i;
     for (j = 0; j < 2; j++)
-        if (c->h_valid[j] && c->h[j] == h) return (const double(*)[4])c->C[j];
+        if (c->h_valid[j] && fabs(c->h[j] - h) <= same) {
+            c->h_next = j ^ 1; /* least recently used: the sample spacing stays after an event's odd remainder */
+            return (const double(*)[4])c->C[j];
+        }
     j = c->h_next;
     c->h_next ^= 1;
     c->h[j] = h;
@@ -747,9 +800,17 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
         /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
         const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
-        eval_point(e, m, sp, piece, same ? C : NULL, &pb);
+        unsigned suspects;
+        if (j == 0 && n == 1 && e->pending_valid && e->pending_t0 == sp->t0 && e->pending.s == piece) {
+            pb = e->pending; /* rw_engine_quiet_segment evaluated it: the same span, coefficients and start */
+            suspects = e->pending_suspects;
+        } else {
+            eval_point(e, m, sp, piece, same ? C : NULL, &pb);
+            suspects = suspects_of(e, pa.z, pa.dz, pb.z, pb.dz, pb.s - pa.s);
+        }
+        e->pending_valid = 0;
         e->steps++;
-        if (first_event(e, m, sp, &pa, &pb, &s_ev, &k_ev)) {
+        if (suspects && first_event(e, m, sp, &pa, &pb, suspects, &s_ev, &k_ev)) {
             rw_input ie = span_input(sp, s_ev);
             int rc;
             span_eval(sp, s_ev, NULL, x, NULL);
@@ -953,7 +1014,10 @@ static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_sp
     rw_point pt;
     int k;
     eval_point(e, m, sp, 0.0, NULL, &pt);
-    for (k = 0; k < RW_NZ; k++) e->b[k] = pt.z[k] > 0.0;
+    for (k = 0; k < RW_NZ; k++) {
+        e->b[k] = pt.z[k] > 0.0;
+        e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
+    }
     e->b_stale = 0;
     carry_point(e, &pt, sp->t0);
 }
@@ -964,8 +1028,15 @@ static void region_lines(rw_engine *e, const rw_mode *m)
     int k;
     rw_indicator_lines(&e->P, &e->D, m, e->lines);
     e->line_mask = 0;
-    for (k = 0; k < RW_NZ; k++)
-        if (!e->lines[k].none) e->line_mask |= 1u << k;
+    for (k = 0; k < RW_NZ; k++) {
+        const rw_indicator_line *L = &e->lines[k];
+        if (!L->none) e->line_mask |= 1u << k;
+        e->line_arrays.a0[k] = L->a[0];
+        e->line_arrays.a1[k] = L->a[1];
+        e->line_arrays.s[k] = L->s;
+        e->line_arrays.t[k] = L->t;
+        e->line_arrays.c[k] = L->c;
+    }
 }
 
 /* The region of the motion at (x, t): kept from one input segment to the next, since without an
@@ -1014,13 +1085,14 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
         if (e->b_stale) refresh_indicator_states(e, m, &sp);
-        span_rates(e, &sp, rocking_rate(e), &r);
+        span_rates(e, &sp, e->floor_rate, &r);
         span_len = t_end - *t;
         n = substeps_for(r.slow_rate, &span_len);
         h = span_len / n;
         span_end = n * h < t_end - *t ? *t + span_len : t_end;
+        if (r.any_fast || n != 1) e->pending_valid = 0;
         if (!r.any_fast) {
-            rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h), x, t);
+            rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h, span_end), x, t);
             if (rc > 0) return rc;
             continue;
         }
@@ -1028,12 +1100,51 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
             const double t_to = j == n - 1 ? span_end : sp.t0 + h;
             /* the last piece differs from h by rounding at most: the same coefficients */
             const int same = fabs((t_to - sp.t0) - h) <= 4.0 * DBL_EPSILON * (fabs(t_to) + h);
-            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, same ? substep_coefficients(R, h) : NULL, &r, x, t, 0);
+            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, same ? substep_coefficients(R, h, t_to) : NULL, &r, x, t, 0);
             if (rc > 0) return rc;
             if (rc == 0 && j < n - 1) span_start(&sp, R, g0, *t, x, in, t_in);
         }
     }
     return 0;
+}
+
+/* ---- a quiet segment: the common case without the general machinery --------------------------
+ * Most input segments of a run hold no event: the region, its lines and the end point of the
+ * segment before (rw_engine.carry) are known, one substep covers the segment (every mode turns by
+ * at most RW_PHASE_PER_SUBSTEP), and the quick test clears every indicator. Such a segment is taken
+ * here with the same evaluations as resolve() (so the same numbers), without its set-up; any other
+ * segment is left untouched to rw_engine_advance. */
+int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], double *t, double t_end,
+                            const rw_linear_input *in, double t_in)
+{
+    const double len = t_end - *t;
+    rw_cache_entry *R;
+    rw_span sp;
+    rw_point b;
+    unsigned suspects;
+    if (!e->region_valid || !e->carry_valid || e->b_stale || e->carry_t != *t) return 0;
+    if (e->rigid && (m->closed_b || m->closed_m)) return 0; /* closed hinges' indicators: start_point */
+    if (e->i_out < e->n_out && e->t_out[e->i_out] <= t_end) return 0;
+    R = &e->cache[e->region];
+    if (rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len > RW_PHASE_PER_SUBSTEP) return 0;
+    if (memcmp(e->carry_x, x, sizeof e->carry_x) != 0) return 0;
+    sp.aq = e->region_aq;
+    span_start(&sp, R, e->region_g0, *t, x, in, t_in);
+    eval_point(e, m, &sp, len, substep_coefficients(R, len, t_end), &b);
+    suspects = suspects_of(e, e->carry_z, e->carry_dz, b.z, b.dz, len);
+    if (suspects) { /* its end point and suspects, for resolve() (rw_engine.pending) */
+        e->pending = b;
+        e->pending_t0 = *t;
+        e->pending_suspects = suspects;
+        e->pending_valid = 1;
+        return 0;
+    }
+    e->steps++;
+    peaks_on(e, m, &sp, e->carry_x, 0.0, b.x, len);
+    memcpy(x, b.x, sizeof b.x);
+    *t = t_end;
+    carry_point(e, &b, t_end);
+    return 1;
 }
 
 /* ---- the engine object ---------------------------------------------------------------------- */
@@ -1055,6 +1166,7 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
     e->rigid = rw_is_rigid(p);
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
+    e->floor_rate = rocking_rate(e);
     {
         const double unit[2][RW_NX] = {{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}};
         int j;
@@ -1113,7 +1225,7 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
      * by another process: its one reference into this binary, the law, is taken again */
     e->law = rw_hinge_law_of(e->P.hingeLaw);
     /* the caller owns x and m between steps */
-    e->region_valid = e->region_keep = e->carry_valid = e->slow_carry_valid = 0;
+    e->region_valid = e->region_keep = e->carry_valid = e->slow_carry_valid = e->pending_valid = 0;
     now.ag = in->ag;
     now.u_top = in->u_top;
     *t_reached = t;

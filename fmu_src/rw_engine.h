@@ -127,6 +127,12 @@ typedef struct {
     int h_valid[2], h_next;
 } rw_cache_entry;
 
+/* the indicator lines of the current modes as arrays (rw_indicator_line's fields), for the
+ * vectorized evaluation of all of them at once */
+typedef struct {
+    double a0[RW_NZ], a1[RW_NZ], s[RW_NZ], t[RW_NZ], c[RW_NZ];
+} rw_line_arrays;
+
 typedef struct rw_engine { /* by value in the FMU's data; use the functions, not the fields */
     rw_params P;
     rw_derived D;
@@ -142,6 +148,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     rw_affine_Q region_aq;
     rw_indicator_line lines[RW_NZ]; /* the indicators that are lines under the current modes */
     unsigned line_mask;
+    rw_line_arrays line_arrays;
     rw_collapse_form collapse_form; /* the collapse indicator of the region (if region_aq.valid) */
     /* the end point of the last resolved span (time, state, indicators and their rates): the next
      * input segment starts there, and without an event in between only the closed hinges'
@@ -151,16 +158,24 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     /* the same for the slow part of a span with fast modes (rw_engine.c "fast modes"): the slow
      * point at the end of the last quiet substep, which ended at slow_carry_t in the state
      * slow_carry_x0 */
+    /* the end point of a segment that rw_engine_quiet_segment evaluated and found not quiet: the
+     * first substep of resolve() over the same segment takes it (pending_t0: its start time) */
+    int pending_valid;
+    unsigned pending_suspects;
+    double pending_t0;
+    rw_engine_point pending;
     int slow_carry_valid;
     double slow_carry_t, slow_carry_x0[RW_NX];
     rw_engine_point slow_carry;
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
+    double b_sign[RW_NZ];       /* the same as +-1 */
     double peak_s1, peak_s2;
     long events, steps, impacts;
     double dissipated;          /* energy taken out by the event maps (impacts, closings), if track_dissipated */
     int track_dissipated;       /* set by the caller that reads `dissipated` (the FMU) */
     double s_coef[2][2];        /* s1, s2 = s_coef[.] . (q1, q2) */
+    double floor_rate;          /* rw_engine.c rocking_rate: the slowest rate a substep resolves */
     int collapsed, reason;
     double t_collapse;
     double t_last_event;

@@ -173,7 +173,8 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
         const double t_in = seg >= 0 ? rec->t[seg] : t;
         double t_next = (seg + 1 < (ptrdiff_t)rec->n) ? rec->t[seg + 1] : o->t_end;
         if (t_next > o->t_end) t_next = o->t_end;
-        if (t_next > t) rc = rw_engine_advance(e, &m, x, &t, t_next, &in, t_in);
+        if (t_next > t && !rw_engine_quiet_segment(e, &m, x, &t, t_next, &in, t_in))
+            rc = rw_engine_advance(e, &m, x, &t, t_next, &in, t_in);
         seg++;
     }
     rw_engine_fill_outputs(e);
