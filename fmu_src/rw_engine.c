@@ -334,9 +334,9 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
  * the others). A line's value comes from the same state and the same evaluation as
  * region_indicators', so its sign at the root is the one every other test sees. */
 static double indicator_rates_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s,
-                                 double *rate, double *curv)
+                                 double x[RW_NX], double *rate, double *curv)
 {
-    double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ];
+    double xd[RW_NX], z[RW_NZ], dz[RW_NZ];
     rw_input in;
     span_eval(sp, s, NULL, x, xd);
     if ((e->line_mask >> k) & 1u) {
@@ -366,15 +366,17 @@ static double root_step(double f, double df, double ddf)
  * of the absolute time, from the guess (NaN: none): Halley or Newton steps on the exact motion,
  * kept inside the bracket (else a regula falsi step, and a bisection when three steps have not
  * halved it). Near the root the last step is taken a little past it, so that the bracket closes.
- * Returns hi, the first point known to be past the root. */
+ * Returns hi, the first point known to be past the root, with the state there in x_hi if it was
+ * evaluated here (*x_valid). */
 static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, double lo,
-                          double flo, double hi, double fhi, double guess)
+                          double flo, double hi, double fhi, double guess, double x_hi[RW_NX], int *x_valid)
 {
     double width_before = hi - lo, s = guess;
     int it, past;
+    *x_valid = 0;
     for (it = 0; it < 200; it++) {
         const double tol = 4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300;
-        double fs, rate, curv, step;
+        double fs, rate, curv, step, x[RW_NX];
         if (hi - lo <= tol) break;
         if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
             if (it > 0 && hi - lo > 0.5 * width_before) s = 0.5 * (lo + hi);
@@ -383,10 +385,15 @@ static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *s
         if (!(s > lo && s < hi)) s = fhi != flo ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
-        fs = indicator_rates_at(e, m, sp, k, s, &rate, &curv);
+        fs = indicator_rates_at(e, m, sp, k, s, x, &rate, &curv);
         past = (fs > 0.0) != was;
-        if (past) hi = s, fhi = fs;
-        else lo = s, flo = fs;
+        if (past) {
+            hi = s, fhi = fs;
+            memcpy(x_hi, x, sizeof x);
+            *x_valid = 1;
+        } else {
+            lo = s, flo = fs;
+        }
         step = root_step(fs, rate, curv);
         if (past && fabs(step) < 0.5 * tol) break; /* s is past the root, and the root within tol of it */
         /* within rounding of the root the step's direction is noise: probe half the tolerance past
@@ -448,26 +455,23 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
 
 /* The root in (0, 1) of the cubic Hermite interpolant of (z, dz) on [0, L] whose end values have
  * opposite signs: the first guess of the root refinement (within a substep every significant mode
- * turns by at most 1 rad, so it is within a fraction of a percent of the substep). A few
- * safeguarded Newton steps on the cubic; NaN if they do not settle. */
+ * turns by at most 1 rad, so the interpolant is within a fraction of a percent of the motion). Two
+ * Newton steps on the cubic from the chord's root, kept inside (0, 1): the refinement's Halley step
+ * converges from there, so more digits here would be spent twice. */
 static double hermite_root(double za, double da, double zb, double db, double L)
 {
     const double ma = L * da, mb = L * db;
-    double lo = 0.0, hi = 1.0, u = za / (za - zb);
+    double u = za / (za - zb);
     int it;
-    for (it = 0; it < 8; it++) {
+    for (it = 0; it < 2; it++) {
         const double u2 = u * u, u3 = u2 * u;
         const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
         const double dz = (6 * u2 - 6 * u) * za + (3 * u2 - 4 * u + 1) * ma + (-6 * u2 + 6 * u) * zb + (3 * u2 - 2 * u) * mb;
-        double next;
-        if ((z > 0.0) == (za > 0.0)) lo = u;
-        else hi = u;
-        next = dz != 0.0 ? u - z / dz : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        if (fabs(next - u) < 1e-12) return next;
+        const double next = u - z / dz;
+        if (!(next > 0.0 && next < 1.0)) break; /* also NaN: the chord's root stands */
         u = next;
     }
-    return NAN;
+    return u;
 }
 
 #define RW_DIP_DEPTH 3 /* a suspicious substep is split 4 ways, at most this many times */
@@ -525,7 +529,7 @@ static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const do
         const double ta = za[k] * e->b_sign[k], tb = zb[k] * e->b_sign[k];
         const double nearest = ta < tb ? ta : tb;
         const double need = (4.0 / 27.0 + 0.05) * fabs(L) * (fabs(dza[k]) + fabs(dzb[k])) + 0.05 * fabs(zb[k] - za[k]);
-        clear[k] = nearest > 0.0 ? nearest - need : -1.0;
+        clear[k] = nearest - rw_max2(need, DBL_MIN); /* >= 0: nearest >= need and > 0 */
     }
     for (k = 0; k < RW_NZ; k++) suspects |= (unsigned)(clear[k] < 0.0) << k;
     return suspects;
@@ -534,9 +538,9 @@ static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const do
 /* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
  * e->b[k], including a dip through zero and back inside the substep. Returns 1 and *s_event, or 0. */
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
-                       unsigned suspects, double *s_event, int *k_event)
+                       unsigned suspects, double *s_event, int *k_event, double x_event[RW_NX])
 {
-    int k, found = 0;
+    int k, found = 0, x_known = 0;
     double best = b->s;
     for (k = 0; suspects >> k; k++) {
         const int was = e->b[k];
@@ -550,14 +554,21 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
         }
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
-        s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess);
-        if (!found || s < best) {
-            best = s;
-            *k_event = k;
+        {
+            double x_root[RW_NX];
+            int x_valid;
+            s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess, x_root, &x_valid);
+            if (!found || s < best) {
+                best = s;
+                *k_event = k;
+                x_known = x_valid;
+                if (x_valid) memcpy(x_event, x_root, sizeof x_root);
+            }
         }
         found = 1;
     }
     *s_event = best;
+    if (found && !x_known) span_eval(sp, best, NULL, x_event, NULL);
     return found;
 }
 
@@ -745,28 +756,24 @@ static int substeps_for(double rate, double *len)
     return n < 1 ? 1 : n;
 }
 
-/* The start point of a span: the end point of the span before, where that holds (rw_engine.carry) */
-static void start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *pa)
+/* The start point of a span: the end point of the span before, where that holds (rw_engine.carry),
+ * else evaluated into *buf */
+static const rw_point *start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
 {
     const int closed = e->rigid && (m->closed_b || m->closed_m);
     if (e->carry_valid && e->region_valid && !closed && e->carry_t == sp->t0 &&
-        memcmp(e->carry_x, sp->x0, sizeof e->carry_x) == 0) {
-        pa->s = 0.0;
-        memcpy(pa->x, e->carry_x, sizeof pa->x);
-        memcpy(pa->z, e->carry_z, sizeof pa->z);
-        memcpy(pa->dz, e->carry_dz, sizeof pa->dz);
-        return;
-    }
-    eval_point(e, m, sp, 0.0, NULL, pa);
+        memcmp(e->carry.x, sp->x0, sizeof e->carry.x) == 0)
+        return &e->carry;
+    eval_point(e, m, sp, 0.0, NULL, buf);
+    return buf;
 }
 
 static void carry_point(rw_engine *e, const rw_point *pb, double t)
 {
     e->carry_valid = 1;
     e->carry_t = t;
-    memcpy(e->carry_x, pb->x, sizeof e->carry_x);
-    memcpy(e->carry_z, pb->z, sizeof e->carry_z);
-    memcpy(e->carry_dz, pb->dz, sizeof e->carry_dz);
+    e->carry = *pb;
+    e->carry.s = 0.0;
 }
 
 /* After an event of the base or mid-height hinge indicator under a law whose hinge moments depend
@@ -791,47 +798,47 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
                    double *t)
 {
     const double h = len / n, t_end = sp->t0 + len;
-    rw_point pa, pb;
+    rw_point buf[2];
+    const rw_point *pa = start_point(e, m, sp, &buf[0]);
     int j;
-    start_point(e, m, sp, &pa);
     for (j = 0; j < n; j++) {
         double s_ev;
         int k_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
         /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
         const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
+        rw_point *pb = pa == &buf[0] ? &buf[1] : &buf[0];
         unsigned suspects;
         if (j == 0 && n == 1 && e->pending_valid && e->pending_t0 == sp->t0 && e->pending.s == piece) {
-            pb = e->pending; /* rw_engine_quiet_segment evaluated it: the same span, coefficients and start */
+            pb = &e->pending; /* rw_engine_quiet_segment evaluated it: the same span, coefficients and start */
             suspects = e->pending_suspects;
         } else {
-            eval_point(e, m, sp, piece, same ? C : NULL, &pb);
-            suspects = suspects_of(e, pa.z, pa.dz, pb.z, pb.dz, pb.s - pa.s);
+            eval_point(e, m, sp, piece, same ? C : NULL, pb);
+            suspects = suspects_of(e, pa->z, pa->dz, pb->z, pb->dz, pb->s - pa->s);
         }
         e->pending_valid = 0;
         e->steps++;
-        if (suspects && first_event(e, m, sp, &pa, &pb, suspects, &s_ev, &k_ev)) {
+        if (suspects && first_event(e, m, sp, pa, pb, suspects, &s_ev, &k_ev, x)) {
             rw_input ie = span_input(sp, s_ev);
             int rc;
-            span_eval(sp, s_ev, NULL, x, NULL);
-            peaks_on(e, m, sp, pa.x, pa.s, x, s_ev);
+            peaks_on(e, m, sp, pa->x, pa->s, x, s_ev);
             outputs_on(e, sp, s_ev);
             *t = sp->t0 + s_ev;
             rc = apply_event(e, m, x, *t, &ie);
             if (rc == 0 && hinge_event_keeps_region(e, sp, k_ev, x)) e->region_keep = 1;
             return rc ? rc : -1;
         }
-        peaks_on(e, m, sp, pa.x, pa.s, pb.x, pb.s);
-        outputs_on(e, sp, pb.s);
-        memcpy(x, pb.x, sizeof pb.x);
+        peaks_on(e, m, sp, pa->x, pa->s, pb->x, pb->s);
+        outputs_on(e, sp, pb->s);
+        memcpy(x, pb->x, sizeof pb->x);
         if (j == n - 1) {
             *t = t_end;
-            carry_point(e, &pb, t_end);
+            carry_point(e, pb, t_end);
         } else { /* the next piece starts here */
-            span_start(sp, R, g0, sp->t0 + h, pb.x, in, t_in);
+            span_start(sp, R, g0, sp->t0 + h, pb->x, in, t_in);
             *t = sp->t0;
+            pb->s = 0.0;
             pa = pb;
-            pa.s = 0.0;
         }
     }
     return 0;
@@ -1127,11 +1134,11 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], dou
     if (e->i_out < e->n_out && e->t_out[e->i_out] <= t_end) return 0;
     R = &e->cache[e->region];
     if (rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len > RW_PHASE_PER_SUBSTEP) return 0;
-    if (memcmp(e->carry_x, x, sizeof e->carry_x) != 0) return 0;
+    if (memcmp(e->carry.x, x, sizeof e->carry.x) != 0) return 0;
     sp.aq = e->region_aq;
     span_start(&sp, R, e->region_g0, *t, x, in, t_in);
     eval_point(e, m, &sp, len, substep_coefficients(R, len, t_end), &b);
-    suspects = suspects_of(e, e->carry_z, e->carry_dz, b.z, b.dz, len);
+    suspects = suspects_of(e, e->carry.z, e->carry.dz, b.z, b.dz, len);
     if (suspects) { /* its end point and suspects, for resolve() (rw_engine.pending) */
         e->pending = b;
         e->pending_t0 = *t;
@@ -1140,7 +1147,7 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], dou
         return 0;
     }
     e->steps++;
-    peaks_on(e, m, &sp, e->carry_x, 0.0, b.x, len);
+    peaks_on(e, m, &sp, e->carry.x, 0.0, b.x, len);
     memcpy(x, b.x, sizeof b.x);
     *t = t_end;
     carry_point(e, &b, t_end);

@@ -154,7 +154,8 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
      * input segment starts there, and without an event in between only the closed hinges'
      * indicators, which depend on the input's rate, differ */
     int carry_valid;
-    double carry_t, carry_x[RW_NX], carry_z[RW_NZ], carry_dz[RW_NZ];
+    double carry_t;
+    rw_engine_point carry;
     /* the same for the slow part of a span with fast modes (rw_engine.c "fast modes"): the slow
      * point at the end of the last quiet substep, which ended at slow_carry_t in the state
      * slow_carry_x0 */
