@@ -41,18 +41,23 @@ static void stumpff(double z, double c[4])
         return;
     }
     if (fabs(z) < 1.0) {
-        /* c_k = sum_j (-z)^j/(2j+k)!, Horner in -z: 10 terms leave < 1/(2*10+k)! < 4e-19; only c2
-         * and c3 are summed, c0 = 1 - z c2 and c1 = 1 - z c3 lose nothing for |z| < 1 (c0, c1 > 0.5) */
-        double s2 = INV_FACT[2 * 9 + 2], s3 = INV_FACT[2 * 9 + 3];
-        int j;
-        for (j = 8; j >= 0; j--) {
-            s2 = INV_FACT[2 * j + 2] - z * s2;
-            s3 = INV_FACT[2 * j + 3] - z * s3;
+        /* c_k = sum_j (-z)^j/(2j+k)! over j = 0..9 leaves < 1/(2*10+k)! < 4e-19; only c2 and c3 are
+         * summed, c0 = 1 - z c2 and c1 = 1 - z c3 lose nothing for |z| < 1 (c0, c1 > 0.5). Each sum
+         * is split into its even and odd terms, E(y) - z O(y) with y = z^2, so that four short
+         * Horner chains run side by side instead of two long ones (the sum is latency-bound). */
+        const double y = z * z;
+        double e2 = INV_FACT[4 * 4 + 2], o2 = INV_FACT[4 * 4 + 4], e3 = INV_FACT[4 * 4 + 3], o3 = INV_FACT[4 * 4 + 5];
+        int i;
+        for (i = 3; i >= 0; i--) { /* the terms j = 2i (even: 1/(4i+k)!) and j = 2i + 1 (odd: 1/(4i+2+k)!) */
+            e2 = INV_FACT[4 * i + 2] + y * e2;
+            o2 = INV_FACT[4 * i + 4] + y * o2;
+            e3 = INV_FACT[4 * i + 3] + y * e3;
+            o3 = INV_FACT[4 * i + 5] + y * o3;
         }
-        c[0] = 1.0 - z * s2;
-        c[1] = 1.0 - z * s3;
-        c[2] = s2;
-        c[3] = s3;
+        c[2] = e2 - z * o2;
+        c[3] = e3 - z * o3;
+        c[0] = 1.0 - z * c[2];
+        c[1] = 1.0 - z * c[3];
         return;
     }
     if (z > 0.0) {
@@ -239,7 +244,7 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
             if ((mask & e->line_mask) >> k & 1u) z[k] = rw_line_value(&e->lines[k], x, xd, xd ? &dz[k] : NULL);
     }
     if ((rest & topple) && e->P.support == RW_FLEXIBLE_TOP) {
-        z[RW_Z_TOPPLE] = rw_topple_value(e->D.q_topple, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
+        z[RW_Z_TOPPLE] = rw_topple_value(&e->D, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
         rest &= ~topple;
     }
     if ((rest & collapse) && sp->aq.valid) {

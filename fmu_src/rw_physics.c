@@ -79,6 +79,7 @@ void rw_derive(const rw_params *p, rw_derived *d)
     d->p2 = 3.0 * g / (4.0 * d->R);
     d->zscale = p->W * h;
     d->q_topple = 2.0 * b / h;
+    d->inv_q_topple = 1.0 / d->q_topple;
     d->tiny = 1e-10 * b / h;
 }
 
@@ -352,6 +353,7 @@ void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[
         for (j = 0; j < 2; j++) f->A[i][j] = d->K[i][j] - J[i][j];
     }
     f->zscale = d->zscale;
+    f->inv_zscale = 1.0 / d->zscale;
 }
 
 /* G(q)/|q|^2/zscale of the 2DOF, clipped, from the hinge moments Q at x (NULL: the law's), and its
@@ -411,7 +413,7 @@ static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode
                 z[k] = rw_line_value(&L[k], x, r ? r->xd : NULL, r ? &r->dz[k] : NULL);
         if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) closed_hinge_indicators(p, d, m, in, x, mask, z, r);
     }
-    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = rw_topple_value(d->q_topple, x, r ? r->xd : NULL, r ? &r->dz[RW_Z_TOPPLE] : NULL);
+    if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = rw_topple_value(d, x, r ? r->xd : NULL, r ? &r->dz[RW_Z_TOPPLE] : NULL);
     if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, x, Q, r);
 }
 
@@ -441,7 +443,7 @@ int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m
     if (past) return RW_PAST_INSTABILITY;
     /* a guard on states the linearised model cannot describe (an importer's unstable integrator
      * may reach them): no body turns past the point where its weight passes over its pivot */
-    return rw_topple_value(d->q_topple, x, NULL, NULL) <= 0.0 ? RW_PAST_TOPPLING_LIMIT : RW_STANDING;
+    return rw_topple_value(d, x, NULL, NULL) <= 0.0 ? RW_PAST_TOPPLING_LIMIT : RW_STANDING;
 }
 
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,

@@ -49,6 +49,7 @@ typedef struct {
     double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
     double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
     double q_topple;           /* 2b/h: rotation at which a body's centre of gravity passes over its pivot */
+    double inv_q_topple;       /* its inverse */
     double tiny;               /* rotation below which the direction of motion decides a side */
 } rw_derived;
 
@@ -78,7 +79,7 @@ static inline double rw_line_value(const rw_indicator_line *L, const double *x, 
  * dG = q.(A + A^T) dq - c.dq. The FMU's own value comes from rw_collapse_G_of with the law's Q. */
 #define RW_COLLAPSE_ZMAX 1e3
 typedef struct {
-    double A[2][2], c[2], zscale;
+    double A[2][2], c[2], zscale, inv_zscale;
 } rw_collapse_form;
 
 static inline double rw_collapse_form_value(const rw_collapse_form *f, const double *x, const double *xd, double *dz)
@@ -88,23 +89,25 @@ static inline double rw_collapse_form_value(const rw_collapse_form *f, const dou
     double v;
     if (dz) *dz = 0.0;
     if (!(n2 > 0.0)) return RW_COLLAPSE_ZMAX;
-    v = (q1 * Aq1 + q2 * Aq2 - (f->c[0] * q1 + f->c[1] * q2)) / n2 / f->zscale;
+    const double inv_n2 = 1.0 / n2; /* one division: the engine evaluates this at every substep */
+    v = (q1 * Aq1 + q2 * Aq2 - (f->c[0] * q1 + f->c[1] * q2)) * (inv_n2 * f->inv_zscale);
     if (v > RW_COLLAPSE_ZMAX) return RW_COLLAPSE_ZMAX;
     if (dz) {
         const double dq1 = xd[0], dq2 = xd[1];
         const double ATq1 = f->A[0][0] * q1 + f->A[1][0] * q2, ATq2 = f->A[0][1] * q1 + f->A[1][1] * q2;
         const double dG = (Aq1 + ATq1 - f->c[0]) * dq1 + (Aq2 + ATq2 - f->c[1]) * dq2;
-        *dz = (dG / f->zscale - 2.0 * v * (q1 * dq1 + q2 * dq2)) / n2;
+        *dz = (dG * f->inv_zscale - 2.0 * v * (q1 * dq1 + q2 * dq2)) * inv_n2;
     }
     return v;
 }
 
-/* The 2DOF toppling indicator 1 - max(|q1|, |q2|)/q_topple and its rate (xd, dz may be NULL) */
-static inline double rw_topple_value(double q_topple, const double *x, const double *xd, double *dz)
+/* The 2DOF toppling indicator 1 - max(|q1|, |q2|)/q_topple and its rate (xd, dz may be NULL), with
+ * d->inv_q_topple = 1/q_topple: no division, as the engine evaluates it at every substep */
+static inline double rw_topple_value(const rw_derived *d, const double *x, const double *xd, double *dz)
 {
     const int i = fabs(x[0]) >= fabs(x[1]) ? 0 : 1;
-    if (dz) *dz = -((x[i] > 0.0) - (x[i] < 0.0)) * xd[i] / q_topple;
-    return 1.0 - fabs(x[i]) / q_topple;
+    if (dz) *dz = -((x[i] > 0.0) - (x[i] < 0.0)) * xd[i] * d->inv_q_topple;
+    return 1.0 - fabs(x[i]) * d->inv_q_topple;
 }
 
 /* A 2DOF hinge law: everything that differs between laws, in one place (rw_hinge_laws.c).
