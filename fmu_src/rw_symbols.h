@@ -25,6 +25,7 @@
 #define rw_engine_modal_force FMU_SYMBOL(rw_engine_modal_force)
 #define rw_engine_begin FMU_SYMBOL(rw_engine_begin)
 #define rw_engine_advance FMU_SYMBOL(rw_engine_advance)
+#define rw_engine_quiet_segment FMU_SYMBOL(rw_engine_quiet_segment)
 #define rw_engine_fill_outputs FMU_SYMBOL(rw_engine_fill_outputs)
 #define rw_engine_free FMU_SYMBOL(rw_engine_free)
 #define rw_engine_init FMU_SYMBOL(rw_engine_init)
