@@ -440,9 +440,9 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
-            const double r = sqrt(disc);
-            roots[n++] = (-B + r) / (2.0 * A);
-            roots[n++] = (-B - r) / (2.0 * A);
+            const double r = sqrt(disc), inv = 0.5 / A;
+            roots[n++] = (-B + r) * inv;
+            roots[n++] = (-B - r) * inv;
         }
     } else if (fabs(B) > 1e-300) {
         roots[n++] = -C / B;
@@ -873,8 +873,9 @@ static void hermite_range(double za, double da, double zb, double db, double L, 
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
-            roots[n++] = (-B + sqrt(disc)) / (2.0 * A);
-            roots[n++] = (-B - sqrt(disc)) / (2.0 * A);
+            const double r = sqrt(disc), inv = 0.5 / A;
+            roots[n++] = (-B + r) * inv;
+            roots[n++] = (-B - r) * inv;
         }
     } else if (fabs(B) > 1e-300) {
         roots[n++] = -C / B;
@@ -1097,11 +1098,19 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
         if (e->b_stale) refresh_indicator_states(e, m, &sp);
-        span_rates(e, &sp, e->floor_rate, &r);
         span_len = t_end - *t;
-        n = substeps_for(r.slow_rate, &span_len);
-        h = span_len / n;
-        span_end = n * h < t_end - *t ? *t + span_len : t_end;
+        if (rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * span_len <= RW_PHASE_PER_SUBSTEP) {
+            /* one substep, whatever modes count: every mode turns by at most RW_PHASE_PER_SUBSTEP */
+            r.any_fast = 0;
+            n = 1;
+            h = span_len;
+            span_end = t_end;
+        } else {
+            span_rates(e, &sp, e->floor_rate, &r);
+            n = substeps_for(r.slow_rate, &span_len);
+            h = span_len / n;
+            span_end = n * h < t_end - *t ? *t + span_len : t_end;
+        }
         if (r.any_fast || n != 1) e->pending_valid = 0;
         if (!r.any_fast) {
             rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h, span_end), x, t);

@@ -125,11 +125,9 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw
  * crossing sees |q1| at the breakpoint to rounding: a relative margin of 1e-6 accepts it. */
 static int base_past_elastic(const rw_params *p, const rw_derived *d, const double x[RW_NX])
 {
-    rw_indicator_line lines[RW_NBREAK];
     const double margin = 1e-6 * 2.0 * d->D1 / p->h;
     if (p->support == RW_SIMPLY_SUPPORTED) return fabs(x[0]) - 2.0 * d->D1 / p->h >= -margin;
-    rw_hinge_law_of(p->hingeLaw)->breakpoints(d, lines);
-    return rw_line_value(&lines[0], x, NULL, NULL) >= -margin;
+    return rw_line_value(&d->breaks[0], x, NULL, NULL) >= -margin;
 }
 
 /* Counting of base impacts: with rigid hinges every base crossing is one (the wall only moves

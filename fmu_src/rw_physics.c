@@ -39,6 +39,11 @@ int rw_params_validate(const rw_params *p, char *msg, size_t n)
     return 0;
 }
 
+static const rw_hinge_law *law(const rw_params *p)
+{
+    return rw_hinge_law_of(p->hingeLaw);
+}
+
 void rw_derive(const rw_params *p, rw_derived *d)
 {
     const double h = p->h, b = p->b, g = p->g, Kd = p->Kd;
@@ -81,11 +86,7 @@ void rw_derive(const rw_params *p, rw_derived *d)
     d->q_topple = 2.0 * b / h;
     d->inv_q_topple = 1.0 / d->q_topple;
     d->tiny = 1e-10 * b / h;
-}
-
-static const rw_hinge_law *law(const rw_params *p)
-{
-    return rw_hinge_law_of(p->hingeLaw);
+    law(p)->breakpoints(d, d->breaks);
 }
 
 int rw_is_rigid(const rw_params *p)
@@ -317,7 +318,7 @@ void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *
     if (p->support == RW_FLEXIBLE_TOP) {
         const rw_indicator_line mid = {{-m->side_m, m->side_m}, 0.0, 1.0, fmax(eps_q, m->zoff_m), 0};
         L[RW_Z_MID] = rigid && m->closed_m ? none : mid;
-        law(p)->breakpoints(d, L + RW_Z_BREAK); /* the law's kinks of Q(q) */
+        memcpy(L + RW_Z_BREAK, d->breaks, sizeof d->breaks); /* the law's kinks of Q(q) */
         L[RW_Z_TOPPLE] = none;
     } else if (p->support == RW_SIMPLY_SUPPORTED && !rigid) {
         const rw_indicator_line d1 = {{1.0, 0.0}, 1.0, 0.0, -2.0 * d->D1 / p->h, 0};

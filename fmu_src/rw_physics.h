@@ -36,23 +36,6 @@ enum {
 /* why a wall is taken as collapsed (rw_collapse_reason) */
 enum { RW_STANDING = 0, RW_PAST_INSTABILITY = 1, RW_PAST_TOPPLING_LIMIT = 2 };
 
-typedef struct {
-    double h;                  /* wall height (for the laws written in mid-height displacements) */
-    double W1, Wd;             /* W1 = W2 = W/2, Wd = psi*W1 */
-    double Du, Fr, F0, Rel;    /* Delta_u, F_r, F0, R_el (Table 5.1) */
-    double D1, D2, Fi;         /* Delta_1, Delta_2 (Eq. 5.1, 5.2), plateau F_i */
-    double theta_y;            /* 2*hingeSat*Delta_1/h */
-    double cap_b, cap_m;       /* hinge capacities */
-    double M[2][2], K[2][2];   /* Eq. 3.2, 3.3 */
-    double pa[2];              /* p = pa*ag (Eq. 3.4, sign per convention) */
-    double fu;                 /* f_u = fu*u_top*(1,1), fu = Kd*h/2 */
-    double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
-    double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
-    double q_topple;           /* 2b/h: rotation at which a body's centre of gravity passes over its pivot */
-    double inv_q_topple;       /* its inverse */
-    double tiny;               /* rotation below which the direction of motion decides a side */
-} rw_derived;
-
 /* An event indicator that is a function of the rotations alone, as data, so that the exact engine
  * evaluates it along a motion without a call: z = c + s |w| + t w with w = a.q (a line t = 1,
  * s = 0, or a breakpoint |w| = -c/s with t = 0); `none`: not of this form (the collapse and
@@ -72,6 +55,24 @@ static inline double rw_line_value(const rw_indicator_line *L, const double *x, 
     if (dz) *dz = (L->s * ((w > 0.0) - (w < 0.0)) + L->t) * (L->a[0] * xd[0] + L->a[1] * xd[1]);
     return L->c + L->s * fabs(w) + L->t * w;
 }
+
+typedef struct {
+    double h;                  /* wall height (for the laws written in mid-height displacements) */
+    double W1, Wd;             /* W1 = W2 = W/2, Wd = psi*W1 */
+    double Du, Fr, F0, Rel;    /* Delta_u, F_r, F0, R_el (Table 5.1) */
+    double D1, D2, Fi;         /* Delta_1, Delta_2 (Eq. 5.1, 5.2), plateau F_i */
+    double theta_y;            /* 2*hingeSat*Delta_1/h */
+    double cap_b, cap_m;       /* hinge capacities */
+    double M[2][2], K[2][2];   /* Eq. 3.2, 3.3 */
+    double pa[2];              /* p = pa*ag (Eq. 3.4, sign per convention) */
+    double fu;                 /* f_u = fu*u_top*(1,1), fu = Kd*h/2 */
+    double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
+    double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
+    double q_topple;           /* 2b/h: rotation at which a body's centre of gravity passes over its pivot */
+    double inv_q_topple;       /* its inverse */
+    double tiny;               /* rotation below which the direction of motion decides a side */
+    rw_indicator_line breaks[RW_NBREAK]; /* the hinge law's breakpoints (rw_hinge_law.breakpoints), fixed by the wall */
+} rw_derived;
 
 /* The 2DOF collapse indicator z = G(q)/(|q|^2 zscale), clipped at RW_COLLAPSE_ZMAX, on a region
  * whose hinge moments are Q = c + J q: G = q.(K q - Q) = q.A q - c.q with A = K - J (docs/model.md
