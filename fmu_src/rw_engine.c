@@ -175,12 +175,14 @@ static rw_input span_input(const rw_span *sp, double s)
  * when its free oscillation about the quasi-static solution is larger than 1e-12 of the toppling
  * rotation (a stiff spring's mode driven quasi-statically is not), and it is `fast` when it turns
  * more than 4 times faster than every other counted rate (including the wall's rocking rate, see
- * substeps_for): its free oscillation is then bounded by its amplitude, amp_q, and handled as a
- * band around the slow motion (rw_engine.c "fast modes") instead of setting the substeps. */
+ * substeps_for): its free oscillation is then a band around the slow motion (rw_engine.c "fast
+ * modes") instead of setting the substeps. At most one mode is fast (each would have to turn 4
+ * times faster than the other), so the band is dq_fast times a factor in [-1, 1]: the mode's
+ * shape times its amplitude, with signs. */
 typedef struct {
     int fast[2], any_fast;
     double slow_rate, fast_rate;
-    double amp_q[2]; /* bound of the fast modes' free oscillation in (q1, q2) */
+    double dq_fast[2]; /* the fast mode's free oscillation at its extreme, in (q1, q2) */
 } rw_rates;
 
 /* the squared amplitude of mode i's free oscillation about its quasi-static solution */
@@ -208,8 +210,8 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
             const double amp = sqrt(mode_amplitude2(sp, i)); /* rotations of a standing wall: no overflow */
             r->fast[i] = r->any_fast = 1;
             r->fast_rate = rw_max2(r->fast_rate, w[i]);
-            r->amp_q[0] += amp * fabs(R->E.P[0][i]);
-            r->amp_q[1] += amp * fabs(R->E.P[1][i]);
+            r->dq_fast[0] = amp * R->E.P[0][i];
+            r->dq_fast[1] = amp * R->E.P[1][i];
         } else {
             r->slow_rate = rw_max2(r->slow_rate, w[i]);
         }
@@ -851,10 +853,10 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
 
 /* ---- fast modes: a band around the slow motion ---------------------------------------------------
  * A stiff mode (a stiff spring: up to 1e5 rad/s) would set substeps of microseconds. Its free
- * oscillation is a sinusoid of constant amplitude amp_q about its exact quasi-static solution, so
+ * oscillation is a sinusoid of constant amplitude (dq_fast) about its exact quasi-static solution, so
  * over a substep of the slow modes the motion is the slow part (span_eval_part) within that band.
  * A substep can hold no event when every indicator of the slow part stays farther from zero than
- * what the band can change it by (evaluated at +-amp_q, doubled), and no new peak when |s1|, |s2|
+ * what the band can change it by (evaluated at +-dq_fast, doubled), and no new peak when |s1|, |s2|
  * of the slow part plus the band stay below the peaks so far; otherwise the substep is resolved at
  * the fast rate. The slow part between the substep's ends is bounded by its cubic Hermite
  * interpolant with the margin of hermite_keeps_sign. */
@@ -907,33 +909,70 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
-/* how much the band can change each indicator, near the slow point a */
+/* How much the band can change each indicator near the slow point a, doubled: for a line
+ * c + s|w| + t w of w = a.q, at most (|s| + |t|) |a.dq_fast|; for the toppling indicator,
+ * max |dq_fast|/q_topple; the others (collapse, closed hinges) evaluated at a +- dq_fast. */
 static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
                     double band[RW_NZ])
 {
-    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
-    rw_input in = span_input(sp, a->s);
+    const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
+    unsigned rest = RW_Z_ALL & ~e->line_mask;
     int k;
-    memcpy(xp, a->x, sizeof xp);
-    memcpy(xm, a->x, sizeof xm);
-    for (k = 0; k < 2; k++) {
-        xp[k] += r->amp_q[k];
-        xm[k] -= r->amp_q[k];
+    for (k = 0; k < RW_NZ; k++) {
+        const rw_indicator_line *L = &e->lines[k];
+        band[k] = 2.0 * (fabs(L->s) + fabs(L->t)) * fabs(L->a[0] * d0 + L->a[1] * d1); /* overwritten below for the rest */
     }
-    region_indicators(e, m, sp, &in, xp, NULL, RW_Z_ALL, zp, NULL);
-    region_indicators(e, m, sp, &in, xm, NULL, RW_Z_ALL, zm, NULL);
-    for (k = 0; k < RW_NZ; k++) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+    if ((rest & (1u << RW_Z_TOPPLE)) && e->P.support == RW_FLEXIBLE_TOP) {
+        band[RW_Z_TOPPLE] = 2.0 * rw_max2(fabs(d0), fabs(d1)) * e->D.inv_q_topple;
+        rest &= ~(1u << RW_Z_TOPPLE);
+    }
+    if (rest) {
+        double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+        const rw_input in = span_input(sp, a->s);
+        memcpy(xp, a->x, sizeof xp);
+        memcpy(xm, a->x, sizeof xm);
+        xp[0] += d0, xp[1] += d1;
+        xm[0] -= d0, xm[1] -= d1;
+        region_indicators(e, m, sp, &in, xp, NULL, rest, zp, NULL);
+        region_indicators(e, m, sp, &in, xm, NULL, rest, zm, NULL);
+        for (k = 0; k < RW_NZ; k++)
+            if ((rest >> k) & 1u) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+    }
 }
 
-/* Can the substep [0, L] of the span hold no event (see above)? Then *peaks_full says whether a
- * new peak is possible there: the band is then negligible (below 1e-9 of the peak) and the peaks
- * are taken on the full motion at the substep's resolution; a new peak with a larger band makes
- * the substep not quiet. */
-static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double (*C)[4],
-                            const rw_rates *r, int *peaks_full, rw_point *b_out)
+/* The collapse indicator under the band. Near q = 0 the band turns the direction of q and so
+ * moves the scale-free indicator by much, but there it cannot vanish at all on a region whose
+ * form G = q.A q - c.q has a positive definite symmetric part (least eigenvalue lam_min > 0):
+ * G >= lam_min |q|^2 - |c| |q| > 0 for |q| > |c|/lam_min (collapse_radius, 0 when c is zero to
+ * rounding, as in an elastic range). So the wall stands over the substep when the full motion
+ * stays beyond that radius: each rotation's slow range, widened by the band, bounds |q| below. */
+static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const rw_point *a, const rw_point *b,
+                                  const rw_rates *r, double L)
+{
+    double q_min = 0.0, lo, hi;
+    int j;
+    if (!sp->aq.valid || !e->b[RW_Z_COLLAPSE] || !(e->collapse_radius < INFINITY)) return 0;
+    if (e->collapse_radius == 0.0) return 1;
+    for (j = 0; j < 2; j++) {
+        hermite_range(a->x[j], a->x[2 + j], b->x[j], b->x[2 + j], L, &lo, &hi);
+        q_min = rw_max2(q_min, rw_max2(lo - fabs(r->dq_fast[j]), -hi - fabs(r->dq_fast[j])));
+    }
+    return q_min > e->collapse_radius;
+}
+
+#define RW_PEAKS_SUSPECT (1u << RW_NZ) /* substep_suspects: a new peak is possible under a band that matters */
+
+/* The indicators (a bit each) that the band test does not clear over the substep [0, L] of the
+ * span, and RW_PEAKS_SUSPECT when a new peak is possible under a band that is not negligible: 0
+ * when the substep is quiet. Then *peaks_full says whether a new peak is possible there: the band
+ * is then negligible (below 1e-9 of the peak) and the peaks are taken on the full motion at the
+ * substep's resolution. b_out: the slow part's end point. */
+static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L,
+                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_point *b_out)
 {
     rw_point a, b;
     double band[RW_NZ], lo, hi;
+    unsigned suspects = 0;
     int k, w;
     *peaks_full = 0;
     if (e->slow_carry_valid && e->slow_carry_t == sp->t0 && memcmp(e->slow_carry_x0, sp->x0, sizeof sp->x0) == 0)
@@ -946,11 +985,12 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
     for (k = 0; k < RW_NZ; k++) {
         hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
         if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
+        if (k == RW_Z_COLLAPSE && collapse_cannot_vanish(e, sp, &a, &b, r, L)) continue;
         hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
-        if (!indicator_clear(e->b[k], lo, hi, band[k])) return 0;
+        if (!indicator_clear(e->b[k], lo, hi, band[k])) suspects |= 1u << k;
     }
     for (w = 0; w < 2; w++) {
-        const double amp[RW_NX] = {r->amp_q[0], r->amp_q[1], 0, 0};
+        const double amp[RW_NX] = {r->dq_fast[0], r->dq_fast[1], 0, 0};
         const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
         const double sb = 2.0 * fabs(s_of(e, w, amp));
         const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
@@ -959,40 +999,137 @@ static int substep_is_quiet(const rw_engine *e, const rw_mode *m, const rw_span 
         if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
         hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
         if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
-        if (sb > 1e-9 * rw_max2(fabs(lo), fabs(hi))) return 0;
-        *peaks_full = 1;
+        if (sb > 1e-9 * rw_max2(fabs(lo), fabs(hi))) suspects |= RW_PEAKS_SUSPECT;
+        else *peaks_full = 1;
     }
+    return suspects;
+}
+
+/* ---- one crossing through the band ----------------------------------------------------------
+ * Near an event the band test fails for the indicator that crosses, and resolving the substep at
+ * the fast rate costs many full steps. An indicator that is a line of the rotations, z = c +
+ * s|w| + t w with w = a.q, crosses at most once on the full motion where its slow rate outruns the
+ * fastest the band can move it: |a.dq_slow| > w_fast |a.dq_fast| over the whole substep (the slow
+ * rate's range from its cubic Hermite interpolant, with that interpolant's margin), with a
+ * breakpoint (s != 0) kept on one side of its kink w = 0 (the slow w's range clear of the band).
+ * Then the full motion's values at the ends decide: no crossing, or one, located on the full
+ * motion. Returns -1 (undecided: the caller resolves at the fast rate), 0 (no crossing) or 1 (a
+ * crossing at *s_root, with the state there in x_root). */
+static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double L,
+                         const double (*C)[4], const rw_rates *r, double *s_root, double x_root[RW_NX])
+{
+    const rw_indicator_line *line = &e->lines[k];
+    const double a0 = line->a[0], a1 = line->a[1];
+    const double w_band = fabs(a0 * r->dq_fast[0] + a1 * r->dq_fast[1]);
+    double xa[RW_NX], xda[RW_NX], xb[RW_NX], xdb[RW_NX], x_end[RW_NX], lo, hi, slope, z0, z_end, guess;
+    int valid;
+    if (!((e->line_mask >> k) & 1u)) return -1;
+    span_eval_part(sp, 0.0, NULL, r->fast, xa, xda);
+    span_eval_part(sp, L, C, r->fast, xb, xdb);
+    slope = line->t;
+    if (line->s != 0.0) { /* a breakpoint: one side of w = 0 throughout */
+        hermite_range(a0 * xa[0] + a1 * xa[1], a0 * xa[2] + a1 * xa[3], a0 * xb[0] + a1 * xb[1], a0 * xb[2] + a1 * xb[3],
+                      L, &lo, &hi);
+        if (!(lo > w_band || hi < -w_band)) return -1;
+        slope += lo > w_band ? line->s : -line->s;
+    }
+    if (slope == 0.0) return -1;
+    hermite_range(a0 * xa[2] + a1 * xa[3], a0 * xda[2] + a1 * xda[3], a0 * xb[2] + a1 * xb[3], a0 * xdb[2] + a1 * xdb[3], L,
+                  &lo, &hi);
+    if (!(lo > r->fast_rate * w_band || hi < -r->fast_rate * w_band)) return -1; /* not monotone */
+    z0 = rw_line_value(line, sp->x0, NULL, NULL);
+    if ((z0 > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
+    span_eval(sp, L, C, x_end, NULL);
+    z_end = rw_line_value(line, x_end, NULL, NULL);
+    if ((z_end > 0.0) == e->b[k]) return 0;
+    { /* the first guess: the slow part's crossing, within the band's width over the slow rate of the full one */
+        double dza, dzb;
+        const double za = rw_line_value(line, xa, xa + 2, &dza), zb = rw_line_value(line, xb, xb + 2, &dzb);
+        guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, dza, zb, dzb, L) : NAN;
+    }
+    *s_root = refine_root(e, m, sp, k, e->b[k], 0.0, z0, L, z_end, guess, x_root, &valid);
+    if (!valid) span_eval(sp, *s_root, NULL, x_root, NULL);
     return 1;
 }
 
-/* A substep of a span with fast modes, from the span's start to t_to: accepted when quiet, else
- * halved until its halves are quiet or short enough (8 pieces at the fast rate) to be resolved in
- * full, so that only the neighbourhood of an event or a new peak is resolved at the fast rate.
- * Returns as resolve(). */
+/* The suspects of a substep settled by line_crossing when every one is a line: 1 with the first
+ * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. */
+static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, unsigned suspects,
+                                  double L, const double (*C)[4], const rw_rates *r, double *s_event, int *k_event,
+                                  double x_event[RW_NX])
+{
+    int k, found = 0;
+    if (suspects & ~e->line_mask) return -1; /* a new peak, the collapse or the toppling indicator */
+    for (k = 0; suspects >> k; k++) {
+        double s_k, x_k[RW_NX];
+        int rc;
+        if (!((suspects >> k) & 1u)) continue;
+        rc = line_crossing(e, m, sp, k, L, C, r, &s_k, x_k);
+        if (rc < 0) return -1;
+        if (rc == 1 && (!found || s_k < *s_event)) {
+            found = 1;
+            *s_event = s_k;
+            *k_event = k;
+            memcpy(x_event, x_k, sizeof x_k);
+        }
+    }
+    return found;
+}
+
+/* The substep [0, L] of the span taken whole (quiet, or quiet but for indicators without a
+ * crossing): x, *t at its end, the slow end point b carried to the next substep. */
+static void accept_substep(rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double (*C)[4],
+                           int peaks_full, rw_point *b, double t_to, double x[RW_NX], double *t)
+{
+    double xa[RW_NX];
+    memcpy(xa, x, sizeof xa);
+    e->steps++;
+    span_eval(sp, L, C, x, NULL);
+    if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
+    outputs_on(e, sp, L);
+    *t = t_to;
+    b->s = 0.0; /* the next substep starts here */
+    e->slow_carry = *b;
+    e->slow_carry_t = t_to;
+    memcpy(e->slow_carry_x0, x, sizeof e->slow_carry_x0);
+    e->slow_carry_valid = 1;
+}
+
+/* A substep of a span with fast modes, from the span's start to t_to: accepted when quiet or when
+ * its suspects are lines that cross at most once (crossings_through_band), else halved until its
+ * halves are or are short enough (8 pieces at the fast rate) to be resolved in full, so that only
+ * the neighbourhood of an event that the band cannot settle, or of a new peak, is resolved at the
+ * fast rate. Returns as resolve(). */
 static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
                         const rw_linear_input *in, double t_in, double t_to, const double (*C)[4], const rw_rates *r,
                         double x[RW_NX], double *t, int depth)
 {
     const double L = t_to - sp->t0;
-    int peaks_full, nf, rc;
-    double len = L;
+    int peaks_full, nf, rc, k_ev;
+    double len = L, s_ev, x_ev[RW_NX];
     rw_point b;
-    if (substep_is_quiet(e, m, sp, L, C, r, &peaks_full, &b)) {
-        double xa[RW_NX];
-        memcpy(xa, x, sizeof xa);
-        e->steps++;
-        span_eval(sp, L, C, x, NULL);
-        if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
-        outputs_on(e, sp, L);
-        *t = t_to;
-        b.s = 0.0; /* the next substep starts here */
-        e->slow_carry = b;
-        e->slow_carry_t = t_to;
-        memcpy(e->slow_carry_x0, x, sizeof e->slow_carry_x0);
-        e->slow_carry_valid = 1;
+    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &b);
+    if (suspects == 0) {
+        accept_substep(e, m, sp, L, C, peaks_full, &b, t_to, x, t);
         return 0;
     }
     e->slow_carry_valid = 0;
+    rc = crossings_through_band(e, m, sp, suspects, L, C, r, &s_ev, &k_ev, x_ev);
+    if (rc == 0) {
+        accept_substep(e, m, sp, L, C, peaks_full, &b, t_to, x, t);
+        return 0;
+    }
+    if (rc == 1) { /* the event, as resolve() applies it */
+        const rw_input ie = span_input(sp, s_ev);
+        e->steps++;
+        if (peaks_full) peaks_on(e, m, sp, x, 0.0, x_ev, s_ev);
+        outputs_on(e, sp, s_ev);
+        memcpy(x, x_ev, sizeof x_ev);
+        *t = sp->t0 + s_ev;
+        rc = apply_event(e, m, x, *t, &ie);
+        if (rc == 0 && hinge_event_keeps_region(e, sp, k_ev, x)) e->region_keep = 1;
+        return rc ? rc : -1;
+    }
     nf = substeps_for(r->fast_rate, &len);
     if (nf <= 8 || depth >= 40) return resolve(e, m, sp, R, g0, in, t_in, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL, x, t);
     rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, NULL, r, x, t, depth + 1);
@@ -1052,6 +1189,25 @@ static void region_lines(rw_engine *e, const rw_mode *m)
     }
 }
 
+/* The region's collapse form (rw_collapse_form_of) and the radius beyond which it cannot vanish
+ * (collapse_cannot_vanish): |c|/lam_min with a 1 % margin, 0 when c is zero to rounding, infinite
+ * when the symmetric part of A is not positive definite. */
+static void collapse_form_of_region(rw_engine *e)
+{
+    const rw_collapse_form *f = &e->collapse_form;
+    double mean, half_diff, off, lam_min, size, c_norm;
+    rw_collapse_form_of(&e->D, e->region_aq.c, (const double(*)[2])e->region_aq.J, &e->collapse_form);
+    mean = 0.5 * (f->A[0][0] + f->A[1][1]);
+    half_diff = 0.5 * (f->A[0][0] - f->A[1][1]);
+    off = 0.5 * (f->A[0][1] + f->A[1][0]);
+    lam_min = mean - sqrt(half_diff * half_diff + off * off);
+    size = fabs(mean) + fabs(half_diff) + fabs(off);
+    c_norm = sqrt(f->c[0] * f->c[0] + f->c[1] * f->c[1]);
+    e->collapse_radius = INFINITY;
+    if (lam_min > 1e-9 * size)
+        e->collapse_radius = c_norm <= 1e-12 * size * e->D.q_topple ? 0.0 : 1.01 * c_norm / lam_min;
+}
+
 /* The region of the motion at (x, t): kept from one input segment to the next, since without an
  * event no indicator, so no breakpoint and no mode, has changed; found again after each event. */
 static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const double x[RW_NX], double t,
@@ -1073,7 +1229,7 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         if (!R) return NULL;
         region_lines(e, m);
         if (e->region_aq.valid)
-            rw_collapse_form_of(&e->D, e->region_aq.c, (const double(*)[2])e->region_aq.J, &e->collapse_form);
+            collapse_form_of_region(e);
         e->region = (int)(R - e->cache);
         e->region_valid = 1;
     }
