@@ -911,12 +911,13 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
 
 /* How much the band can change each indicator near the slow point a, doubled: for a line
  * c + s|w| + t w of w = a.q, at most (|s| + |t|) |a.dq_fast|; for the toppling indicator,
- * max |dq_fast|/q_topple; the others (collapse, closed hinges) evaluated at a +- dq_fast. */
+ * max |dq_fast|/q_topple; the closed hinges' evaluated at a +- dq_fast. The collapse indicator's
+ * only where it is needed (collapse_band). */
 static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
                     double band[RW_NZ])
 {
     const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
-    unsigned rest = RW_Z_ALL & ~e->line_mask;
+    unsigned rest = RW_Z_ALL & ~e->line_mask & ~(1u << RW_Z_COLLAPSE); /* the collapse band: collapse_band */
     int k;
     for (k = 0; k < RW_NZ; k++) {
         const rw_indicator_line *L = &e->lines[k];
@@ -960,6 +961,22 @@ static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const r
     return q_min > e->collapse_radius;
 }
 
+/* the collapse indicator's band near the slow point a (as band_of, evaluated at a +- dq_fast) */
+static double collapse_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a,
+                            const rw_rates *r)
+{
+    const unsigned collapse = 1u << RW_Z_COLLAPSE;
+    const rw_input in = span_input(sp, a->s);
+    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+    memcpy(xp, a->x, sizeof xp);
+    memcpy(xm, a->x, sizeof xm);
+    xp[0] += r->dq_fast[0], xp[1] += r->dq_fast[1];
+    xm[0] -= r->dq_fast[0], xm[1] -= r->dq_fast[1];
+    region_indicators(e, m, sp, &in, xp, NULL, collapse, zp, NULL);
+    region_indicators(e, m, sp, &in, xm, NULL, collapse, zm, NULL);
+    return 2.0 * rw_max2(fabs(zp[RW_Z_COLLAPSE] - a->z[RW_Z_COLLAPSE]), fabs(zm[RW_Z_COLLAPSE] - a->z[RW_Z_COLLAPSE]));
+}
+
 #define RW_PEAKS_SUSPECT (1u << RW_NZ) /* substep_suspects: a new peak is possible under a band that matters */
 
 /* The indicators (a bit each) that the band test does not clear over the substep [0, L] of the
@@ -983,9 +1000,12 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
     *b_out = b;
     band_of(e, m, sp, &a, r, band);
     for (k = 0; k < RW_NZ; k++) {
+        if (k == RW_Z_COLLAPSE) {
+            if (collapse_cannot_vanish(e, sp, &a, &b, r, L)) continue;
+            band[k] = collapse_band(e, m, sp, &a, r);
+        }
         hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
         if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
-        if (k == RW_Z_COLLAPSE && collapse_cannot_vanish(e, sp, &a, &b, r, L)) continue;
         hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
         if (!indicator_clear(e->b[k], lo, hi, band[k])) suspects |= 1u << k;
     }
