@@ -249,6 +249,13 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
         z[RW_Z_TOPPLE] = rw_topple_value(&e->D, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
         rest &= ~topple;
     }
+    if ((rest & collapse) && sp->aq.valid && e->collapse_radius == 0.0) {
+        /* a region that cannot collapse (collapse_form_of_region): its indicator, positive
+         * everywhere in it, as its clipped value, at no cost */
+        z[RW_Z_COLLAPSE] = RW_COLLAPSE_ZMAX;
+        if (xd) dz[RW_Z_COLLAPSE] = 0.0;
+        rest &= ~collapse;
+    }
     if ((rest & collapse) && sp->aq.valid) {
         z[RW_Z_COLLAPSE] = rw_collapse_form_value(&e->collapse_form, x, xd, xd ? &dz[RW_Z_COLLAPSE] : NULL);
         /* Near its root the collapse indicator is taken from the law itself: the region's form
@@ -1364,6 +1371,7 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
     e->floor_rate = rocking_rate(e);
+    e->collapse_radius = INFINITY;
     {
         const double unit[2][RW_NX] = {{1.0, 0.0, 0.0, 0.0}, {0.0, 1.0, 0.0, 0.0}};
         int j;
