@@ -528,6 +528,19 @@ static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, i
     return 0;
 }
 
+/* Can indicator k have left the state `was` in (a->s, s_best], given the state x_best at s_best
+ * (position and rates)? 1 unless it is a line still in that state at s_best whose cubic Hermite
+ * interpolant over [a->s, s_best] keeps clear of zero (then it has no earlier root). */
+static int crossed_before(const rw_engine *e, int k, int was, const rw_point *a, double s_best,
+                          const double x_best[RW_NX])
+{
+    double z, dz;
+    if (!((e->line_mask >> k) & 1u) || (a->z[k] > 0.0) != was) return 1;
+    z = rw_line_value(&e->lines[k], x_best, x_best + 2, &dz);
+    if ((z > 0.0) != was) return 1;
+    return !hermite_keeps_sign(a->z[k], a->dz[k], z, dz, s_best - a->s);
+}
+
 /* The indicators that the quick test does not clear over [a, b] (a bit each): those whose state at
  * b differs from the tracked one, or that are not far from zero at both ends. No branch: most
  * substeps end with none. */
@@ -554,30 +567,36 @@ static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const do
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
                        unsigned suspects, double *s_event, int *k_event, double x_event[RW_NX])
 {
-    int k, found = 0, x_known = 0;
-    double best = b->s;
-    for (k = 0; suspects >> k; k++) {
-        const int was = e->b[k];
-        double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s;
-        double guess = NAN;
-        if (!((suspects >> k) & 1u)) continue;
-        if ((b->z[k] > 0.0) == was) {
-            if (!dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
-        } else if ((a->z[k] > 0.0) == was) {
-            guess = a->s + (b->s - a->s) * hermite_root(a->z[k], a->dz[k], b->z[k], b->dz[k], b->s - a->s);
+    int order[RW_NZ], n = 0, i, j, found = 0, x_known = 0;
+    double guess[RW_NZ], best = b->s;
+    /* the indicators that change sign first, the earliest guess first, then the possible dips: a
+     * line found later is mostly settled by its value at the first root (crossed_before), without
+     * a refinement of its own */
+    for (i = 0; suspects >> i; i++) {
+        if (!((suspects >> i) & 1u)) continue;
+        guess[i] = INFINITY;
+        if ((b->z[i] > 0.0) != e->b[i]) {
+            guess[i] = NAN;
+            if ((a->z[i] > 0.0) == e->b[i])
+                guess[i] = a->s + (b->s - a->s) * hermite_root(a->z[i], a->dz[i], b->z[i], b->dz[i], b->s - a->s);
         }
+        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1]; /* NaN first */
+        order[j] = i;
+    }
+    for (i = 0; i < n; i++) {
+        const int k = order[i], was = e->b[k];
+        double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s, x_root[RW_NX];
+        int x_valid;
+        if (found && x_known && !crossed_before(e, k, was, a, best, x_event)) continue;
+        if (guess[k] == INFINITY && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
         if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
         if (found && lo >= best) continue;
-        {
-            double x_root[RW_NX];
-            int x_valid;
-            s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess, x_root, &x_valid);
-            if (!found || s < best) {
-                best = s;
-                *k_event = k;
-                x_known = x_valid;
-                if (x_valid) memcpy(x_event, x_root, sizeof x_root);
-            }
+        s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess[k] == INFINITY ? NAN : guess[k], x_root, &x_valid);
+        if (!found || s < best) {
+            best = s;
+            *k_event = k;
+            x_known = x_valid;
+            if (x_valid) memcpy(x_event, x_root, sizeof x_root);
         }
         found = 1;
     }
