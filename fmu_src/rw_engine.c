@@ -822,6 +822,78 @@ static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k
     return 1;
 }
 
+static void region_lines(rw_engine *e, const rw_mode *m);
+
+/* The values and rates of the indicators at the state x of the span's motion at s, for the laws
+ * whose indicators are lines, the toppling indicator and the collapse form: their rates need the
+ * rotations' rates alone (x[2], x[3]), not a propagation to s. */
+static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX],
+                             double s, rw_point *pt)
+{
+    const double xd[RW_NX] = {x[2], x[3], 0.0, 0.0};
+    const rw_input in = span_input(sp, s);
+    pt->s = s;
+    if (pt->x != x) memcpy(pt->x, x, sizeof pt->x);
+    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+}
+
+/* After an event at s_ev that changed the modes but not the state, under a law whose region it
+ * keeps (hinge_event_keeps_region: a mid-height hinge's change of side under semiRigidHinge or
+ * dohertyHinge), the motion goes on as it was: the span continues, and only the lines and the
+ * indicator states change. *at_event: the point at the event with the new lines (its states are
+ * the tracked ones, as a new span's start point would give them), pb's values taken again.
+ * Returns 0 where the indicators need more than the rotations' rates (then the caller starts a
+ * new span). */
+static int go_on_after_event(rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX], double s_ev,
+                             rw_point *at_event, rw_point *pb)
+{
+    const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
+    int k;
+    region_lines(e, m);
+    if (e->P.support != RW_FLEXIBLE_TOP || !sp->aq.valid || (RW_Z_ALL & ~e->line_mask & ~from_rotations)) return 0;
+    e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
+    point_from_state(e, m, sp, x, s_ev, at_event);
+    point_from_state(e, m, sp, pb->x, pb->s, pb);
+    for (k = 0; k < RW_NZ; k++) {
+        e->b[k] = at_event->z[k] > 0.0;
+        e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
+    }
+    e->b_stale = 0;
+    e->steps++;
+    return 1;
+}
+
+/* The events of the piece [*pa, pb] of the span (suspects: suspects_of), earliest first: each is
+ * applied (x, *t at it); one that changes the modes alone under a region it keeps goes on in the
+ * same span (go_on_after_event: *pa becomes *event_point, the point after it). Returns 0 when the
+ * piece has no more events (its rest is quiet), -1 when an event ends the span (the caller starts
+ * a new one), or a collapse / error code (apply_event). */
+static int events_in_piece(rw_engine *e, rw_mode *m, const rw_span *sp, const rw_point **pa, rw_point *pb,
+                           unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
+{
+    double s_ev;
+    int k_ev;
+    while (suspects && first_event(e, m, sp, *pa, pb, suspects, &s_ev, &k_ev, x)) {
+        const rw_input ie = span_input(sp, s_ev);
+        double x_before[RW_NX];
+        int rc;
+        peaks_on(e, m, sp, (*pa)->x, (*pa)->s, x, s_ev);
+        outputs_on(e, sp, s_ev);
+        *t = sp->t0 + s_ev;
+        memcpy(x_before, x, sizeof x_before);
+        rc = apply_event(e, m, x, *t, &ie);
+        if (rc) return rc;
+        if (!hinge_event_keeps_region(e, sp, k_ev, x)) return -1;
+        if (memcmp(x_before, x, sizeof x_before) != 0 || !go_on_after_event(e, m, sp, x, s_ev, event_point, pb)) {
+            e->region_keep = 1;
+            return -1;
+        }
+        *pa = event_point;
+        suspects = suspects_of(e, event_point->z, event_point->dz, pb->z, pb->dz, pb->s - s_ev);
+    }
+    return 0;
+}
+
 /* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
  * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
  * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
@@ -831,12 +903,10 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
                    double *t)
 {
     const double h = len / n, t_end = sp->t0 + len;
-    rw_point buf[2];
+    rw_point buf[2], event_point;
     const rw_point *pa = start_point(e, m, sp, &buf[0]);
     int j;
     for (j = 0; j < n; j++) {
-        double s_ev;
-        int k_ev;
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
         /* the last piece differs from h by rounding of t_end - t0 at most: the same coefficients */
         const int same = fabs(piece - h) <= 4.0 * DBL_EPSILON * (fabs(t_end) + h);
@@ -851,15 +921,9 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
         }
         e->pending_valid = 0;
         e->steps++;
-        if (suspects && first_event(e, m, sp, pa, pb, suspects, &s_ev, &k_ev, x)) {
-            rw_input ie = span_input(sp, s_ev);
-            int rc;
-            peaks_on(e, m, sp, pa->x, pa->s, x, s_ev);
-            outputs_on(e, sp, s_ev);
-            *t = sp->t0 + s_ev;
-            rc = apply_event(e, m, x, *t, &ie);
-            if (rc == 0 && hinge_event_keeps_region(e, sp, k_ev, x)) e->region_keep = 1;
-            return rc ? rc : -1;
+        if (suspects) {
+            const int rc = events_in_piece(e, m, sp, &pa, pb, suspects, &event_point, x, t);
+            if (rc) return rc;
         }
         peaks_on(e, m, sp, pa->x, pa->s, pb->x, pb->s);
         outputs_on(e, sp, pb->s);

@@ -246,13 +246,21 @@ def test_finding08_failed_run_keeps_the_existing_output(fmi2sim_exe, rockingwall
 
 # ---- 9: signals ---------------------------------------------------------------------------------
 
+def default_signals():
+    """In the child: the caught signals at their default disposition. fmi2sim keeps a signal its
+    parent ignores (nohup, or a background job of a non-interactive shell, which ignores SIGINT),
+    so a test run launched that way would otherwise wait for a signal that never acts."""
+    for name in ("SIGINT", "SIGTERM", "SIGHUP"):
+        signal.signal(getattr(signal, name), signal.SIG_DFL)
+
+
 @pytest.mark.parametrize("sig", ["SIGINT", "SIGTERM", "SIGHUP", "SIGPIPE"])
 def test_finding09_signals_remove_the_unpack_folder(fmi2sim_exe, rockingwall_fmu, tmp_path, sig):
     """Killed while it writes to a pipe (for SIGPIPE: the reader goes away), fmi2sim removes its
     unpacked FMU and dies of the signal (the old one left ~400 KiB behind each time)."""
     env, tdir = tmp_env(tmp_path)
     proc = subprocess.Popen([str(fmi2sim_exe), str(rockingwall_fmu), "--stop-time", "100", "--output-interval", "1e-4"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, preexec_fn=default_signals)
     assert proc.stdout.readline().startswith(b"time,")  # unpacked, loaded and writing
     assert leftovers(tdir)
     if sig == "SIGPIPE":
