@@ -837,23 +837,43 @@ static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
-/* After an event at s_ev that changed the modes but not the state, under a law whose region it
- * keeps (hinge_event_keeps_region: a mid-height hinge's change of side under semiRigidHinge or
- * dohertyHinge), the motion goes on as it was: the span continues, and only the lines and the
- * indicator states change. *at_event: the point at the event with the new lines (its states are
- * the tracked ones, as a new span's start point would give them), pb's values taken again.
- * Returns 0 where the indicators need more than the rotations' rates (then the caller starts a
- * new span). */
-static int go_on_after_event(rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX], double s_ev,
-                             rw_point *at_event, rw_point *pb)
+/* What goes on after an event that keeps the region (hinge_event_keeps_region: a hinge's change of
+ * side under semiRigidHinge or dohertyHinge), without going back to advance(): the lines and the
+ * indicator states change, and
+ * - if the event left the state as it was (a mid-height hinge's change of side), the motion goes
+ *   on as it was: the span continues, and pb's values are taken again with the new lines;
+ * - if it changed the rates (a base impact) and the span is the segment's only piece
+ *   (`restart`), a new span of the same region starts at the event and pb is evaluated again at
+ *   the segment's end t_end.
+ * *at_event: the point at the event with the new lines (its states are the tracked ones, as a new
+ * span's start point would give them). The indicators other than lines (toppling, the collapse
+ * form) need the rotations' rates alone there, not a propagation. Returns 0 where this does not
+ * apply (then the caller goes back to advance()). */
+typedef struct {
+    const rw_cache_entry *R;
+    const double *g0;
+    const rw_linear_input *in;
+    double t_in, t_end;
+    int restart;
+} rw_piece;
+
+static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const rw_piece *pc, const double x[RW_NX],
+                             int state_kept, double s_ev, rw_point *at_event, rw_point *pb)
 {
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
     int k;
+    if (!state_kept && !pc->restart) return 0;
     region_lines(e, m);
     if (e->P.support != RW_FLEXIBLE_TOP || !sp->aq.valid || (RW_Z_ALL & ~e->line_mask & ~from_rotations)) return 0;
     e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
-    point_from_state(e, m, sp, x, s_ev, at_event);
-    point_from_state(e, m, sp, pb->x, pb->s, pb);
+    if (state_kept) {
+        point_from_state(e, m, sp, x, s_ev, at_event);
+        point_from_state(e, m, sp, pb->x, pb->s, pb);
+    } else {
+        span_start(sp, pc->R, pc->g0, sp->t0 + s_ev, x, pc->in, pc->t_in);
+        point_from_state(e, m, sp, x, 0.0, at_event);
+        eval_point(e, m, sp, pc->t_end - sp->t0, NULL, pb);
+    }
     for (k = 0; k < RW_NZ; k++) {
         e->b[k] = at_event->z[k] > 0.0;
         e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
@@ -864,19 +884,19 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, const rw_span *sp, 
 }
 
 /* The events of the piece [*pa, pb] of the span (suspects: suspects_of), earliest first: each is
- * applied (x, *t at it); one that changes the modes alone under a region it keeps goes on in the
- * same span (go_on_after_event: *pa becomes *event_point, the point after it). Returns 0 when the
- * piece has no more events (its rest is quiet), -1 when an event ends the span (the caller starts
- * a new one), or a collapse / error code (apply_event). */
-static int events_in_piece(rw_engine *e, rw_mode *m, const rw_span *sp, const rw_point **pa, rw_point *pb,
-                           unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
+ * applied (x, *t at it); one after which go_on_after_event applies goes on in this piece (*pa
+ * becomes *event_point, the point after it). Returns 0 when the piece has no more events (its rest
+ * is quiet), -1 when an event ends the span (the caller starts a new one), or a collapse / error
+ * code (apply_event). */
+static int events_in_piece(rw_engine *e, rw_mode *m, rw_span *sp, const rw_piece *pc, const rw_point **pa,
+                           rw_point *pb, unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
 {
     double s_ev;
     int k_ev;
     while (suspects && first_event(e, m, sp, *pa, pb, suspects, &s_ev, &k_ev, x)) {
         const rw_input ie = span_input(sp, s_ev);
         double x_before[RW_NX];
-        int rc;
+        int rc, kept;
         peaks_on(e, m, sp, (*pa)->x, (*pa)->s, x, s_ev);
         outputs_on(e, sp, s_ev);
         *t = sp->t0 + s_ev;
@@ -884,12 +904,13 @@ static int events_in_piece(rw_engine *e, rw_mode *m, const rw_span *sp, const rw
         rc = apply_event(e, m, x, *t, &ie);
         if (rc) return rc;
         if (!hinge_event_keeps_region(e, sp, k_ev, x)) return -1;
-        if (memcmp(x_before, x, sizeof x_before) != 0 || !go_on_after_event(e, m, sp, x, s_ev, event_point, pb)) {
+        kept = memcmp(x_before, x, sizeof x_before) == 0;
+        if (!go_on_after_event(e, m, sp, pc, x, kept, s_ev, event_point, pb)) {
             e->region_keep = 1;
             return -1;
         }
         *pa = event_point;
-        suspects = suspects_of(e, event_point->z, event_point->dz, pb->z, pb->dz, pb->s - s_ev);
+        suspects = suspects_of(e, event_point->z, event_point->dz, pb->z, pb->dz, pb->s - event_point->s);
     }
     return 0;
 }
@@ -922,7 +943,8 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
         e->pending_valid = 0;
         e->steps++;
         if (suspects) {
-            const int rc = events_in_piece(e, m, sp, &pa, pb, suspects, &event_point, x, t);
+            const rw_piece pc = {R, g0, in, t_in, t_end, n == 1};
+            const int rc = events_in_piece(e, m, sp, &pc, &pa, pb, suspects, &event_point, x, t);
             if (rc) return rc;
         }
         peaks_on(e, m, sp, pa->x, pa->s, pb->x, pb->s);
