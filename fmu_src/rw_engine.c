@@ -580,7 +580,8 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
             if ((a->z[i] > 0.0) == e->b[i])
                 guess[i] = a->s + (b->s - a->s) * hermite_root(a->z[i], a->dz[i], b->z[i], b->dz[i], b->s - a->s);
         }
-        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1]; /* NaN first */
+        /* insertion by guess (a NaN guess sorts anywhere: the order only saves work) */
+        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1];
         order[j] = i;
     }
     for (i = 0; i < n; i++) {
