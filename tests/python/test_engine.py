@@ -217,6 +217,24 @@ def test_output_grid_matches_peaks():
     np.testing.assert_allclose(r.s1, r.x[:, 0] * 2.5 / 2, rtol=0, atol=1e-15)
 
 
+@pytest.mark.parametrize("law", [1, 2, 3, 4])
+@pytest.mark.parametrize("kd", [5e4, 5e7])
+def test_quiet_segments_take_the_general_path_s_motion(law, kd):
+    """Most segments are taken by the quiet path (rw_engine_quiet_segment), which must give the
+    general path's motion: with an output time at the end of every segment the quiet path is never
+    taken, so both runs must agree (peaks to 1e-12, the same events, impacts and end state)."""
+    sig = inputs.el_centro(0.5)
+    keep = sig.t <= 30.0
+    t, ag = sig.t[keep], sig.a[keep]
+    params = dict(support=3, hingeLaw=law, Kd=kd)
+    quiet = rw_engine.run(t, ag, t_end=30.0, **params)
+    general = rw_engine.run(t, ag, t_end=30.0, t_out=t[1:], **params)
+    assert (quiet.events, quiet.impacts, quiet.collapsed) == (general.events, general.impacts, general.collapsed)
+    assert quiet.peak_s1 == pytest.approx(general.peak_s1, rel=1e-12)
+    assert quiet.peak_s2 == pytest.approx(general.peak_s2, rel=1e-12, abs=1e-15)
+    np.testing.assert_allclose(quiet.x_end, general.x_end, rtol=1e-9, atol=1e-15)
+
+
 @pytest.mark.parametrize("kwargs,code", [
     (dict(t=[0.0, 1.0, 1.0], ag=[0.0, 0.0, 0.0]), 1),
     (dict(t=[0.0, 1.0], ag=[0.0, math.nan]), 1),
