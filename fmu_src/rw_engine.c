@@ -686,15 +686,21 @@ static void outputs_on(rw_engine *e, const rw_span *sp, double sb)
 }
 
 /* ---- events ----------------------------------------------------------------------------------- */
-static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX])
+/* the tracked indicator states (z > 0), and the same as +-1 for suspects_of */
+static void track_states(rw_engine *e, const double z[RW_NZ])
 {
-    double z[RW_NZ];
     int k;
-    rw_event_indicators(&e->P, &e->D, m, in, x, z);
     for (k = 0; k < RW_NZ; k++) {
         e->b[k] = z[k] > 0.0;
         e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
     }
+}
+
+static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX])
+{
+    double z[RW_NZ];
+    rw_event_indicators(&e->P, &e->D, m, in, x, z);
+    track_states(e, z);
 }
 
 /* The model's event iteration at t (as the FMU's hosts run it), then its collapse test.
@@ -790,6 +796,13 @@ static int substeps_for(double rate, double *len)
     return n < 1 ? 1 : n;
 }
 
+/* Does one substep cover a span of length len in region R, whatever modes count: does every mode,
+ * and the rocking rate that bounds the polynomial motions, turn by at most RW_PHASE_PER_SUBSTEP? */
+static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, double len)
+{
+    return rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len <= RW_PHASE_PER_SUBSTEP;
+}
+
 /* The start point of a span: the end point of the span before, where that holds (rw_engine.carry),
  * else evaluated into *buf */
 static const rw_point *start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
@@ -862,7 +875,6 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
                              int state_kept, double s_ev, rw_point *at_event, rw_point *pb)
 {
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
-    int k;
     if (!state_kept && !pc->restart) return 0;
     region_lines(e, m);
     if (e->P.support != RW_FLEXIBLE_TOP || !sp->aq.valid || (RW_Z_ALL & ~e->line_mask & ~from_rotations)) return 0;
@@ -875,10 +887,7 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
         point_from_state(e, m, sp, x, 0.0, at_event);
         eval_point(e, m, sp, pc->t_end - sp->t0, NULL, pb);
     }
-    for (k = 0; k < RW_NZ; k++) {
-        e->b[k] = at_event->z[k] > 0.0;
-        e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
-    }
+    track_states(e, at_event->z);
     e->b_stale = 0;
     e->steps++;
     return 1;
@@ -892,8 +901,8 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
 static int events_in_piece(rw_engine *e, rw_mode *m, rw_span *sp, const rw_piece *pc, const rw_point **pa,
                            rw_point *pb, unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
 {
-    double s_ev;
-    int k_ev;
+    double s_ev = 0.0;
+    int k_ev = 0; /* both set by first_event when it finds one */
     while (suspects && first_event(e, m, sp, *pa, pb, suspects, &s_ev, &k_ev, x)) {
         const rw_input ie = span_input(sp, s_ev);
         double x_before[RW_NX];
@@ -1022,15 +1031,33 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
+/* The band of the indicators of `mask` near the slow point a, evaluated: twice the larger change
+ * of each at a +- dq_fast */
+static void band_by_evaluation(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a,
+                               const rw_rates *r, unsigned mask, double band[RW_NZ])
+{
+    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
+    const rw_input in = span_input(sp, a->s);
+    int k;
+    memcpy(xp, a->x, sizeof xp);
+    memcpy(xm, a->x, sizeof xm);
+    xp[0] += r->dq_fast[0], xp[1] += r->dq_fast[1];
+    xm[0] -= r->dq_fast[0], xm[1] -= r->dq_fast[1];
+    region_indicators(e, m, sp, &in, xp, NULL, mask, zp, NULL);
+    region_indicators(e, m, sp, &in, xm, NULL, mask, zm, NULL);
+    for (k = 0; k < RW_NZ; k++)
+        if ((mask >> k) & 1u) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
+}
+
 /* How much the band can change each indicator near the slow point a, doubled: for a line
  * c + s|w| + t w of w = a.q, at most (|s| + |t|) |a.dq_fast|; for the toppling indicator,
- * max |dq_fast|/q_topple; the closed hinges' evaluated at a +- dq_fast. The collapse indicator's
- * only where it is needed (collapse_band). */
+ * max |dq_fast|/q_topple; the closed hinges' evaluated (band_by_evaluation). The collapse
+ * indicator's is evaluated only where substep_suspects needs it. */
 static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
                     double band[RW_NZ])
 {
     const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
-    unsigned rest = RW_Z_ALL & ~e->line_mask & ~(1u << RW_Z_COLLAPSE); /* the collapse band: collapse_band */
+    unsigned rest = RW_Z_ALL & ~e->line_mask & ~(1u << RW_Z_COLLAPSE);
     int k;
     for (k = 0; k < RW_NZ; k++) {
         const rw_indicator_line *L = &e->lines[k];
@@ -1040,18 +1067,7 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
         band[RW_Z_TOPPLE] = 2.0 * rw_max2(fabs(d0), fabs(d1)) * e->D.inv_q_topple;
         rest &= ~(1u << RW_Z_TOPPLE);
     }
-    if (rest) {
-        double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
-        const rw_input in = span_input(sp, a->s);
-        memcpy(xp, a->x, sizeof xp);
-        memcpy(xm, a->x, sizeof xm);
-        xp[0] += d0, xp[1] += d1;
-        xm[0] -= d0, xm[1] -= d1;
-        region_indicators(e, m, sp, &in, xp, NULL, rest, zp, NULL);
-        region_indicators(e, m, sp, &in, xm, NULL, rest, zm, NULL);
-        for (k = 0; k < RW_NZ; k++)
-            if ((rest >> k) & 1u) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
-    }
+    if (rest) band_by_evaluation(e, m, sp, a, r, rest, band);
 }
 
 /* The collapse indicator under the band. Near q = 0 the band turns the direction of q and so
@@ -1072,22 +1088,6 @@ static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const r
         q_min = rw_max2(q_min, rw_max2(lo - fabs(r->dq_fast[j]), -hi - fabs(r->dq_fast[j])));
     }
     return q_min > e->collapse_radius;
-}
-
-/* the collapse indicator's band near the slow point a (as band_of, evaluated at a +- dq_fast) */
-static double collapse_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a,
-                            const rw_rates *r)
-{
-    const unsigned collapse = 1u << RW_Z_COLLAPSE;
-    const rw_input in = span_input(sp, a->s);
-    double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
-    memcpy(xp, a->x, sizeof xp);
-    memcpy(xm, a->x, sizeof xm);
-    xp[0] += r->dq_fast[0], xp[1] += r->dq_fast[1];
-    xm[0] -= r->dq_fast[0], xm[1] -= r->dq_fast[1];
-    region_indicators(e, m, sp, &in, xp, NULL, collapse, zp, NULL);
-    region_indicators(e, m, sp, &in, xm, NULL, collapse, zm, NULL);
-    return 2.0 * rw_max2(fabs(zp[RW_Z_COLLAPSE] - a->z[RW_Z_COLLAPSE]), fabs(zm[RW_Z_COLLAPSE] - a->z[RW_Z_COLLAPSE]));
 }
 
 #define RW_PEAKS_SUSPECT (1u << RW_NZ) /* substep_suspects: a new peak is possible under a band that matters */
@@ -1115,7 +1115,7 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
     for (k = 0; k < RW_NZ; k++) {
         if (k == RW_Z_COLLAPSE) {
             if (collapse_cannot_vanish(e, sp, &a, &b, r, L)) continue;
-            band[k] = collapse_band(e, m, sp, &a, r);
+            band_by_evaluation(e, m, sp, &a, r, 1u << RW_Z_COLLAPSE, band);
         }
         hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
         if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
@@ -1238,8 +1238,8 @@ static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_en
                         double x[RW_NX], double *t, int depth)
 {
     const double L = t_to - sp->t0;
-    int peaks_full, nf, rc, k_ev;
-    double len = L, s_ev, x_ev[RW_NX];
+    int peaks_full, nf, rc, k_ev = 0;
+    double len = L, s_ev = 0.0, x_ev[RW_NX]; /* s_ev, k_ev, x_ev: set by crossings_through_band when it finds one */
     rw_point b;
     const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &b);
     if (suspects == 0) {
@@ -1295,12 +1295,8 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_span *sp)
 {
     rw_point pt;
-    int k;
     eval_point(e, m, sp, 0.0, NULL, &pt);
-    for (k = 0; k < RW_NZ; k++) {
-        e->b[k] = pt.z[k] > 0.0;
-        e->b_sign[k] = e->b[k] ? 1.0 : -1.0;
-    }
+    track_states(e, pt.z);
     e->b_stale = 0;
     carry_point(e, &pt, sp->t0);
 }
@@ -1388,8 +1384,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         span_start(&sp, R, g0, *t, x, in, t_in);
         if (e->b_stale) refresh_indicator_states(e, m, &sp);
         span_len = t_end - *t;
-        if (rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * span_len <= RW_PHASE_PER_SUBSTEP) {
-            /* one substep, whatever modes count: every mode turns by at most RW_PHASE_PER_SUBSTEP */
+        if (one_substep_covers(e, R, span_len)) {
             r.any_fast = 0;
             n = 1;
             h = span_len;
@@ -1436,7 +1431,7 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], dou
     if (e->rigid && (m->closed_b || m->closed_m)) return 0; /* closed hinges' indicators: start_point */
     if (e->i_out < e->n_out && e->t_out[e->i_out] <= t_end) return 0;
     R = &e->cache[e->region];
-    if (rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len > RW_PHASE_PER_SUBSTEP) return 0;
+    if (!one_substep_covers(e, R, len)) return 0;
     if (memcmp(e->carry.x, x, sizeof e->carry.x) != 0) return 0;
     sp.aq = e->region_aq;
     span_start(&sp, R, e->region_g0, *t, x, in, t_in);

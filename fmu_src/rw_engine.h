@@ -157,15 +157,15 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int carry_valid;
     double carry_t;
     rw_engine_point carry;
-    /* the same for the slow part of a span with fast modes (rw_engine.c "fast modes"): the slow
-     * point at the end of the last quiet substep, which ended at slow_carry_t in the state
-     * slow_carry_x0 */
     /* the end point of a segment that rw_engine_quiet_segment evaluated and found not quiet: the
      * first substep of resolve() over the same segment takes it (pending_t0: its start time) */
     int pending_valid;
     unsigned pending_suspects;
     double pending_t0;
     rw_engine_point pending;
+    /* the same as carry for the slow part of a span with fast modes (rw_engine.c "fast modes"): the
+     * slow point at the end of the last quiet substep, which ended at slow_carry_t in the state
+     * slow_carry_x0 */
     int slow_carry_valid;
     double slow_carry_t, slow_carry_x0[RW_NX];
     rw_engine_point slow_carry;
