@@ -469,20 +469,27 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
 
 /* The root in (0, 1) of the cubic Hermite interpolant of (z, dz) on [0, L] whose end values have
  * opposite signs: the first guess of the root refinement (within a substep every significant mode
- * turns by at most 1 rad, so the interpolant is within a fraction of a percent of the motion). Two
- * Newton steps on the cubic from the chord's root, kept inside (0, 1): the refinement's Halley step
- * converges from there, so more digits here would be spent twice. */
+ * turns by at most 1 rad, so the interpolant is within a fraction of a percent of the motion).
+ * Newton steps on the cubic from the chord's root, kept inside the bracket of the root (else a
+ * bisection), until a step is below 1e-3 of the substep: the refinement's Halley step converges from
+ * there, so more digits here would be spent twice. The bracket matters where the chord misleads: an
+ * indicator that starts just off zero after an event and turns back puts the chord's root next to 0. */
 static double hermite_root(double za, double da, double zb, double db, double L)
 {
     const double ma = L * da, mb = L * db;
-    double u = za / (za - zb);
+    const int a_positive = za > 0.0;
+    double u = za / (za - zb), lo = 0.0, hi = 1.0;
     int it;
-    for (it = 0; it < 2; it++) {
+    for (it = 0; it < 12; it++) {
         const double u2 = u * u, u3 = u2 * u;
         const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
         const double dz = (6 * u2 - 6 * u) * za + (3 * u2 - 4 * u + 1) * ma + (-6 * u2 + 6 * u) * zb + (3 * u2 - 2 * u) * mb;
-        const double next = u - z / dz;
-        if (!(next > 0.0 && next < 1.0)) break; /* also NaN: the chord's root stands */
+        double next;
+        if ((z > 0.0) == a_positive) lo = u;
+        else hi = u;
+        next = u - z / dz;
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi); /* also NaN */
+        if (fabs(next - u) < 1e-3) return next;
         u = next;
     }
     return u;
@@ -803,14 +810,35 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
     return rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len <= RW_PHASE_PER_SUBSTEP;
 }
 
-/* The start point of a span: the end point of the span before, where that holds (rw_engine.carry),
+/* The carried end point (rw_engine.carry) as the start point of the span sp, which starts at its
+ * time and state: the closed hinges' indicators are taken again at the span's input (in *buf), since
+ * their rates follow the input's; the other indicators depend on the state and the rotations'
+ * rates alone. */
+static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_mode *m, const rw_span *sp,
+                                                  rw_point *buf)
+{
+    const unsigned closed = rw_closed_hinge_mask(&e->P, m);
+    double x[RW_NX], xd[RW_NX];
+    rw_input in;
+    if (!closed) return &e->carry;
+    *buf = e->carry;
+    in = span_input(sp, 0.0);
+    span_eval(sp, 0.0, NULL, x, xd);
+    region_indicators(e, m, sp, &in, buf->x, xd, closed, buf->z, buf->dz);
+    return buf;
+}
+
+static const rw_point *carried_start(const rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
+{
+    return e->rigid ? carried_with_closed_hinges(e, m, sp, buf) : &e->carry;
+}
+
+/* The start point of a span: the end point of the span before, where that holds (carried_start),
  * else evaluated into *buf */
 static const rw_point *start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
 {
-    const int closed = e->rigid && (m->closed_b || m->closed_m);
-    if (e->carry_valid && e->region_valid && !closed && e->carry_t == sp->t0 &&
-        memcmp(e->carry.x, sp->x0, sizeof e->carry.x) == 0)
-        return &e->carry;
+    if (e->carry_valid && e->region_valid && e->carry_t == sp->t0 && memcmp(e->carry.x, sp->x0, sizeof e->carry.x) == 0)
+        return carried_start(e, m, sp, buf);
     eval_point(e, m, sp, 0.0, NULL, buf);
     return buf;
 }
@@ -1425,18 +1453,19 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], dou
     const double len = t_end - *t;
     rw_cache_entry *R;
     rw_span sp;
-    rw_point b;
+    rw_point b, buf;
+    const rw_point *a;
     unsigned suspects;
     if (!e->region_valid || !e->carry_valid || e->b_stale || e->carry_t != *t) return 0;
-    if (e->rigid && (m->closed_b || m->closed_m)) return 0; /* closed hinges' indicators: start_point */
     if (e->i_out < e->n_out && e->t_out[e->i_out] <= t_end) return 0;
     R = &e->cache[e->region];
     if (!one_substep_covers(e, R, len)) return 0;
     if (memcmp(e->carry.x, x, sizeof e->carry.x) != 0) return 0;
     sp.aq = e->region_aq;
     span_start(&sp, R, e->region_g0, *t, x, in, t_in);
+    a = carried_start(e, m, &sp, &buf);
     eval_point(e, m, &sp, len, substep_coefficients(R, len, t_end), &b);
-    suspects = suspects_of(e, e->carry.z, e->carry.dz, b.z, b.dz, len);
+    suspects = suspects_of(e, a->z, a->dz, b.z, b.dz, len);
     if (suspects) { /* its end point and suspects, for resolve() (rw_engine.pending) */
         e->pending = b;
         e->pending_t0 = *t;

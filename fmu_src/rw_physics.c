@@ -329,6 +329,12 @@ void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *
     L[RW_Z_COLLAPSE] = none;
 }
 
+unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m)
+{
+    if (!rw_is_rigid(p)) return 0u;
+    return (m->closed_b ? 1u << RW_Z_BASE : 0u) | (p->support == RW_FLEXIBLE_TOP && m->closed_m ? 1u << RW_Z_MID : 0u);
+}
+
 /* the indicators of closed rigid hinges (1 - |f|/cap + eps_f, rw_indicator_lines) */
 static void closed_hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                                     const double x[RW_NX], unsigned mask, double z[RW_NZ], const rw_rate_request *r)
@@ -405,15 +411,16 @@ static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode
                           const rw_rate_request *r)
 {
     const unsigned never_lines = (1u << RW_Z_COLLAPSE) | (1u << RW_Z_TOPPLE);
-    if (mask & ~never_lines) {
+    const unsigned closed_mask = rw_closed_hinge_mask(p, m);
+    if (mask & ~never_lines & ~closed_mask) { /* a closed hinge's indicator is no line */
         rw_indicator_line L[RW_NZ];
         int k;
         rw_indicator_lines(p, d, m, L);
         for (k = 0; k < RW_NZ; k++)
             if (wanted(mask, k) && !L[k].none)
                 z[k] = rw_line_value(&L[k], x, r ? r->xd : NULL, r ? &r->dz[k] : NULL);
-        if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) closed_hinge_indicators(p, d, m, in, x, mask, z, r);
     }
+    if (mask & closed_mask) closed_hinge_indicators(p, d, m, in, x, mask, z, r);
     if (p->support == RW_FLEXIBLE_TOP && wanted(mask, RW_Z_TOPPLE)) z[RW_Z_TOPPLE] = rw_topple_value(d, x, r ? r->xd : NULL, r ? &r->dz[RW_Z_TOPPLE] : NULL);
     if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, x, Q, r);
 }

@@ -177,6 +177,9 @@ void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, c
 /* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */
 void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                       const double x[RW_NX], double *f_b, double *f_m);
+/* The indicators of the rigid hinges that are closed under m (bit k = indicator k): not lines but
+ * 1 - |f|/cap + eps_f, with f affine in the inputs and one rotation */
+unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m);
 /* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
