@@ -549,10 +549,12 @@ static int crossed_before(const rw_engine *e, int k, int was, const rw_point *a,
 }
 
 /* The indicators that the quick test does not clear over [a, b] (a bit each): those whose state at
- * b differs from the tracked one, or that are not far from zero at both ends. No branch: most
+ * b differs from the tracked one, or that are not farther from zero at both ends than the margin
+ * of far_from_zero plus band[k] (band NULL: none; rw_engine.c "fast modes"). No branch: most
  * substeps end with none. */
-static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const double dza[RW_NZ],
-                            const double zb[RW_NZ], const double dzb[RW_NZ], double L)
+static inline unsigned clearance_suspects(const rw_engine *e, const double za[RW_NZ], const double dza[RW_NZ],
+                                          const double zb[RW_NZ], const double dzb[RW_NZ], const double *band,
+                                          double L)
 {
     double clear[RW_NZ];
     unsigned suspects = 0;
@@ -563,10 +565,16 @@ static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const do
         const double ta = za[k] * e->b_sign[k], tb = zb[k] * e->b_sign[k];
         const double nearest = ta < tb ? ta : tb;
         const double need = (4.0 / 27.0 + 0.05) * fabs(L) * (fabs(dza[k]) + fabs(dzb[k])) + 0.05 * fabs(zb[k] - za[k]);
-        clear[k] = nearest - rw_max2(need, DBL_MIN); /* >= 0: nearest >= need and > 0 */
+        clear[k] = nearest - rw_max2(band ? need + band[k] : need, DBL_MIN); /* >= 0: nearest >= need and > 0 */
     }
     for (k = 0; k < RW_NZ; k++) suspects |= (unsigned)(clear[k] < 0.0) << k;
     return suspects;
+}
+
+static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const double dza[RW_NZ],
+                            const double zb[RW_NZ], const double dzb[RW_NZ], double L)
+{
+    return clearance_suspects(e, za, dza, zb, dzb, NULL, L);
 }
 
 /* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
@@ -1049,14 +1057,23 @@ static int indicator_clear(int state, double lo, double hi, double band)
     return state ? lo > band : hi < -band;
 }
 
+/* The slow part's ends of a substep [0, L]: the points (indicators with their rates) and the
+ * rotations' accelerations there, with which line_crossing bounds a line's slow rate */
+typedef struct {
+    rw_point a, b;
+    double ddq_a[2], ddq_b[2];
+} rw_slow_ends;
+
 static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double (*C)[4],
-                            const int *fast, rw_point *pt)
+                            const int *fast, rw_point *pt, double ddq[2])
 {
     double xd[RW_NX];
     rw_input in = span_input(sp, s);
     pt->s = s;
     span_eval_part(sp, s, C, fast, pt->x, xd);
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+    ddq[0] = xd[2];
+    ddq[1] = xd[3];
 }
 
 /* The band of the indicators of `mask` near the slow point a, evaluated: twice the larger change
@@ -1085,12 +1102,11 @@ static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, con
                     double band[RW_NZ])
 {
     const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
+    const rw_line_arrays *A = &e->line_arrays;
     unsigned rest = RW_Z_ALL & ~e->line_mask & ~(1u << RW_Z_COLLAPSE);
     int k;
-    for (k = 0; k < RW_NZ; k++) {
-        const rw_indicator_line *L = &e->lines[k];
-        band[k] = 2.0 * (fabs(L->s) + fabs(L->t)) * fabs(L->a[0] * d0 + L->a[1] * d1); /* overwritten below for the rest */
-    }
+    for (k = 0; k < RW_NZ; k++) /* on arrays, which the compiler vectorizes; overwritten below for the rest */
+        band[k] = 2.0 * (fabs(A->s[k]) + fabs(A->t[k])) * fabs(A->a0[k] * d0 + A->a1[k] * d1);
     if ((rest & (1u << RW_Z_TOPPLE)) && e->P.support == RW_FLEXIBLE_TOP) {
         band[RW_Z_TOPPLE] = 2.0 * rw_max2(fabs(d0), fabs(d1)) * e->D.inv_q_topple;
         rest &= ~(1u << RW_Z_TOPPLE);
@@ -1120,47 +1136,62 @@ static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const r
 
 #define RW_PEAKS_SUSPECT (1u << RW_NZ) /* substep_suspects: a new peak is possible under a band that matters */
 
+/* Can |s| (which: 0 for s1, 1 for s2) of the full motion pass its peak so far over [0, L], given the
+ * slow part's states xa, xb at the ends? The slow part's range is its cubic Hermite interpolant's,
+ * and the band adds its exact reach |s(dq_fast)| (s is linear in q). 1 with the reach and the slow
+ * part's largest |s| (*reach, *slow_max), or 0. */
+static int peak_possible(const rw_engine *e, int which, const rw_rates *r, const double xa[RW_NX],
+                         const double xb[RW_NX], double L, double *reach, double *slow_max)
+{
+    const double amp[RW_NX] = {r->dq_fast[0], r->dq_fast[1], 0, 0};
+    const double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
+    const double peak = which == 0 ? e->peak_s1 : e->peak_s2;
+    const double sa = s_of(e, which, xa), ra = s_of(e, which, va), sb = s_of(e, which, xb), rb = s_of(e, which, vb);
+    double lo, hi;
+    *reach = fabs(s_of(e, which, amp));
+    hermite_range_bound(sa, ra, sb, rb, L, &lo, &hi);
+    if (rw_max2(-lo, hi) + *reach < peak) return 0;
+    hermite_range(sa, ra, sb, rb, L, &lo, &hi);
+    *slow_max = rw_max2(-lo, hi);
+    return *slow_max + *reach >= peak;
+}
+
 /* The indicators (a bit each) that the band test does not clear over the substep [0, L] of the
  * span, and RW_PEAKS_SUSPECT when a new peak is possible under a band that is not negligible: 0
  * when the substep is quiet. Then *peaks_full says whether a new peak is possible there: the band
  * is then negligible (below 1e-9 of the peak) and the peaks are taken on the full motion at the
- * substep's resolution. b_out: the slow part's end point. */
+ * substep's resolution. ends: the slow part's ends. */
 static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L,
-                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_point *b_out)
+                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_slow_ends *ends)
 {
-    rw_point a, b;
+    const unsigned collapse = 1u << RW_Z_COLLAPSE;
+    const rw_point *a = &ends->a, *b = &ends->b;
     double band[RW_NZ], lo, hi;
-    unsigned suspects = 0;
-    int k, w;
+    unsigned suspects;
+    int k, w, stands;
     *peaks_full = 0;
-    if (e->slow_carry_valid && e->slow_carry_t == sp->t0 && memcmp(e->slow_carry_x0, sp->x0, sizeof sp->x0) == 0)
-        a = e->slow_carry; /* the slow end of the quiet substep before (equal to rounding) */
-    else
-        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &a);
-    eval_slow_point(e, m, sp, L, C, r->fast, &b);
-    *b_out = b;
-    band_of(e, m, sp, &a, r, band);
-    for (k = 0; k < RW_NZ; k++) {
-        if (k == RW_Z_COLLAPSE) {
-            if (collapse_cannot_vanish(e, sp, &a, &b, r, L)) continue;
-            band_by_evaluation(e, m, sp, &a, r, 1u << RW_Z_COLLAPSE, band);
-        }
-        hermite_range_bound(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
-        if (indicator_clear(e->b[k], lo, hi, band[k])) continue;
-        hermite_range(a.z[k], a.dz[k], b.z[k], b.dz[k], L, &lo, &hi);
-        if (!indicator_clear(e->b[k], lo, hi, band[k])) suspects |= 1u << k;
+    if (e->slow_carry_valid && e->slow_carry_t == sp->t0 && memcmp(e->slow_carry_x0, sp->x0, sizeof sp->x0) == 0) {
+        ends->a = e->slow_carry; /* the slow end of the quiet substep before (equal to rounding) */
+        memcpy(ends->ddq_a, e->slow_carry_ddq, sizeof ends->ddq_a);
+    } else {
+        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &ends->a, ends->ddq_a);
+    }
+    eval_slow_point(e, m, sp, L, C, r->fast, &ends->b, ends->ddq_b);
+    band_of(e, m, sp, a, r, band);
+    stands = collapse_cannot_vanish(e, sp, a, b, r, L);
+    if (stands) band[RW_Z_COLLAPSE] = 0.0;
+    else band_by_evaluation(e, m, sp, a, r, collapse, band);
+    /* the quick test, then the exact range of the slow part's interpolant for what it leaves */
+    suspects = clearance_suspects(e, a->z, a->dz, b->z, b->dz, band, L) & ~(stands ? collapse : 0u);
+    for (k = 0; suspects >> k; k++) {
+        if (!((suspects >> k) & 1u)) continue;
+        hermite_range(a->z[k], a->dz[k], b->z[k], b->dz[k], L, &lo, &hi);
+        if (indicator_clear(e->b[k], lo, hi, band[k])) suspects &= ~(1u << k);
     }
     for (w = 0; w < 2; w++) {
-        const double amp[RW_NX] = {r->dq_fast[0], r->dq_fast[1], 0, 0};
-        const double va[RW_NX] = {a.x[2], a.x[3], 0, 0}, vb[RW_NX] = {b.x[2], b.x[3], 0, 0};
-        const double sb = 2.0 * fabs(s_of(e, w, amp));
-        const double peak = w == 0 ? e->peak_s1 : e->peak_s2;
-        const double sa_ = s_of(e, w, a.x), ra = s_of(e, w, va), sb_ = s_of(e, w, b.x), rb = s_of(e, w, vb);
-        hermite_range_bound(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
-        hermite_range(sa_, ra, sb_, rb, L, &lo, &hi);
-        if (rw_max2(fabs(lo), fabs(hi)) + sb < peak) continue;
-        if (sb > 1e-9 * rw_max2(fabs(lo), fabs(hi))) suspects |= RW_PEAKS_SUSPECT;
+        double reach, slow_max;
+        if (!peak_possible(e, w, r, a->x, b->x, L, &reach, &slow_max)) continue;
+        if (reach > 1e-9 * slow_max) suspects |= RW_PEAKS_SUSPECT;
         else *peaks_full = 1;
     }
     return suspects;
@@ -1177,16 +1208,16 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
  * motion. Returns -1 (undecided: the caller resolves at the fast rate), 0 (no crossing) or 1 (a
  * crossing at *s_root, with the state there in x_root). */
 static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double L,
-                         const double (*C)[4], const rw_rates *r, double *s_root, double x_root[RW_NX])
+                         const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX], double *s_root,
+                         double x_root[RW_NX])
 {
     const rw_indicator_line *line = &e->lines[k];
     const double a0 = line->a[0], a1 = line->a[1];
     const double w_band = fabs(a0 * r->dq_fast[0] + a1 * r->dq_fast[1]);
-    double xa[RW_NX], xda[RW_NX], xb[RW_NX], xdb[RW_NX], x_end[RW_NX], lo, hi, slope, z0, z_end, guess;
+    const double *xa = ends->a.x, *xb = ends->b.x;
+    double lo, hi, slope, z0, z_end, guess;
     int valid;
     if (!((e->line_mask >> k) & 1u)) return -1;
-    span_eval_part(sp, 0.0, NULL, r->fast, xa, xda);
-    span_eval_part(sp, L, C, r->fast, xb, xdb);
     slope = line->t;
     if (line->s != 0.0) { /* a breakpoint: one side of w = 0 throughout */
         hermite_range(a0 * xa[0] + a1 * xa[1], a0 * xa[2] + a1 * xa[3], a0 * xb[0] + a1 * xb[1], a0 * xb[2] + a1 * xb[3],
@@ -1195,18 +1226,16 @@ static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp
         slope += lo > w_band ? line->s : -line->s;
     }
     if (slope == 0.0) return -1;
-    hermite_range(a0 * xa[2] + a1 * xa[3], a0 * xda[2] + a1 * xda[3], a0 * xb[2] + a1 * xb[3], a0 * xdb[2] + a1 * xdb[3], L,
-                  &lo, &hi);
+    hermite_range(a0 * xa[2] + a1 * xa[3], a0 * ends->ddq_a[0] + a1 * ends->ddq_a[1], a0 * xb[2] + a1 * xb[3],
+                  a0 * ends->ddq_b[0] + a1 * ends->ddq_b[1], L, &lo, &hi);
     if (!(lo > r->fast_rate * w_band || hi < -r->fast_rate * w_band)) return -1; /* not monotone */
     z0 = rw_line_value(line, sp->x0, NULL, NULL);
     if ((z0 > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
-    span_eval(sp, L, C, x_end, NULL);
     z_end = rw_line_value(line, x_end, NULL, NULL);
     if ((z_end > 0.0) == e->b[k]) return 0;
     { /* the first guess: the slow part's crossing, within the band's width over the slow rate of the full one */
-        double dza, dzb;
-        const double za = rw_line_value(line, xa, xa + 2, &dza), zb = rw_line_value(line, xb, xb + 2, &dzb);
-        guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, dza, zb, dzb, L) : NAN;
+        const double za = ends->a.z[k], zb = ends->b.z[k];
+        guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, ends->a.dz[k], zb, ends->b.dz[k], L) : NAN;
     }
     *s_root = refine_root(e, m, sp, k, e->b[k], 0.0, z0, L, z_end, guess, x_root, &valid);
     if (!valid) span_eval(sp, *s_root, NULL, x_root, NULL);
@@ -1216,8 +1245,8 @@ static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp
 /* The suspects of a substep settled by line_crossing when every one is a line: 1 with the first
  * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. */
 static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, unsigned suspects,
-                                  double L, const double (*C)[4], const rw_rates *r, double *s_event, int *k_event,
-                                  double x_event[RW_NX])
+                                  double L, const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX],
+                                  double *s_event, int *k_event, double x_event[RW_NX])
 {
     int k, found = 0;
     if (suspects & ~e->line_mask) return -1; /* a new peak, the collapse or the toppling indicator */
@@ -1225,7 +1254,7 @@ static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw
         double s_k, x_k[RW_NX];
         int rc;
         if (!((suspects >> k) & 1u)) continue;
-        rc = line_crossing(e, m, sp, k, L, C, r, &s_k, x_k);
+        rc = line_crossing(e, m, sp, k, L, r, ends, x_end, &s_k, x_k);
         if (rc < 0) return -1;
         if (rc == 1 && (!found || s_k < *s_event)) {
             found = 1;
@@ -1237,20 +1266,62 @@ static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw
     return found;
 }
 
-/* The substep [0, L] of the span taken whole (quiet, or quiet but for indicators without a
- * crossing): x, *t at its end, the slow end point b carried to the next substep. */
-static void accept_substep(rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double (*C)[4],
-                           int peaks_full, rw_point *b, double t_to, double x[RW_NX], double *t)
+/* |s1|, |s2| at the state x as a share of their peaks so far, the larger */
+static double peak_share(const rw_engine *e, const double x[RW_NX])
 {
-    double xa[RW_NX];
-    memcpy(xa, x, sizeof xa);
+    return rw_max2(fabs(s_of(e, 0, x)) / rw_max2(e->peak_s1, DBL_MIN), fabs(s_of(e, 1, x)) / rw_max2(e->peak_s2, DBL_MIN));
+}
+
+/* The peaks over [u, v] of the span's full motion where the band matters for them
+ * (RW_PEAKS_SUSPECT) and no indicator changes sign: where the slow part plus the band can pass a
+ * peak so far (peak_possible), [u, v] is halved until a half turns the fast mode by at most 8 rad,
+ * and such a piece takes peaks_on on the full motion at the fast rate. Only the neighbourhood of a
+ * new peak is resolved, and without the indicators. xu, xv: the slow part's states at u and v. */
+static void peaks_under_band(rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_rates *r, double u,
+                             const double xu[RW_NX], double v, const double xv[RW_NX], int depth)
+{
+    double reach, slow_max, len = v - u, xa[RW_NX], xb[RW_NX];
+    int n, j;
+    if (!peak_possible(e, 0, r, xu, xv, len, &reach, &slow_max) && !peak_possible(e, 1, r, xu, xv, len, &reach, &slow_max))
+        return;
+    n = substeps_for(r->fast_rate, &len);
+    if (n > 8 && depth < 40) {
+        const double mid = u + 0.5 * (v - u);
+        double xm[RW_NX];
+        span_eval_part(sp, mid, NULL, r->fast, xm, NULL);
+        /* the half that reaches higher first: the peak it sets mostly rules the other half out (a
+         * growing motion is then searched in log2 of its fast periods, not in all of them) */
+        if (peak_share(e, xv) > peak_share(e, xu)) {
+            peaks_under_band(e, m, sp, r, mid, xm, v, xv, depth + 1);
+            peaks_under_band(e, m, sp, r, u, xu, mid, xm, depth + 1);
+        } else {
+            peaks_under_band(e, m, sp, r, u, xu, mid, xm, depth + 1);
+            peaks_under_band(e, m, sp, r, mid, xm, v, xv, depth + 1);
+        }
+        return;
+    }
+    span_eval(sp, u, NULL, xa, NULL);
+    for (j = 1; j <= n; j++) {
+        const double sa = u + (v - u) * (j - 1) / n, sb = j == n ? v : u + (v - u) * j / n;
+        span_eval(sp, sb, NULL, xb, NULL);
+        peaks_on(e, m, sp, xa, sa, xb, sb);
+        memcpy(xa, xb, sizeof xa);
+    }
+}
+
+/* The substep [0, L] of the span taken whole (quiet, or quiet but for indicators without a
+ * crossing): x, *t at its end x_end, the slow end point carried to the next substep. */
+static void accept_substep(rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double x_end[RW_NX],
+                           int peaks_full, const rw_slow_ends *ends, double t_to, double x[RW_NX], double *t)
+{
     e->steps++;
-    span_eval(sp, L, C, x, NULL);
-    if (peaks_full) peaks_on(e, m, sp, xa, 0.0, x, L);
+    if (peaks_full) peaks_on(e, m, sp, x, 0.0, x_end, L);
+    memcpy(x, x_end, sizeof(double) * RW_NX);
     outputs_on(e, sp, L);
     *t = t_to;
-    b->s = 0.0; /* the next substep starts here */
-    e->slow_carry = *b;
+    e->slow_carry = ends->b;
+    e->slow_carry.s = 0.0; /* the next substep starts here */
+    memcpy(e->slow_carry_ddq, ends->ddq_b, sizeof e->slow_carry_ddq);
     e->slow_carry_t = t_to;
     memcpy(e->slow_carry_x0, x, sizeof e->slow_carry_x0);
     e->slow_carry_valid = 1;
@@ -1268,21 +1339,31 @@ static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_en
     const double L = t_to - sp->t0;
     int peaks_full, nf, rc, k_ev = 0;
     double len = L, s_ev = 0.0, x_ev[RW_NX]; /* s_ev, k_ev, x_ev: set by crossings_through_band when it finds one */
-    rw_point b;
-    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &b);
+    double x_end[RW_NX];
+    rw_slow_ends ends;
+    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &ends);
+    span_eval(sp, L, C, x_end, NULL);
     if (suspects == 0) {
-        accept_substep(e, m, sp, L, C, peaks_full, &b, t_to, x, t);
+        accept_substep(e, m, sp, L, x_end, peaks_full, &ends, t_to, x, t);
         return 0;
     }
     e->slow_carry_valid = 0;
-    rc = crossings_through_band(e, m, sp, suspects, L, C, r, &s_ev, &k_ev, x_ev);
+    rc = suspects & ~RW_PEAKS_SUSPECT
+             ? crossings_through_band(e, m, sp, suspects & ~RW_PEAKS_SUSPECT, L, r, &ends, x_end, &s_ev, &k_ev, x_ev)
+             : 0;
     if (rc == 0) {
-        accept_substep(e, m, sp, L, C, peaks_full, &b, t_to, x, t);
+        if (suspects & RW_PEAKS_SUSPECT) peaks_under_band(e, m, sp, r, 0.0, ends.a.x, L, ends.b.x, 0);
+        accept_substep(e, m, sp, L, x_end, peaks_full, &ends, t_to, x, t);
         return 0;
     }
     if (rc == 1) { /* the event, as resolve() applies it */
         const rw_input ie = span_input(sp, s_ev);
         e->steps++;
+        if (suspects & RW_PEAKS_SUSPECT) {
+            double x_slow[RW_NX];
+            span_eval_part(sp, s_ev, NULL, r->fast, x_slow, NULL);
+            peaks_under_band(e, m, sp, r, 0.0, ends.a.x, s_ev, x_slow, 0);
+        }
         if (peaks_full) peaks_on(e, m, sp, x, 0.0, x_ev, s_ev);
         outputs_on(e, sp, s_ev);
         memcpy(x, x_ev, sizeof x_ev);

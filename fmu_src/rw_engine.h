@@ -165,10 +165,11 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     rw_engine_point pending;
     /* the same as carry for the slow part of a span with fast modes (rw_engine.c "fast modes"): the
      * slow point at the end of the last quiet substep, which ended at slow_carry_t in the state
-     * slow_carry_x0 */
+     * slow_carry_x0, with the slow rotations' accelerations there */
     int slow_carry_valid;
     double slow_carry_t, slow_carry_x0[RW_NX];
     rw_engine_point slow_carry;
+    double slow_carry_ddq[2];
     /* run bookkeeping */
     int b[RW_NZ];               /* indicator states z > 0 */
     double b_sign[RW_NZ];       /* the same as +-1 */
