@@ -221,6 +221,32 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
 /* ---- indicators along a span ---------------------------------------------------------------- */
 typedef rw_engine_point rw_point; /* rw_engine.h */
 
+/* The indicators of the closed rigid hinges among `mask` at the state x (rates along xd, if not
+ * NULL, with the input at the span's rate) from the region's affine form of their moments
+ * (rw_closed_force_form): 1 - |f|/cap + eps_f, as rw_event_indicators computes it. Returns those
+ * within RW_AFFINE_Q_CLEARANCE of zero, which the physics itself takes (the signs decided near a
+ * root must come from one function, as for the collapse form). */
+static unsigned closed_hinge_values(const rw_engine *e, const rw_span *sp, const rw_input *in, const double x[RW_NX],
+                                    const double *xd, unsigned mask, double *z, double *dz)
+{
+    const rw_closed_form *F = &e->closed_form;
+    unsigned near_zero = 0;
+    int j;
+    for (j = 0; j < 2; j++) {
+        const int k = j == 0 ? RW_Z_BASE : RW_Z_MID;
+        double f;
+        if (!((mask >> k) & 1u)) continue;
+        f = F->c[j] + F->G[j][0] * x[0] + F->G[j][1] * x[1] + F->g_ag[j] * in->ag + F->g_u[j] * in->u_top;
+        z[k] = 1.0 - fabs(f) * F->inv_cap[j] + RW_EPS_F;
+        if (fabs(z[k]) < RW_AFFINE_Q_CLEARANCE) near_zero |= 1u << k;
+        else if (xd) {
+            const double df = F->G[j][0] * xd[0] + F->G[j][1] * xd[1] + F->g_ag[j] * sp->ag1 + F->g_u[j] * sp->u1;
+            dz[k] = -((f > 0.0) - (f < 0.0)) * df * F->inv_cap[j];
+        }
+    }
+    return near_zero;
+}
+
 /* The model's indicators of `mask` at the state x of the span's motion and, if xd is not NULL,
  * their rates dz along it (x moving at xd, the input at the span's rate). The indicators that are
  * lines of the rotations (rw_indicator_lines, taken once per region) are evaluated here; the
@@ -249,6 +275,8 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
         z[RW_Z_TOPPLE] = rw_topple_value(&e->D, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
         rest &= ~topple;
     }
+    if (rest & e->closed_mask)
+        rest = (rest & ~e->closed_mask) | closed_hinge_values(e, sp, in, x, xd, rest & e->closed_mask, z, dz);
     if ((rest & collapse) && sp->aq.valid && e->collapse_radius == 0.0) {
         /* a region that cannot collapse (collapse_form_of_region): its indicator, positive
          * everywhere in it, as its clipped value, at no cost */
@@ -1466,6 +1494,8 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         R = rw_engine_region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
         if (!R) return NULL;
         region_lines(e, m);
+        e->closed_mask = e->rigid ? rw_closed_hinge_mask(&e->P, m) : 0u;
+        if (e->closed_mask) rw_closed_force_form(&e->P, &e->D, m, &e->closed_form);
         if (e->region_aq.valid)
             collapse_form_of_region(e);
         e->region = (int)(R - e->cache);

@@ -150,6 +150,8 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     unsigned line_mask;
     rw_line_arrays line_arrays;
     rw_collapse_form collapse_form; /* the collapse indicator of the region (if region_aq.valid) */
+    unsigned closed_mask;           /* the indicators of closed rigid hinges (rw_closed_hinge_mask) */
+    rw_closed_form closed_form;     /* their moments, affine in the rotations and inputs */
     double collapse_radius;         /* |q| beyond which it cannot vanish (rw_engine.c collapse_cannot_vanish) */
     /* the end point of the last resolved span (time, state, indicators and their rates): the next
      * input segment starts there, and without an event in between only the closed hinges'

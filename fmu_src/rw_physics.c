@@ -219,6 +219,27 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
     }
 }
 
+/* rw_closed_forces is affine in the rotations and the inputs under one mode: its coefficients are
+ * its differences over unit steps of each, so that the engine's values are this function's */
+void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_closed_form *f)
+{
+    const double x0[RW_NX] = {0.0, 0.0, 0.0, 0.0}, x1[RW_NX] = {1.0, 0.0, 0.0, 0.0}, x2[RW_NX] = {0.0, 1.0, 0.0, 0.0};
+    const rw_input none = {0.0, 0.0}, ag = {1.0, 0.0}, u = {0.0, 1.0};
+    double cb, cm, b, mid;
+    rw_closed_forces(p, d, m, &none, x0, &f->c[0], &f->c[1]);
+    rw_closed_forces(p, d, m, &none, x1, &b, &mid);
+    f->G[0][0] = b - f->c[0], f->G[1][0] = mid - f->c[1];
+    rw_closed_forces(p, d, m, &none, x2, &b, &mid);
+    f->G[0][1] = b - f->c[0], f->G[1][1] = mid - f->c[1];
+    rw_closed_forces(p, d, m, &ag, x0, &b, &mid);
+    f->g_ag[0] = b - f->c[0], f->g_ag[1] = mid - f->c[1];
+    rw_closed_forces(p, d, m, &u, x0, &b, &mid);
+    f->g_u[0] = b - f->c[0], f->g_u[1] = mid - f->c[1];
+    rw_caps(p, d, &cb, &cm);
+    f->inv_cap[0] = 1.0 / cb;
+    f->inv_cap[1] = 1.0 / cm;
+}
+
 /* capacities matching rw_closed_forces */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cb, double *cm)
 {

@@ -180,6 +180,12 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
 /* The indicators of the rigid hinges that are closed under m (bit k = indicator k): not lines but
  * 1 - |f|/cap + eps_f, with f affine in the inputs and one rotation */
 unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m);
+/* The moments rw_closed_forces gives under m, (f_b, f_m) = c + G q + g_ag ag + g_u u_top, with the
+ * inverses of the capacities, as data for the exact engine (rw_closed_force_form) */
+typedef struct {
+    double c[2], G[2][2], g_ag[2], g_u[2], inv_cap[2];
+} rw_closed_form;
+void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_closed_form *f);
 /* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,

@@ -14,6 +14,7 @@
 #define rw_caps FMU_SYMBOL(rw_caps)
 #define rw_closed_forces FMU_SYMBOL(rw_closed_forces)
 #define rw_closed_hinge_mask FMU_SYMBOL(rw_closed_hinge_mask)
+#define rw_closed_force_form FMU_SYMBOL(rw_closed_force_form)
 #define rw_collapse_G FMU_SYMBOL(rw_collapse_G)
 #define rw_collapse_G_of FMU_SYMBOL(rw_collapse_G_of)
 #define rw_collapse_reason FMU_SYMBOL(rw_collapse_reason)

@@ -439,6 +439,46 @@ static void test_collapse_form(void)
     CHECK(compared > 500, "collapse forms compared: %d", compared);
 }
 
+/* The closed rigid hinges' moments as data (rw_closed_form) equal rw_closed_forces in every closed
+ * state, at any rotations and inputs */
+static void test_closed_force_form(void)
+{
+    unsigned long rng = 4242;
+    int state, trial, compared = 0;
+    for (state = 1; state < 4; state++)
+        for (trial = 0; trial < 200; trial++) {
+            rw_params p = paper_params();
+            rw_derived d;
+            rw_mode m;
+            rw_closed_form F;
+            double x[RW_NX], fb, fm, want[2];
+            rw_input in;
+            int j;
+            p.hingeLaw = RW_RIGID;
+            p.Kd = trial % 2 ? 5e3 : 5e6;
+            rw_derive(&p, &d);
+            memset(&m, 0, sizeof m);
+            m.closed_b = state & 1, m.closed_m = (state >> 1) & 1;
+            m.side_b = trial % 3 ? 1 : -1, m.side_m = trial % 5 ? -1 : 1;
+            rw_closed_force_form(&p, &d, &m, &F);
+            x[0] = uniform(&rng, -0.5, 0.5) * d.q_topple;
+            x[1] = uniform(&rng, -0.5, 0.5) * d.q_topple;
+            x[2] = uniform(&rng, -1.0, 1.0), x[3] = uniform(&rng, -1.0, 1.0);
+            in.ag = uniform(&rng, -10.0, 10.0), in.u_top = uniform(&rng, -0.05, 0.05);
+            rw_closed_forces(&p, &d, &m, &in, x, &fb, &fm);
+            want[0] = fb, want[1] = fm;
+            for (j = 0; j < 2; j++) {
+                const double got = F.c[j] + F.G[j][0] * x[0] + F.G[j][1] * x[1] + F.g_ag[j] * in.ag + F.g_u[j] * in.u_top;
+                const double scale = fabs(F.c[j]) + fabs(F.g_ag[j] * in.ag) + fabs(F.g_u[j] * in.u_top) +
+                                     fabs(F.G[j][0] * x[0]) + fabs(F.G[j][1] * x[1]) + 1e-300;
+                CHECK(fabs(got - want[j]) <= 1e-13 * scale, "closed state %d, moment %d: form %.17g, forces %.17g", state, j,
+                      got, want[j]);
+                compared++;
+            }
+        }
+    CHECK(compared == 1200, "closed forms compared: %d", compared);
+}
+
 static void test_rigid_open_close(void)
 {
     rw_params p = paper_params();
@@ -640,6 +680,7 @@ int main(int argc, char **argv)
     test_indicators();
     test_indicator_rates();
     test_collapse_form();
+    test_closed_force_form();
     test_rigid_open_close();
     test_collapse();
     test_energy();
