@@ -222,12 +222,12 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
 typedef rw_engine_point rw_point; /* rw_engine.h */
 
 /* The indicators of the closed rigid hinges among `mask` at the state x (rates along xd, if not
- * NULL, with the input at the span's rate) from the region's affine form of their moments
+ * NULL, with the input at the rate in_rate) from the region's affine form of their moments
  * (rw_closed_force_form): 1 - |f|/cap + eps_f, as rw_event_indicators computes it. Returns those
  * within RW_AFFINE_Q_CLEARANCE of zero, which the physics itself takes (the signs decided near a
  * root must come from one function, as for the collapse form). */
-static unsigned closed_hinge_values(const rw_engine *e, const rw_span *sp, const rw_input *in, const double x[RW_NX],
-                                    const double *xd, unsigned mask, double *z, double *dz)
+static unsigned closed_hinge_values(const rw_engine *e, const rw_input *in, const rw_input *in_rate,
+                                    const double x[RW_NX], const double *xd, unsigned mask, double *z, double *dz)
 {
     const rw_closed_form *F = &e->closed_form;
     unsigned near_zero = 0;
@@ -240,11 +240,21 @@ static unsigned closed_hinge_values(const rw_engine *e, const rw_span *sp, const
         z[k] = 1.0 - fabs(f) * F->inv_cap[j] + RW_EPS_F;
         if (fabs(z[k]) < RW_AFFINE_Q_CLEARANCE) near_zero |= 1u << k;
         else if (xd) {
-            const double df = F->G[j][0] * xd[0] + F->G[j][1] * xd[1] + F->g_ag[j] * sp->ag1 + F->g_u[j] * sp->u1;
+            const double df =
+                F->G[j][0] * xd[0] + F->G[j][1] * xd[1] + F->g_ag[j] * in_rate->ag + F->g_u[j] * in_rate->u_top;
             dz[k] = -((f > 0.0) - (f < 0.0)) * df * F->inv_cap[j];
         }
     }
     return near_zero;
+}
+
+/* Does the region's collapse form hold at x? Always for a law of q alone; for the rigid law while
+ * each open hinge's rotation is on its side (or zero), as the law's collapse test takes the sides
+ * from the rotations: in the moment before an impact or a switch, where a rotation has just passed
+ * zero, the law's G keeps |rotation| terms that the region's constant moments turn negative. */
+static int collapse_form_holds(const rw_engine *e, const rw_mode *m, const double x[RW_NX])
+{
+    return e->law->q_only || (m->side_b * x[0] >= 0.0 && m->side_m * (x[1] - x[0]) >= 0.0);
 }
 
 /* The model's indicators of `mask` at the state x of the span's motion and, if xd is not NULL,
@@ -275,16 +285,19 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
         z[RW_Z_TOPPLE] = rw_topple_value(&e->D, x, xd, xd ? &dz[RW_Z_TOPPLE] : NULL);
         rest &= ~topple;
     }
-    if (rest & e->closed_mask)
-        rest = (rest & ~e->closed_mask) | closed_hinge_values(e, sp, in, x, xd, rest & e->closed_mask, z, dz);
-    if ((rest & collapse) && sp->aq.valid && e->collapse_radius == 0.0) {
+    if (rest & e->closed_mask) {
+        const rw_input rate = {sp->ag1, sp->u1};
+        rest = (rest & ~e->closed_mask) | closed_hinge_values(e, in, &rate, x, xd, rest & e->closed_mask, z, dz);
+    }
+    const int form = sp->aq.valid && collapse_form_holds(e, m, x);
+    if ((rest & collapse) && form && e->collapse_radius == 0.0) {
         /* a region that cannot collapse (collapse_form_of_region): its indicator, positive
          * everywhere in it, as its clipped value, at no cost */
         z[RW_Z_COLLAPSE] = RW_COLLAPSE_ZMAX;
         if (xd) dz[RW_Z_COLLAPSE] = 0.0;
         rest &= ~collapse;
     }
-    if ((rest & collapse) && sp->aq.valid) {
+    if ((rest & collapse) && form) {
         z[RW_Z_COLLAPSE] = rw_collapse_form_value(&e->collapse_form, x, xd, xd ? &dz[RW_Z_COLLAPSE] : NULL);
         /* Near its root the collapse indicator is taken from the law itself: the region's form
          * differs from it by rounding, and every sign decided near zero (the root, the tracked
@@ -853,20 +866,16 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
 static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_mode *m, const rw_span *sp,
                                                   rw_point *buf)
 {
-    const unsigned closed = rw_closed_hinge_mask(&e->P, m);
-    double x[RW_NX], xd[RW_NX];
-    rw_input in;
-    if (!closed) return &e->carry;
+    const double xd[RW_NX] = {e->carry.x[2], e->carry.x[3], 0.0, 0.0}; /* their rates need the rotations' alone */
+    const rw_input in = span_input(sp, 0.0);
     *buf = e->carry;
-    in = span_input(sp, 0.0);
-    span_eval(sp, 0.0, NULL, x, xd);
-    region_indicators(e, m, sp, &in, buf->x, xd, closed, buf->z, buf->dz);
+    region_indicators(e, m, sp, &in, buf->x, xd, e->closed_mask, buf->z, buf->dz);
     return buf;
 }
 
 static const rw_point *carried_start(const rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
 {
-    return e->rigid ? carried_with_closed_hinges(e, m, sp, buf) : &e->carry;
+    return e->closed_mask ? carried_with_closed_hinges(e, m, sp, buf) : &e->carry;
 }
 
 /* The start point of a span: the end point of the span before, where that holds (carried_start),
@@ -894,7 +903,7 @@ static void carry_point(rw_engine *e, const rw_point *pb, double t)
 static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k_event, const double x[RW_NX])
 {
     int k;
-    if (!sp->aq.valid || (k_event != RW_Z_BASE && k_event != RW_Z_MID)) return 0;
+    if (!e->law->q_only || !sp->aq.valid || (k_event != RW_Z_BASE && k_event != RW_Z_MID)) return 0;
     for (k = RW_Z_BREAK; k < RW_Z_BREAK + RW_NBREAK; k++)
         if (fabs(rw_line_value(&e->lines[k], x, NULL, NULL)) < 1e-9 * e->D.q_topple) return 0;
     return 1;
@@ -941,7 +950,9 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
     if (!state_kept && !pc->restart) return 0;
     region_lines(e, m);
-    if (e->P.support != RW_FLEXIBLE_TOP || !sp->aq.valid || (RW_Z_ALL & ~e->line_mask & ~from_rotations)) return 0;
+    if (e->P.support != RW_FLEXIBLE_TOP || !e->law->q_only || !sp->aq.valid ||
+        (RW_Z_ALL & ~e->line_mask & ~from_rotations))
+        return 0;
     e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
     if (state_kept) {
         point_from_state(e, m, sp, x, s_ev, at_event);
@@ -1552,6 +1563,32 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
     return 0;
 }
 
+/* ---- a segment at rest ---------------------------------------------------------------------------
+ * With both rigid hinges closed (or the simply supported wall's closed) the wall stands still: only
+ * the closed hinges' indicators vary, through the input. 1 - |f|/cap + eps_f with f affine in the
+ * input, which is linear over a segment, is concave there: when it holds (> 0) at both ends it holds
+ * throughout. Such a segment needs its end values alone. */
+static int at_rest(const rw_engine *e, const rw_mode *m)
+{
+    return e->rigid && m->closed_b && (m->closed_m || e->P.support != RW_FLEXIBLE_TOP);
+}
+
+/* 1 when the segment to t_end holds every closed hinge (x and the carried point stay, with the
+ * closed hinges' values at the end; their rates are taken again at the next segment's start,
+ * carried_start), else 0: an end near or past zero, for the general test */
+static int rest_holds(rw_engine *e, double t_end, const rw_linear_input *in, double t_in)
+{
+    const rw_input end = {in->ag + in->ag_slope * (t_end - t_in), in->u_top + in->u_slope * (t_end - t_in)};
+    double z[RW_NZ], dz[RW_NZ];
+    int k;
+    if (closed_hinge_values(e, &end, NULL, e->carry.x, NULL, e->closed_mask, z, dz)) return 0;
+    for (k = 0; k < RW_NZ; k++)
+        if (((e->closed_mask >> k) & 1u) && !(e->b[k] && e->carry.z[k] > 0.0 && z[k] > 0.0)) return 0;
+    for (k = 0; k < RW_NZ; k++)
+        if ((e->closed_mask >> k) & 1u) e->carry.z[k] = z[k]; /* the next segment's start */
+    return 1;
+}
+
 /* ---- a quiet segment: the common case without the general machinery --------------------------
  * Most input segments of a run hold no event: the region, its lines and the end point of the
  * segment before (rw_engine.carry) are known, one substep covers the segment (every mode turns by
@@ -1572,6 +1609,11 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], dou
     R = &e->cache[e->region];
     if (!one_substep_covers(e, R, len)) return 0;
     if (memcmp(e->carry.x, x, sizeof e->carry.x) != 0) return 0;
+    if (at_rest(e, m) && rest_holds(e, t_end, in, t_in)) {
+        e->steps++;
+        *t = e->carry_t = t_end;
+        return 1;
+    }
     sp.aq = e->region_aq;
     span_start(&sp, R, e->region_g0, *t, x, in, t_in);
     a = carried_start(e, m, &sp, &buf);

@@ -110,7 +110,8 @@ typedef struct {
     double fm[2][2]; /* modal forcing of a generalised force vector (2DOF open hinges) */
 } rw_modes2;
 
-/* The hinge moments of a region as Q = c + J q, where the law allows it (rw_hinge_law.q_only) */
+/* The hinge moments of a region as Q = c + J q, where the region fixes them so: a law of q alone
+ * (rw_hinge_law.q_only), or the rigid law (constant for the region's sides) */
 typedef struct {
     int valid;
     double c[2], J[2][2];

@@ -213,15 +213,18 @@ rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_mode *m, const double
     rw_cache_entry *ce;
     aq->valid = 0;
     if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
-    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
     e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
     c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
     c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];
-    if (e->law->q_only) {
+    /* affine in q on the region: a law of q alone, and the rigid law, whose moments are constant for
+     * the region's sides (its collapse test takes the sides from the rotations, which keep the
+     * region's signs until the event that changes them) */
+    if (e->law->q_only || e->rigid) {
         aq->valid = 1;
         memcpy(aq->c, c, sizeof c);
         memcpy(aq->J, J, sizeof J);
     }
+    if (e->rigid && (m->closed_b || m->closed_m)) return region_closed(e, m, g0);
     key[0] = J[0][0]; key[1] = J[0][1]; key[2] = J[1][0]; key[3] = J[1][1];
     ce = cache_find(e, 0, 0, key);
     if (!ce) {
