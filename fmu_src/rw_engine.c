@@ -111,7 +111,7 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
  * state itself, not its image through P Pi: an indicator that set an event's state keeps its sign
  * where the next span begins. fast[i] (fast may be NULL) leaves out the free oscillation of mode i:
  * its exact particular solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
-static void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
+static inline void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
                        double dv[2], double a[2])
 {
     int i;
@@ -289,22 +289,21 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
         const rw_input rate = {sp->ag1, sp->u1};
         rest = (rest & ~e->closed_mask) | closed_hinge_values(e, in, &rate, x, xd, rest & e->closed_mask, z, dz);
     }
-    const int form = sp->aq.valid && collapse_form_holds(e, m, x);
-    if ((rest & collapse) && form && e->collapse_radius == 0.0) {
-        /* a region that cannot collapse (collapse_form_of_region): its indicator, positive
-         * everywhere in it, as its clipped value, at no cost */
-        z[RW_Z_COLLAPSE] = RW_COLLAPSE_ZMAX;
-        if (xd) dz[RW_Z_COLLAPSE] = 0.0;
-        rest &= ~collapse;
-    }
-    if ((rest & collapse) && form) {
-        z[RW_Z_COLLAPSE] = rw_collapse_form_value(&e->collapse_form, x, xd, xd ? &dz[RW_Z_COLLAPSE] : NULL);
-        /* Near its root the collapse indicator is taken from the law itself: the region's form
-         * differs from it by rounding, and every sign decided near zero (the root, the tracked
-         * state set after an event, the collapse test) must come from one function, or an event
-         * repeats at one instant. Away from zero both have the same sign. */
-        if (fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
-            rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, collapse, z);
+    if ((rest & collapse) && sp->aq.valid && collapse_form_holds(e, m, x)) {
+        if (e->collapse_radius == 0.0) {
+            /* a region that cannot collapse (collapse_form_of_region): its indicator, positive
+             * everywhere in it, as its clipped value, at no cost */
+            z[RW_Z_COLLAPSE] = RW_COLLAPSE_ZMAX;
+            if (xd) dz[RW_Z_COLLAPSE] = 0.0;
+        } else {
+            z[RW_Z_COLLAPSE] = rw_collapse_form_value(&e->collapse_form, x, xd, xd ? &dz[RW_Z_COLLAPSE] : NULL);
+            /* Near its root the collapse indicator is taken from the law itself: the region's form
+             * differs from it by rounding, and every sign decided near zero (the root, the tracked
+             * state set after an event, the collapse test) must come from one function, or an event
+             * repeats at one instant. Away from zero both have the same sign. */
+            if (fabs(z[RW_Z_COLLAPSE]) < RW_AFFINE_Q_CLEARANCE)
+                rw_event_indicators_some(&e->P, &e->D, m, in, x, NULL, collapse, z);
+        }
         rest &= ~collapse;
     }
     if (!rest) return;
@@ -316,7 +315,7 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
     }
 }
 
-static void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
+static inline void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
                        rw_point *pt)
 {
     double xd[RW_NX];
@@ -513,14 +512,19 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
  * turns by at most 1 rad, so the interpolant is within a fraction of a percent of the motion).
  * Newton steps on the cubic from the chord's root, kept inside the bracket of the root (else a
  * bisection), until a step is below 1e-3 of the substep: the refinement's Halley step converges from
- * there, so more digits here would be spent twice. The bracket matters where the chord misleads: an
- * indicator that starts just off zero after an event and turns back puts the chord's root next to 0. */
+ * there, so more digits here would be spent twice. The chord misleads where an indicator starts just
+ * off zero after an event and turns back: its root is next to 0, so such a root is sought from the
+ * end's Newton step instead. */
 static double hermite_root(double za, double da, double zb, double db, double L)
 {
     const double ma = L * da, mb = L * db;
     const int a_positive = za > 0.0;
     double u = za / (za - zb), lo = 0.0, hi = 1.0;
     int it;
+    if (za * ma > 0.0) { /* moving away from zero at the start: the root is past a turn, nearer the end */
+        const double from_end = 1.0 - zb / mb;
+        u = from_end > 0.0 && from_end < 1.0 ? from_end : 0.5;
+    }
     for (it = 0; it < 12; it++) {
         const double u2 = u * u, u3 = u2 * u;
         const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
