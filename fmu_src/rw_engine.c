@@ -111,26 +111,30 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
  * state itself, not its image through P Pi: an indicator that set an event's state keeps its sign
  * where the next span begins. fast[i] (fast may be NULL) leaves out the free oscillation of mode i:
  * its exact particular solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
+static inline void mode_motion(const rw_span *sp, int i, double s, const double C[2][4], int slow_part, double *deta,
+                               double *dv, double *a)
+{
+    double c[4];
+    const double lam = sp->R->E.lam[i], eta0 = sp->eta[i], v0 = sp->v[i];
+    const double f0 = sp->f0[i], f1 = sp->f1[i];
+    if (slow_part) {
+        *deta = (f0 + f1 * s) / lam - eta0;
+        *dv = f1 / lam - v0;
+        *a = 0.0;
+        return;
+    }
+    if (C) memcpy(c, C[i], sizeof c);
+    else stumpff(lam * s * s, c);
+    *deta = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
+    *dv = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
+    *a = -lam * (eta0 + *deta) + f0 + f1 * s;
+}
+
 static inline void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
-                       double dv[2], double a[2])
+                              double dv[2], double a[2])
 {
     int i;
-    for (i = 0; i < 2; i++) {
-        double c[4];
-        const double lam = sp->R->E.lam[i], eta0 = sp->eta[i], v0 = sp->v[i];
-        const double f0 = sp->f0[i], f1 = sp->f1[i];
-        if (fast && fast[i]) {
-            deta[i] = (f0 + f1 * s) / lam - eta0;
-            dv[i] = f1 / lam - v0;
-            a[i] = 0.0;
-            continue;
-        }
-        if (C) memcpy(c, C[i], sizeof c);
-        else stumpff(lam * s * s, c);
-        deta[i] = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
-        dv[i] = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
-        a[i] = -lam * (eta0 + deta[i]) + f0 + f1 * s;
-    }
+    for (i = 0; i < 2; i++) mode_motion(sp, i, s, C, fast && fast[i], &deta[i], &dv[i], &a[i]);
 }
 
 static void to_physical(const rw_span *sp, const double deta[2], const double dv[2], double x[RW_NX])
@@ -161,6 +165,24 @@ static void span_eval_part(const rw_span *sp, double s, const double C[2][4], co
 static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
 {
     span_eval_part(sp, s, C, NULL, x, xd);
+}
+
+/* span_eval_part with the fast modes left out (x_slow, xd_slow) and the full state x_full at once:
+ * the other modes' terms are the same in both */
+static void span_eval_slow_and_full(const rw_span *sp, double s, const double C[2][4], const int fast[2],
+                                    double x_slow[RW_NX], double xd_slow[RW_NX], double x_full[RW_NX])
+{
+    double deta[2], dv[2], a[2];
+    int i;
+    span_modal(sp, s, C, fast, deta, dv, a);
+    to_physical(sp, deta, dv, x_slow);
+    xd_slow[0] = x_slow[2];
+    xd_slow[1] = x_slow[3];
+    xd_slow[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
+    xd_slow[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
+    for (i = 0; i < 2; i++)
+        if (fast[i]) mode_motion(sp, i, s, C, 0, &deta[i], &dv[i], &a[i]);
+    to_physical(sp, deta, dv, x_full);
 }
 
 static rw_input span_input(const rw_span *sp, double s)
@@ -1108,12 +1130,13 @@ typedef struct {
 } rw_slow_ends;
 
 static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double (*C)[4],
-                            const int *fast, rw_point *pt, double ddq[2])
+                            const int *fast, rw_point *pt, double ddq[2], double *x_full)
 {
     double xd[RW_NX];
     rw_input in = span_input(sp, s);
     pt->s = s;
-    span_eval_part(sp, s, C, fast, pt->x, xd);
+    if (x_full) span_eval_slow_and_full(sp, s, C, fast, pt->x, xd, x_full);
+    else span_eval_part(sp, s, C, fast, pt->x, xd);
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
     ddq[0] = xd[2];
     ddq[1] = xd[3];
@@ -1203,9 +1226,10 @@ static int peak_possible(const rw_engine *e, int which, const rw_rates *r, const
  * span, and RW_PEAKS_SUSPECT when a new peak is possible under a band that is not negligible: 0
  * when the substep is quiet. Then *peaks_full says whether a new peak is possible there: the band
  * is then negligible (below 1e-9 of the peak) and the peaks are taken on the full motion at the
- * substep's resolution. ends: the slow part's ends. */
+ * substep's resolution. ends: the slow part's ends; x_end: the full state at the end. */
 static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L,
-                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_slow_ends *ends)
+                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_slow_ends *ends,
+                                 double x_end[RW_NX])
 {
     const unsigned collapse = 1u << RW_Z_COLLAPSE;
     const rw_point *a = &ends->a, *b = &ends->b;
@@ -1217,9 +1241,9 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
         ends->a = e->slow_carry; /* the slow end of the quiet substep before (equal to rounding) */
         memcpy(ends->ddq_a, e->slow_carry_ddq, sizeof ends->ddq_a);
     } else {
-        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &ends->a, ends->ddq_a);
+        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &ends->a, ends->ddq_a, NULL);
     }
-    eval_slow_point(e, m, sp, L, C, r->fast, &ends->b, ends->ddq_b);
+    eval_slow_point(e, m, sp, L, C, r->fast, &ends->b, ends->ddq_b, x_end);
     band_of(e, m, sp, a, r, band);
     stands = collapse_cannot_vanish(e, sp, a, b, r, L);
     if (stands) band[RW_Z_COLLAPSE] = 0.0;
@@ -1384,8 +1408,7 @@ static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_en
     double len = L, s_ev = 0.0, x_ev[RW_NX]; /* s_ev, k_ev, x_ev: set by crossings_through_band when it finds one */
     double x_end[RW_NX];
     rw_slow_ends ends;
-    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &ends);
-    span_eval(sp, L, C, x_end, NULL);
+    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &ends, x_end);
     if (suspects == 0) {
         accept_substep(e, m, sp, L, x_end, peaks_full, &ends, t_to, x, t);
         return 0;
