@@ -270,13 +270,14 @@ static unsigned closed_hinge_values(const rw_engine *e, const rw_input *in, cons
     return near_zero;
 }
 
-/* Does the region's collapse form hold at x? Always for a law of q alone; for the rigid law while
- * each open hinge's rotation is on its side (or zero), as the law's collapse test takes the sides
- * from the rotations: in the moment before an impact or a switch, where a rotation has just passed
- * zero, the law's G keeps |rotation| terms that the region's constant moments turn negative. */
+/* Does the region's collapse form hold at x? Always for a law of q alone (the other laws with a
+ * form, rw_engine_regions.c); for the rigid law while each open hinge's rotation is on its side (or
+ * zero), as the law's collapse test takes the sides from the rotations: in the moment before an
+ * impact or a switch, where a rotation has just passed zero, the law's G keeps |rotation| terms
+ * that the region's constant moments turn negative. */
 static int collapse_form_holds(const rw_engine *e, const rw_mode *m, const double x[RW_NX])
 {
-    return e->law->q_only || (m->side_b * x[0] >= 0.0 && m->side_m * (x[1] - x[0]) >= 0.0);
+    return !e->rigid || (m->side_b * x[0] >= 0.0 && m->side_m * (x[1] - x[0]) >= 0.0);
 }
 
 /* The model's indicators of `mask` at the state x of the span's motion and, if xd is not NULL,
@@ -1528,7 +1529,12 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         double dq_sel[2];
         now.ag = in->ag + in->ag_slope * (t - t_in);
         now.u_top = in->u_top + in->u_slope * (t - t_in);
-        selection_rate(e, m, &now, x, dq_sel);
+        if (e->rigid && e->P.support == RW_FLEXIBLE_TOP) { /* its moments depend on the sides alone */
+            dq_sel[0] = x[2];
+            dq_sel[1] = x[3];
+        } else {
+            selection_rate(e, m, &now, x, dq_sel);
+        }
         R = rw_engine_region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
         if (!R) return NULL;
         region_lines(e, m);
