@@ -338,8 +338,8 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
     }
 }
 
-static inline void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double C[2][4],
-                       rw_point *pt)
+static inline void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s,
+                              const double C[2][4], rw_point *pt)
 {
     double xd[RW_NX];
     rw_input in = span_input(sp, s);
