@@ -146,13 +146,10 @@ static void to_physical(const rw_span *sp, const double deta[2], const double dv
     x[3] = sp->x0[3] + (E->P[1][0] * dv[0] + E->P[1][1] * dv[1]);
 }
 
-/* State x and its time derivative xd at t0 + s (span_eval_part: without the fast modes' free
- * oscillation). */
-static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
-                           double xd[RW_NX])
+/* the state x and, if xd is not NULL, its time derivative from the modal motion */
+static inline void modal_to_state(const rw_span *sp, const double deta[2], const double dv[2], const double a[2],
+                                  double x[RW_NX], double *xd)
 {
-    double deta[2], dv[2], a[2];
-    span_modal(sp, s, C, fast, deta, dv, a);
     to_physical(sp, deta, dv, x);
     if (xd) {
         xd[0] = x[2];
@@ -160,6 +157,16 @@ static void span_eval_part(const rw_span *sp, double s, const double C[2][4], co
         xd[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
         xd[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
     }
+}
+
+/* State x and its time derivative xd at t0 + s (span_eval_part: without the fast modes' free
+ * oscillation). */
+static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
+                           double xd[RW_NX])
+{
+    double deta[2], dv[2], a[2];
+    span_modal(sp, s, C, fast, deta, dv, a);
+    modal_to_state(sp, deta, dv, a, x, xd);
 }
 
 static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
@@ -175,11 +182,7 @@ static void span_eval_slow_and_full(const rw_span *sp, double s, const double C[
     double deta[2], dv[2], a[2];
     int i;
     span_modal(sp, s, C, fast, deta, dv, a);
-    to_physical(sp, deta, dv, x_slow);
-    xd_slow[0] = x_slow[2];
-    xd_slow[1] = x_slow[3];
-    xd_slow[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
-    xd_slow[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
+    modal_to_state(sp, deta, dv, a, x_slow, xd_slow);
     for (i = 0; i < 2; i++)
         if (fast[i]) mode_motion(sp, i, s, C, 0, &deta[i], &dv[i], &a[i]);
     to_physical(sp, deta, dv, x_full);
@@ -886,6 +889,19 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
     return rw_max2(e->floor_rate, rw_max2(R->w[0], R->w[1])) * len <= RW_PHASE_PER_SUBSTEP;
 }
 
+/* The values and rates of the indicators of `mask` at the state x of the span's motion at s, for
+ * the indicators that are lines, the toppling indicator, the collapse form and the closed hinges'
+ * form: their rates need the rotations' rates alone (x[2], x[3]), not a propagation to s. */
+static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX],
+                             double s, unsigned mask, rw_point *pt)
+{
+    const double xd[RW_NX] = {x[2], x[3], 0.0, 0.0};
+    const rw_input in = span_input(sp, s);
+    pt->s = s;
+    if (pt->x != x) memcpy(pt->x, x, sizeof pt->x);
+    region_indicators(e, m, sp, &in, pt->x, xd, mask, pt->z, pt->dz);
+}
+
 /* The carried end point (rw_engine.carry) as the start point of the span sp, which starts at its
  * time and state: the closed hinges' indicators are taken again at the span's input (in *buf), since
  * their rates follow the input's; the other indicators depend on the state and the rotations'
@@ -893,10 +909,8 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
 static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_mode *m, const rw_span *sp,
                                                   rw_point *buf)
 {
-    const double xd[RW_NX] = {e->carry.x[2], e->carry.x[3], 0.0, 0.0}; /* their rates need the rotations' alone */
-    const rw_input in = span_input(sp, 0.0);
     *buf = e->carry;
-    region_indicators(e, m, sp, &in, buf->x, xd, e->closed_mask, buf->z, buf->dz);
+    point_from_state(e, m, sp, buf->x, 0.0, e->closed_mask, buf);
     return buf;
 }
 
@@ -938,19 +952,6 @@ static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k
 
 static void region_lines(rw_engine *e, const rw_mode *m);
 
-/* The values and rates of the indicators at the state x of the span's motion at s, for the laws
- * whose indicators are lines, the toppling indicator and the collapse form: their rates need the
- * rotations' rates alone (x[2], x[3]), not a propagation to s. */
-static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX],
-                             double s, rw_point *pt)
-{
-    const double xd[RW_NX] = {x[2], x[3], 0.0, 0.0};
-    const rw_input in = span_input(sp, s);
-    pt->s = s;
-    if (pt->x != x) memcpy(pt->x, x, sizeof pt->x);
-    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
-}
-
 /* What goes on after an event that keeps the region (hinge_event_keeps_region: a hinge's change of
  * side under semiRigidHinge or dohertyHinge), without going back to advance(): the lines and the
  * indicator states change, and
@@ -982,11 +983,11 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
         return 0;
     e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
     if (state_kept) {
-        point_from_state(e, m, sp, x, s_ev, at_event);
-        point_from_state(e, m, sp, pb->x, pb->s, pb);
+        point_from_state(e, m, sp, x, s_ev, RW_Z_ALL, at_event);
+        point_from_state(e, m, sp, pb->x, pb->s, RW_Z_ALL, pb);
     } else {
         span_start(sp, pc->R, pc->g0, sp->t0 + s_ev, x, pc->in, pc->t_in);
-        point_from_state(e, m, sp, x, 0.0, at_event);
+        point_from_state(e, m, sp, x, 0.0, RW_Z_ALL, at_event);
         eval_point(e, m, sp, pc->t_end - sp->t0, NULL, pb);
     }
     track_states(e, at_event->z);
@@ -1538,7 +1539,7 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
         R = rw_engine_region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
         if (!R) return NULL;
         region_lines(e, m);
-        e->closed_mask = e->rigid ? rw_closed_hinge_mask(&e->P, m) : 0u;
+        e->closed_mask = rw_closed_hinge_mask(&e->P, m);
         if (e->closed_mask) rw_closed_force_form(&e->P, &e->D, m, &e->closed_form);
         if (e->region_aq.valid)
             collapse_form_of_region(e);

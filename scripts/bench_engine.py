@@ -35,7 +35,7 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 from rockingwall import engine as rw_engine  # noqa: E402
 from rockingwall import fmu as rw_fmu  # noqa: E402
-from rockingwall.names import HINGE_LAWS, SUPPORTS  # noqa: E402
+from rockingwall.names import HINGE_LAW_NAMES, SUPPORT_NAMES  # noqa: E402
 from rockingwall.records import G_STD, read_at2  # noqa: E402
 from rwref import inputs  # noqa: E402
 
@@ -119,8 +119,7 @@ def fmpy_run(sig, params, t_end, rtol):
     (rockingwall.fmu.simulate: the workaround of fmpy's known problem). Called without fmi_type,
     fmpy's simulate_fmu picks the FMU's Co-Simulation, which would time the exact engine's step."""
     named = {k: v for k, v in params.items() if k not in ("support", "hingeLaw")}
-    named["support"] = next(name for name, code in SUPPORTS.items() if code == params["support"])
-    named["hinge_law"] = next(name for name, code in HINGE_LAWS.items() if code == params["hingeLaw"])
+    named["support"], named["hinge_law"] = SUPPORT_NAMES[params["support"]], HINGE_LAW_NAMES[params["hingeLaw"]]
     start = time.process_time()
     run = rw_fmu.simulate(FMU, t_end, sig.t, sig.a, rtol=rtol, output_interval=0.01, fmi_type="ModelExchange",
                           fmpy_input_fix=True, **named)
