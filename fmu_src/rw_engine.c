@@ -937,14 +937,22 @@ static void carry_point(rw_engine *e, const rw_point *pb, double t)
     e->carry.s = 0.0;
 }
 
+/* Does q alone fix the span's region? Under a law whose hinge moments depend on q alone, with the
+ * region's affine Q. (The rigid law has an affine Q too, but its region also depends on which
+ * hinges are closed.) */
+static int q_fixes_region(const rw_engine *e, const rw_span *sp)
+{
+    return e->law->q_only && sp->aq.valid;
+}
+
 /* After an event of the base or mid-height hinge indicator under a law whose hinge moments depend
- * on q alone (the region's affine Q), the region is the same: the event maps change rates and
+ * on q alone (q_fixes_region), the region is the same: the event maps change rates and
  * modes, never q, and such a law's region is fixed by q, except on a breakpoint itself, where the
  * direction of motion picks it (then it is found again). Only the lines (sides, offsets) change. */
 static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k_event, const double x[RW_NX])
 {
     int k;
-    if (!e->law->q_only || !sp->aq.valid || (k_event != RW_Z_BASE && k_event != RW_Z_MID)) return 0;
+    if (!q_fixes_region(e, sp) || (k_event != RW_Z_BASE && k_event != RW_Z_MID)) return 0;
     for (k = RW_Z_BREAK; k < RW_Z_BREAK + RW_NBREAK; k++)
         if (fabs(rw_line_value(&e->lines[k], x, NULL, NULL)) < 1e-9 * e->D.q_topple) return 0;
     return 1;
@@ -978,7 +986,7 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
     if (!state_kept && !pc->restart) return 0;
     region_lines(e, m);
-    if (e->P.support != RW_FLEXIBLE_TOP || !e->law->q_only || !sp->aq.valid ||
+    if (e->P.support != RW_FLEXIBLE_TOP || !q_fixes_region(e, sp) ||
         (RW_Z_ALL & ~e->line_mask & ~from_rotations))
         return 0;
     e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
@@ -1269,23 +1277,23 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
 /* ---- one crossing through the band ----------------------------------------------------------
  * Near an event the band test fails for the indicator that crosses, and resolving the substep at
  * the fast rate costs many full steps. An indicator that is a line of the rotations, z = c +
- * s|w| + t w with w = a.q, crosses at most once on the full motion where its slow rate outruns the
- * fastest the band can move it: |a.dq_slow| > w_fast |a.dq_fast| over the whole substep (the slow
- * rate's range from its cubic Hermite interpolant, with that interpolant's margin), with a
- * breakpoint (s != 0) kept on one side of its kink w = 0 (the slow w's range clear of the band).
- * Then the full motion's values at the ends decide: no crossing, or one, located on the full
- * motion. Returns -1 (undecided: the caller resolves at the fast rate), 0 (no crossing) or 1 (a
- * crossing at *s_root, with the state there in x_root). */
-static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double L,
-                         const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX], double *s_root,
-                         double x_root[RW_NX])
+ * s|w| + t w with w = a.q, is monotone on the full motion where its slow rate outruns the fastest
+ * the band can move it: |a.dq_slow| > w_fast |a.dq_fast| over the whole substep (the slow rate's
+ * range from its cubic Hermite interpolant, with that interpolant's margin), with a breakpoint
+ * (s != 0) kept on one side of its kink w = 0 (the slow w's range clear of the band). Then it
+ * crosses at most once, and the full motion's values at the ends decide: no crossing, or one.
+ * Returns -1 (undecided: the caller resolves at the fast rate), 0 (no crossing) or 1 (a crossing,
+ * with *guess: the slow part's crossing, within the band's width over the slow rate of the full
+ * one; NaN when the slow part does not cross). */
+static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L, const rw_rates *r,
+                         const rw_slow_ends *ends, const double x_end[RW_NX], double *guess)
 {
     const rw_indicator_line *line = &e->lines[k];
     const double a0 = line->a[0], a1 = line->a[1];
     const double w_band = fabs(a0 * r->dq_fast[0] + a1 * r->dq_fast[1]);
     const double *xa = ends->a.x, *xb = ends->b.x;
-    double lo, hi, slope, z0, z_end, guess;
-    int valid;
+    const double za = ends->a.z[k], zb = ends->b.z[k];
+    double lo, hi, slope;
     if (!((e->line_mask >> k) & 1u)) return -1;
     slope = line->t;
     if (line->s != 0.0) { /* a breakpoint: one side of w = 0 throughout */
@@ -1298,34 +1306,42 @@ static int line_crossing(const rw_engine *e, const rw_mode *m, const rw_span *sp
     hermite_range(a0 * xa[2] + a1 * xa[3], a0 * ends->ddq_a[0] + a1 * ends->ddq_a[1], a0 * xb[2] + a1 * xb[3],
                   a0 * ends->ddq_b[0] + a1 * ends->ddq_b[1], L, &lo, &hi);
     if (!(lo > r->fast_rate * w_band || hi < -r->fast_rate * w_band)) return -1; /* not monotone */
-    z0 = rw_line_value(line, sp->x0, NULL, NULL);
-    if ((z0 > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
-    z_end = rw_line_value(line, x_end, NULL, NULL);
-    if ((z_end > 0.0) == e->b[k]) return 0;
-    { /* the first guess: the slow part's crossing, within the band's width over the slow rate of the full one */
-        const double za = ends->a.z[k], zb = ends->b.z[k];
-        guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, ends->a.dz[k], zb, ends->b.dz[k], L) : NAN;
-    }
-    *s_root = refine_root(e, m, sp, k, e->b[k], 0.0, z0, L, z_end, guess, x_root, &valid);
-    if (!valid) span_eval(sp, *s_root, NULL, x_root, NULL);
+    if ((rw_line_value(line, sp->x0, NULL, NULL) > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
+    if ((rw_line_value(line, x_end, NULL, NULL) > 0.0) == e->b[k]) return 0;
+    *guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, ends->a.dz[k], zb, ends->b.dz[k], L) : NAN;
     return 1;
 }
 
 /* The suspects of a substep settled by line_crossing when every one is a line: 1 with the first
- * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. */
+ * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. The crossings
+ * are refined the earliest guess first; a later line is monotone over the substep, so one still on
+ * its tracked side at the first root crosses after it and needs no refinement. */
 static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, unsigned suspects,
                                   double L, const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX],
                                   double *s_event, int *k_event, double x_event[RW_NX])
 {
-    int k, found = 0;
+    int order[RW_NZ], n = 0, i, j, found = 0;
+    double guess[RW_NZ];
     if (suspects & ~e->line_mask) return -1; /* a new peak, the collapse or the toppling indicator */
-    for (k = 0; suspects >> k; k++) {
-        double s_k, x_k[RW_NX];
+    for (i = 0; suspects >> i; i++) {
         int rc;
-        if (!((suspects >> k) & 1u)) continue;
-        rc = line_crossing(e, m, sp, k, L, r, ends, x_end, &s_k, x_k);
+        if (!((suspects >> i) & 1u)) continue;
+        rc = line_crossing(e, sp, i, L, r, ends, x_end, &guess[i]);
         if (rc < 0) return -1;
-        if (rc == 1 && (!found || s_k < *s_event)) {
+        if (rc == 0) continue;
+        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1]; /* NaN: anywhere */
+        order[j] = i;
+    }
+    for (i = 0; i < n; i++) {
+        const int k = order[i];
+        const rw_indicator_line *line = &e->lines[k];
+        double s_k, x_k[RW_NX];
+        int valid;
+        if (found && (rw_line_value(line, x_event, NULL, NULL) > 0.0) == e->b[k]) continue; /* crosses later */
+        s_k = refine_root(e, m, sp, k, e->b[k], 0.0, rw_line_value(line, sp->x0, NULL, NULL), L,
+                          rw_line_value(line, x_end, NULL, NULL), guess[k], x_k, &valid);
+        if (!valid) span_eval(sp, s_k, NULL, x_k, NULL);
+        if (!found || s_k < *s_event) {
             found = 1;
             *s_event = s_k;
             *k_event = k;
