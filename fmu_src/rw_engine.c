@@ -222,17 +222,18 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
 {
     const rw_cache_entry *R = sp->R;
     const double small = 1e-12 * e->D.q_topple;
-    double w[2] = {0.0, 0.0};
+    double w[2] = {0.0, 0.0}, amp2[2];
     int i;
     memset(r, 0, sizeof *r);
     for (i = 0; i < 2; i++) {
-        if (R->E.lam[i] <= 0.0 || mode_amplitude2(sp, i) * R->col[i] * R->col[i] > small * small) w[i] = R->w[i];
+        amp2[i] = mode_amplitude2(sp, i);
+        if (R->E.lam[i] <= 0.0 || amp2[i] * R->col[i] * R->col[i] > small * small) w[i] = R->w[i];
     }
     r->slow_rate = floor_rate;
     for (i = 0; i < 2; i++) {
         const double other = rw_max2(floor_rate, w[1 - i]);
         if (R->E.lam[i] > 0.0 && w[i] > 4.0 * other) {
-            const double amp = sqrt(mode_amplitude2(sp, i)); /* rotations of a standing wall: no overflow */
+            const double amp = sqrt(amp2[i]); /* rotations of a standing wall: no overflow */
             r->fast[i] = r->any_fast = 1;
             r->fast_rate = rw_max2(r->fast_rate, w[i]);
             r->dq_fast[0] = amp * R->E.P[0][i];
