@@ -649,12 +649,22 @@ static unsigned suspects_of(const rw_engine *e, const double za[RW_NZ], const do
     return clearance_suspects(e, za, dza, zb, dzb, NULL, L);
 }
 
+/* Indicator i into order[0..n), kept sorted by guess (a NaN guess sorts anywhere: the order only
+ * saves work). Returns the new length, n + 1. */
+static inline int insert_by_guess(int order[RW_NZ], int n, const double guess[RW_NZ], int i)
+{
+    int j;
+    for (j = n; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1];
+    order[j] = i;
+    return n + 1;
+}
+
 /* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
  * e->b[k], including a dip through zero and back inside the substep. Returns 1 and *s_event, or 0. */
 static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
                        unsigned suspects, double *s_event, int *k_event, double x_event[RW_NX])
 {
-    int order[RW_NZ], n = 0, i, j, found = 0, x_known = 0;
+    int order[RW_NZ], n = 0, i, found = 0, x_known = 0;
     double guess[RW_NZ], best = b->s;
     /* the indicators that change sign first, the earliest guess first, then the possible dips: a
      * line found later is mostly settled by its value at the first root (crossed_before), without
@@ -667,9 +677,7 @@ static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, 
             if ((a->z[i] > 0.0) == e->b[i])
                 guess[i] = a->s + (b->s - a->s) * hermite_root(a->z[i], a->dz[i], b->z[i], b->dz[i], b->s - a->s);
         }
-        /* insertion by guess (a NaN guess sorts anywhere: the order only saves work) */
-        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1];
-        order[j] = i;
+        n = insert_by_guess(order, n, guess, i);
     }
     for (i = 0; i < n; i++) {
         const int k = order[i], was = e->b[k];
@@ -1284,10 +1292,11 @@ static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_
  * (s != 0) kept on one side of its kink w = 0 (the slow w's range clear of the band). Then it
  * crosses at most once, and the full motion's values at the ends decide: no crossing, or one.
  * Returns -1 (undecided: the caller resolves at the fast rate), 0 (no crossing) or 1 (a crossing,
- * with *guess: the slow part's crossing, within the band's width over the slow rate of the full
- * one; NaN when the slow part does not cross). */
+ * with the line's full values at the ends, z[0] and z[1], and *guess: the slow part's crossing,
+ * within the band's width over the slow rate of the full one; NaN when the slow part does not
+ * cross). */
 static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L, const rw_rates *r,
-                         const rw_slow_ends *ends, const double x_end[RW_NX], double *guess)
+                         const rw_slow_ends *ends, const double x_end[RW_NX], double z[2], double *guess)
 {
     const rw_indicator_line *line = &e->lines[k];
     const double a0 = line->a[0], a1 = line->a[1];
@@ -1307,8 +1316,10 @@ static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L,
     hermite_range(a0 * xa[2] + a1 * xa[3], a0 * ends->ddq_a[0] + a1 * ends->ddq_a[1], a0 * xb[2] + a1 * xb[3],
                   a0 * ends->ddq_b[0] + a1 * ends->ddq_b[1], L, &lo, &hi);
     if (!(lo > r->fast_rate * w_band || hi < -r->fast_rate * w_band)) return -1; /* not monotone */
-    if ((rw_line_value(line, sp->x0, NULL, NULL) > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
-    if ((rw_line_value(line, x_end, NULL, NULL) > 0.0) == e->b[k]) return 0;
+    z[0] = rw_line_value(line, sp->x0, NULL, NULL);
+    if ((z[0] > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
+    z[1] = rw_line_value(line, x_end, NULL, NULL);
+    if ((z[1] > 0.0) == e->b[k]) return 0;
     *guess = (za > 0.0) != (zb > 0.0) ? L * hermite_root(za, ends->a.dz[k], zb, ends->b.dz[k], L) : NAN;
     return 1;
 }
@@ -1321,17 +1332,15 @@ static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw
                                   double L, const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX],
                                   double *s_event, int *k_event, double x_event[RW_NX])
 {
-    int order[RW_NZ], n = 0, i, j, found = 0;
-    double guess[RW_NZ];
+    int order[RW_NZ], n = 0, i, found = 0;
+    double guess[RW_NZ], z_ends[RW_NZ][2];
     if (suspects & ~e->line_mask) return -1; /* a new peak, the collapse or the toppling indicator */
     for (i = 0; suspects >> i; i++) {
         int rc;
         if (!((suspects >> i) & 1u)) continue;
-        rc = line_crossing(e, sp, i, L, r, ends, x_end, &guess[i]);
+        rc = line_crossing(e, sp, i, L, r, ends, x_end, z_ends[i], &guess[i]);
         if (rc < 0) return -1;
-        if (rc == 0) continue;
-        for (j = n++; j > 0 && !(guess[order[j - 1]] <= guess[i]); j--) order[j] = order[j - 1]; /* NaN: anywhere */
-        order[j] = i;
+        if (rc == 1) n = insert_by_guess(order, n, guess, i);
     }
     for (i = 0; i < n; i++) {
         const int k = order[i];
@@ -1339,8 +1348,7 @@ static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw
         double s_k, x_k[RW_NX];
         int valid;
         if (found && (rw_line_value(line, x_event, NULL, NULL) > 0.0) == e->b[k]) continue; /* crosses later */
-        s_k = refine_root(e, m, sp, k, e->b[k], 0.0, rw_line_value(line, sp->x0, NULL, NULL), L,
-                          rw_line_value(line, x_end, NULL, NULL), guess[k], x_k, &valid);
+        s_k = refine_root(e, m, sp, k, e->b[k], 0.0, z_ends[k][0], L, z_ends[k][1], guess[k], x_k, &valid);
         if (!valid) span_eval(sp, s_k, NULL, x_k, NULL);
         if (!found || s_k < *s_event) {
             found = 1;
@@ -1593,13 +1601,12 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
         rw_rates r;
         double g0[2], span_len, h, span_end;
         rw_cache_entry *R;
-        int n, j, rc = 0;
-        int after_event;
+        int n, j, rc = 0, after_event;
         R = current_region(e, m, x, *t, in, t_in, g0, &sp.aq);
         if (!R) return RW_ENGINE_UNSUPPORTED + 1;
         span_start(&sp, R, g0, *t, x, in, t_in);
-        after_event = e->b_stale;
-        if (e->b_stale) refresh_indicator_states(e, m, &sp);
+        after_event = e->b_stale; /* the indicator states are taken again at an event's state */
+        if (after_event) refresh_indicator_states(e, m, &sp);
         span_len = t_end - *t;
         if (one_substep_covers(e, R, span_len)) {
             r.any_fast = 0;

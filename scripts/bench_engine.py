@@ -192,14 +192,15 @@ def main():
         floor = (r.steps * FLOPS_PER_STEP + r.events * FLOPS_PER_EVENT) / FLOPS_PER_NS * 1e-6  # ms
         t_cli = cli_time(csv, params, t_end)
         rps = runs_per_second(sig, params, t_end)
-        cols = []
+        fmi2sim_runs = []  # per solver: its runs as text, and the CPU ms of the cheapest at equal error
         for solver in ("bdf", "adams", "erk"):
             sims = []
             for rtol in FMI2SIM_RTOLS:
                 p1, p2, cpu = fmi2sim(csv, params, rtol, t_end, workdir, solver)
                 sims.append((rtol, cpu * 1e3, error(p1, p2, ref)))
             ok = [s for s in sims if s[2] <= max(e_eng, 1e-9)] or [sims[-1]]
-            cols.append((" ".join(f"{rt:g}:{ms:.0f},{er:.0e}" for rt, ms, er in sims), min(ok, key=lambda s: s[1])[1]))
+            fmi2sim_runs.append((" ".join(f"{rt:g}:{ms:.0f},{er:.0e}" for rt, ms, er in sims),
+                                 min(ok, key=lambda s: s[1])[1]))
         fp_txt = ref_txt = "-"
         if not args.quick:
             p1, p2, cpu = fmpy_run(sig, params, t_end, 1e-8)
@@ -212,14 +213,14 @@ def main():
                     ref_txt = f"n/a ({type(exc).__name__})"
         t_eng = min(t_eng, engine_time(sig, params, t_end, calls)[1])  # a second burst, seconds later
         rps = max(rps, runs_per_second(sig, params, t_end))
-        cols = [f"{txt:<44} {ms / (t_eng * 1e3):6.0f}" for txt, ms in cols]
+        cols = [f"{txt:<44} {ms / (t_eng * 1e3):6.0f}" for txt, ms in fmi2sim_runs]
         print(f"{label:<36} {t_eng * 1e3:8.2f} {floor:7.3f} {t_cli * 1e3:7.1f} {e_eng:8.0e} {rps:7.0f} | {cols[0]} | "
               f"{cols[1]} | {cols[2]} | {fp_txt:>16} | {ref_txt:>16}", flush=True)
-    print("engine: ms per record in-process (best single call of two bursts of 30, before and after the scene's"
-          " other runs); floor: the engine's own counts (closed-form steps x 150"
-          " flop + events x 600 flop) at 2 flop/ns;\nCLI: build/rwengine as a whole process, ms wall (best of 5);"
-          " runs/s: run_many on one core (the better of two calls of 50 runs); ratio: CPU of the cheapest fmi2sim run at least as accurate as the"
-          " engine (else its most accurate) over the engine's time.")
+    print("engine: ms per record in-process (best single call of two bursts of 30, before and after the"
+          " scene's other runs); floor: the engine's own counts (closed-form steps x 150 flop + events x 600"
+          " flop) at 2 flop/ns;\nCLI: build/rwengine as a whole process, ms wall (best of 5); runs/s: run_many on"
+          " one core (the better of two calls of 50 runs); ratio: CPU of the cheapest fmi2sim run at least as"
+          " accurate as the engine (else its most accurate) over the engine's time.")
     if not args.quick:
         sweep()
 
