@@ -497,22 +497,17 @@ static int far_from_zero(double za, double da, double zb, double db, double L)
     return (za * zb > 0.0) & (rw_min2(aa, ab) >= need);
 }
 
-/* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
- * margin larger than its error? The end values are exact; within a substep every significant mode
- * turns by at most 1 rad, where the interpolation error is below 0.3 % of the swing, and the
- * margin is 5 % of it. An interior extremum toward zero is what a dip needs. */
-static int hermite_keeps_sign(double za, double da, double zb, double db, double L)
+/* The values of the cubic Hermite interpolant of (za, zb) with end slopes ma = L za', mb = L zb' on
+ * u in [0, 1] at its interior extrema (the roots in (0, 1) of its derivative A u^2 + B u + C) into z:
+ * their number, 0 to 2. */
+static inline int hermite_interior_extrema(double za, double ma, double zb, double mb, double z[2])
 {
-    /* z(u) = h00 za + h10 L da + h01 zb + h11 L db, u in [0, 1]; z'(u) = A u^2 + B u + C */
-    const double ma = L * da, mb = L * db;
+    /* z(u) = h00 za + h10 ma + h01 zb + h11 mb */
     const double A = 6.0 * za + 3.0 * ma - 6.0 * zb + 3.0 * mb;
     const double B = -6.0 * za - 4.0 * ma + 6.0 * zb - 2.0 * mb;
     const double C = ma;
-    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
-    const int sign = za + zb > 0.0;
     double roots[2];
-    int n = 0, i;
-    if (far_from_zero(za, da, zb, db, L)) return 1;
+    int n = 0, found = 0, i;
     if (fabs(A) > 1e-300) {
         const double disc = B * B - 4.0 * A * C;
         if (disc >= 0.0) {
@@ -524,13 +519,28 @@ static int hermite_keeps_sign(double za, double da, double zb, double db, double
         roots[n++] = -C / B;
     }
     for (i = 0; i < n; i++) {
-        const double u = roots[i];
-        if (u > 0.0 && u < 1.0) {
-            const double u2 = u * u, u3 = u2 * u;
-            const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
-            if (sign ? z < margin : z > -margin) return 0;
-        }
+        const double u = roots[i], u2 = u * u, u3 = u2 * u;
+        if (u > 0.0 && u < 1.0)
+            z[found++] = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
     }
+    return found;
+}
+
+/* Does the cubic Hermite interpolant of (z, dz) on [0, L] stay clear of zero inside, with a
+ * margin larger than its error? The end values are exact; within a substep every significant mode
+ * turns by at most 1 rad, where the interpolation error is below 0.3 % of the swing, and the
+ * margin is 5 % of it. An interior extremum toward zero is what a dip needs. */
+static int hermite_keeps_sign(double za, double da, double zb, double db, double L)
+{
+    const double ma = L * da, mb = L * db;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
+    const int sign = za + zb > 0.0;
+    double z[2];
+    int n, i;
+    if (far_from_zero(za, da, zb, db, L)) return 1;
+    n = hermite_interior_extrema(za, ma, zb, mb, z);
+    for (i = 0; i < n; i++)
+        if (sign ? z[i] < margin : z[i] > -margin) return 0;
     return 1;
 }
 
@@ -1107,30 +1117,15 @@ static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *
 static void hermite_range(double za, double da, double zb, double db, double L, double *lo, double *hi)
 {
     const double ma = L * da, mb = L * db;
-    const double A = 6.0 * za + 3.0 * ma - 6.0 * zb + 3.0 * mb;
-    const double B = -6.0 * za - 4.0 * ma + 6.0 * zb - 2.0 * mb;
-    const double C = ma, margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
-    double roots[2];
-    int n = 0, i;
+    const double margin = 0.05 * (fabs(ma) + fabs(mb) + fabs(zb - za));
+    double z[2];
+    const int n = hermite_interior_extrema(za, ma, zb, mb, z);
+    int i;
     *lo = rw_min2(za, zb);
     *hi = rw_max2(za, zb);
-    if (fabs(A) > 1e-300) {
-        const double disc = B * B - 4.0 * A * C;
-        if (disc >= 0.0) {
-            const double r = sqrt(disc), inv = 0.5 / A;
-            roots[n++] = (-B + r) * inv;
-            roots[n++] = (-B - r) * inv;
-        }
-    } else if (fabs(B) > 1e-300) {
-        roots[n++] = -C / B;
-    }
     for (i = 0; i < n; i++) {
-        const double u = roots[i], u2 = u * u, u3 = u2 * u;
-        if (u > 0.0 && u < 1.0) {
-            const double z = (2 * u3 - 3 * u2 + 1) * za + (u3 - 2 * u2 + u) * ma + (-2 * u3 + 3 * u2) * zb + (u3 - u2) * mb;
-            *lo = rw_min2(*lo, z);
-            *hi = rw_max2(*hi, z);
-        }
+        *lo = rw_min2(*lo, z[i]);
+        *hi = rw_max2(*hi, z[i]);
     }
     *lo -= margin;
     *hi += margin;
@@ -1661,7 +1656,9 @@ static int at_rest(const rw_engine *e, const rw_mode *m)
 static int rest_holds(rw_engine *e, double t_end, const rw_linear_input *in, double t_in)
 {
     const rw_input end = {in->ag + in->ag_slope * (t_end - t_in), in->u_top + in->u_slope * (t_end - t_in)};
-    double z[RW_NZ], dz[RW_NZ];
+    /* only the closed hinges' entries are written and read: z is zeroed because gcc cannot see that
+     * (-Wmaybe-uninitialized) */
+    double z[RW_NZ] = {0.0}, dz[RW_NZ];
     int k;
     if (closed_hinge_values(e, &end, NULL, e->carry.x, NULL, e->closed_mask, z, dz)) return 0;
     for (k = 0; k < RW_NZ; k++)
