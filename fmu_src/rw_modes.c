@@ -133,9 +133,9 @@ static int base_past_elastic(const rw_params *p, const rw_derived *d, const doub
 /* Counting of base impacts: with rigid hinges every base crossing is one (the wall only moves
  * once uplifted); with a semi-rigid law the base oscillates elastically through q1 = 0 before any
  * uplift, so a crossing counts only when the base was past its elastic range since the last one. */
-static void note_uplift(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
+static void note_uplift(const rw_params *p, const rw_derived *d, int rigid, rw_mode *m, const double x[RW_NX])
 {
-    if (!rw_is_rigid(p) && base_past_elastic(p, d, x)) m->uplifted_b = 1;
+    if (!rigid && base_past_elastic(p, d, x)) m->uplifted_b = 1;
 }
 
 void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
@@ -147,7 +147,7 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
     m->closed_b = m->closed_m = 0;
     m->side_b = m->side_m = 1;
     m->uplifted_b = 0;
-    note_uplift(p, d, m, x);
+    note_uplift(p, d, rigid, m, x);
     /* base hinge: rotation q1 */
     if (x[0] != 0.0) m->side_b = sgni(x[0]);
     else if (x[2] != 0.0) m->side_b = sgni(x[2]);
@@ -177,9 +177,9 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
 void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx)
 {
-    const int rigid = rw_is_rigid(p);
+    const int rigid = rw_is_rigid(p); /* once: a look-up in the law table, and events come in thousands */
     r->impacts = r->states_changed = r->modes_changed = 0;
-    note_uplift(p, d, m, x);
+    note_uplift(p, d, rigid, m, x);
 
     /* base: q1 crossing 0 = impact (paper Sec. 4): rates times er, pivot changes side; counted
      * when the wall had uplifted (note_uplift) */
@@ -221,6 +221,6 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
     }
 
     /* closed rigid hinges: opening test (applied at once, also right after a closing) */
-    if (rw_open_hinges(p, d, m, in, x, log, ctx)) r->modes_changed = 1;
+    if (rigid && rw_open_hinges(p, d, m, in, x, log, ctx)) r->modes_changed = 1;
     set_offsets(d, m, x);
 }
