@@ -179,16 +179,25 @@ def wall_start_values(wall=1, Kd=1e5, hinge_law="dohertyHinge", er=0.86, overrid
 
 
 def parse_settings(items):
-    """{name: float} from --set NAME=VALUE items; ValueError naming a malformed one."""
+    """{name: value in SI} from --set NAME=VALUE items, as every other command reads them: a Real
+    parameter of RockingWall, a number in its SI unit or with a unit ('14.08kN/m', '230mm'), inside
+    the model's range. ValueError naming the item and what is wrong with it."""
+    from .engine import parameter_table
+    from .units import parse
+    table = {name: row for name, row in parameter_table().items() if not row.is_integer}
     out = {}
     for item in items or []:
-        name, sep, value = item.partition("=")
+        name, sep, value = (part.strip() for part in item.partition("="))
+        if not sep or not name:
+            raise ValueError(f"--set {item!r}: expected NAME=VALUE (a Real parameter of RockingWall)")
+        if name not in table:
+            raise ValueError(f"--set {item!r}: {name!r} is not a Real parameter of RockingWall "
+                             f"(known: {', '.join(table)}; the law is --hinge-law)")
         try:
-            if not sep or not name.strip():
-                raise ValueError
-            out[name.strip()] = float(value)
-        except ValueError:
-            raise ValueError(f"--set {item!r}: expected NAME=NUMBER (a Real parameter of RockingWall)") from None
+            out[name] = parse(value, table[name].unit, name)
+            table[name].check(out[name])
+        except ValueError as exc:
+            raise ValueError(f"--set {item!r}: {exc}") from None
     return out
 
 
@@ -475,7 +484,8 @@ def parse_args(argv):
                          f"step the tie K_d allows (docs/coupling.md), at most {MACRO_STEP_DEFAULT_MAX:g} s; "
                          f"a larger one runs with a warning")
     ap.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                    help="a Real parameter of RockingWall (b, h, W, psi, er, ...) replacing the --wall's; repeatable")
+                    help="a Real parameter of RockingWall (b, h, W, psi, er, ...) replacing the --wall's, in SI or "
+                         "with its unit (W=14.08kN/m, b=230mm); repeatable")
     ap.add_argument("--energy-share", type=float, default=coupling_rules.ENERGY_SHARE_MAX,
                     help="flag the run when max |energy residual| exceeds this share of max |ground work| "
                          f"(default {coupling_rules.ENERGY_SHARE_MAX:g})")

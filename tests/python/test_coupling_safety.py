@@ -156,11 +156,22 @@ def test_monolithic_collapse_ends_the_run_like_the_co_simulation(fmus):
     (["--monolithic", "--master=libcosim"], "--monolithic runs one CVODE"),
     (["--energy-share=0"], "--energy-share 0.0 must be a positive number"),
     (["--energy-share=nan"], "--energy-share nan must be a positive number"),
-    (["--set=b"], "--set 'b': expected NAME=NUMBER"),
+    (["--set=b"], "--set 'b': expected NAME=VALUE"),
+    (["--set=bb=0.2"], "'bb' is not a Real parameter of RockingWall"),
+    (["--set=hingeLaw=3"], "'hingeLaw' is not a Real parameter of RockingWall"),
+    (["--set=W=14.08kN/m/m"], "unit 'kN/m/m' is not a unit of W"),
+    (["--set=b=-0.2"], "b = -0.2 m: must be in"),
 ])
 def test_bad_safety_options_are_refused(tmp_path, capsys, args, message):
     assert couple.main(["--t-end=0.5", f"--out={tmp_path / 'c.csv'}"] + args) == 2
     assert message in capsys.readouterr().err
+
+
+def test_set_reads_units_as_every_other_command():
+    """`couple --set` took bare numbers only (W=14.08kN/m was refused), unlike --set elsewhere."""
+    assert couple.parse_settings(["W=14.08kN/m", "b = 230mm", "psi=0.2"]) == pytest.approx(
+        {"W": 14080.0, "b": 0.23, "psi": 0.2})
+    assert couple.parse_settings(["W=14080"]) == {"W": 14080.0}
 
 
 def test_energy_check_share():
