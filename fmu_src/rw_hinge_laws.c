@@ -65,8 +65,9 @@ static rw_indicator_line kink(double a0, double a1, double lim)
     return line;
 }
 
-static int rigid_elastic(const rw_derived *d, const double q[2])
+static int rigid_elastic(const rw_derived *d, const double q[2], const double dq[2])
 {
+    (void)dq;
     return fabs(q[0]) <= d->tiny && fabs(q[1]) <= d->tiny;
 }
 
@@ -113,16 +114,19 @@ static void hinge_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK
     z[2] = kink(-1.0, 1.0, d->theta_y);
 }
 
-static int hinge_elastic(const rw_derived *d, const double q[2])
+static int hinge_elastic(const rw_derived *d, const double q[2], const double dq[2])
 {
-    return fabs(q[0]) <= d->theta_y && fabs(q[1] - q[0]) <= d->theta_y;
+    return !past(q[0], dq[0], d->theta_y) && !past(q[1] - q[0], dq[1] - dq[0], d->theta_y);
 }
 
 /* ---- semiRigidPaper: Fig. 4.1/4.2, finite stiffness on q1 and on the absolute q2 ------------ */
 
 /* Q1 = A_c min(1,|q1|/ty), Q2 = B_c min(1,|q2|/ty), A_c, B_c of the condition of the sides.
  * min(1,|q1|/ty)*sign(q1) = sat(q1/ty), so the base part is written with sat (continuous at 0);
- * |q2| has a kink at q2 = 0, which is therefore a breakpoint. */
+ * the mid-height part of Q1 takes |sat(q1/ty)| and Q2 takes |q2|: both have a kink at 0, which is
+ * therefore a breakpoint. (The base indicator's root is at q1 = 0 too, but not always: a base
+ * crossing within `tiny` of zero is taken at an event just before, by its direction of motion,
+ * and the indicator's offset then moves its root past zero, rw_modes.c.) */
 static void paper_moments(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
                           double Q[2], double J[2][2])
 {
@@ -144,16 +148,18 @@ static void paper_moments(const rw_derived *d, int side_b, int side_m, const dou
 
 static void paper_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
+    const rw_indicator_line sign_q1 = {{1.0 / d->theta_y, 0.0}, 0.0, 1.0, 0.0, 0}; /* the kink of |sat(q1)| at 0 */
     const rw_indicator_line sign_q2 = {{0.0, 1.0 / d->theta_y}, 0.0, 1.0, 0.0, 0}; /* the kink of |q2| at 0 */
     no_breakpoints(d, z);
     z[0] = kink(1.0, 0.0, d->theta_y);
+    z[1] = sign_q1;
     z[2] = kink(0.0, 1.0, d->theta_y);
     z[3] = sign_q2;
 }
 
-static int paper_elastic(const rw_derived *d, const double q[2])
+static int paper_elastic(const rw_derived *d, const double q[2], const double dq[2])
 {
-    return fabs(q[0]) <= d->theta_y && fabs(q[1]) <= d->theta_y;
+    return !past(q[0], dq[0], d->theta_y) && !past(q[1], dq[1], d->theta_y);
 }
 
 /* ---- dohertyHinge: Doherty's trilinear shape in each hinge's own mid-height displacement ----
@@ -232,9 +238,9 @@ static void doherty_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBRE
     z[3] = kink(-1.0, 1.0, d->D2 * cm);
 }
 
-static int doherty_elastic(const rw_derived *d, const double q[2])
+static int doherty_elastic(const rw_derived *d, const double q[2], const double dq[2])
 {
-    return d->h / 2.0 * fabs(q[0]) <= d->D1 && d->h / 4.0 * fabs(q[1] - q[0]) <= d->D1;
+    return !past(q[0], dq[0], 2.0 * d->D1 / d->h) && !past(q[1] - q[0], dq[1] - dq[0], 4.0 * d->D1 / d->h);
 }
 
 /* ---- the table ------------------------------------------------------------------------------ */

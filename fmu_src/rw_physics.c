@@ -468,7 +468,7 @@ int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m
     if (p->support == RW_PARAPET) return fabs(x[0]) >= d->alpha ? RW_PAST_INSTABILITY : RW_STANDING;
     if (p->support == RW_SIMPLY_SUPPORTED)
         return fabs(x[0] * p->h / 2.0) >= d->Du ? RW_PAST_INSTABILITY : RW_STANDING;
-    past = !law(p)->elastic(d, x) && rw_collapse_G(p, d, m, in, x) <= 0.0;
+    past = !law(p)->elastic(d, x, x + 2) && rw_collapse_G(p, d, m, in, x) <= 0.0;
     if (past) return RW_PAST_INSTABILITY;
     /* a guard on states the linearised model cannot describe (an importer's unstable integrator
      * may reach them): no body turns past the point where its weight passes over its pivot */

@@ -127,8 +127,9 @@ typedef struct {
     double (*potential)(const rw_derived *d, const double q[2]);
     /* RW_NBREAK indicators crossing zero where Q(q) has a kink, as lines (the constant 1 = unused) */
     void (*breakpoints)(const rw_derived *d, rw_indicator_line lines[RW_NBREAK]);
-    /* 1 inside the first linear range of every hinge (collapse is not tested there) */
-    int (*elastic)(const rw_derived *d, const double q[2]);
+    /* 1 inside the first linear range of every hinge (collapse is not tested there); on its end
+     * itself (to rounding, as at the event there) the direction of motion dq decides */
+    int (*elastic)(const rw_derived *d, const double q[2], const double dq[2]);
     /* 1 if Q depends on q alone (not on the sides, no kink at zero rotation), so that Q = c + J q
      * holds on the whole linear region the motion is in (the exact engine evaluates it so) */
     int q_only;

@@ -668,6 +668,78 @@ static void test_doherty_hinge_reduces_to_trilinear(void)
     }
 }
 
+/* every kink of Q(q) is a breakpoint: with the sides fixed, Q is affine along any short segment
+ * over which no breakpoint indicator changes sign (the exact engine takes Q = c + J q on such a
+ * region). The segments cross q1 = 0, q2 = 0 and q2 = q1, where a law may hide a kink. */
+static void test_hinge_laws_kinks_are_breakpoints(void)
+{
+    rw_params p = paper_params();
+    rw_derived d;
+    const double dirs[4][2] = {{1, 0}, {0, 1}, {1, 1}, {1, -1}};
+    int law, sb, sm, i, j, k, n;
+    rw_derive(&p, &d);
+    for (law = RW_SEMI_RIGID_PAPER; law <= RW_DOHERTY_HINGE; law++) {
+        const rw_hinge_law *L = rw_hinge_law_of(law);
+        const double r1 = law == RW_DOHERTY_HINGE ? 2 * d.D1 / p.h : d.theta_y, len = 0.1 * r1;
+        const double dq[2] = {0.0, 0.0};
+        rw_indicator_line lines[RW_NBREAK];
+        L->breakpoints(&d, lines);
+        for (sb = -1; sb <= 1; sb += 2)
+            for (sm = -1; sm <= 1; sm += 2)
+                for (i = -6; i <= 6; i++)
+                    for (j = -6; j <= 6; j++)
+                        for (k = 0; k < 4; k++) {
+                            /* a segment of length len through (i, j) * len/2, off the grid's symmetry */
+                            const double c0 = (i + 0.013) * len / 2, c1 = (j - 0.021) * len / 2;
+                            const double a[2] = {c0 - dirs[k][0] * len / 2, c1 - dirs[k][1] * len / 2};
+                            const double b[2] = {c0 + dirs[k][0] * len / 2, c1 + dirs[k][1] * len / 2};
+                            const double c[2] = {c0, c1};
+                            double Qa[2], Qb[2], Qc[2], J[2][2];
+                            int crosses = 0;
+                            for (n = 0; n < RW_NBREAK; n++)
+                                crosses |= (rw_line_value(&lines[n], a, NULL, NULL) > 0.0) !=
+                                           (rw_line_value(&lines[n], b, NULL, NULL) > 0.0);
+                            if (crosses) continue;
+                            L->moments(&d, sb, sm, a, dq, Qa, J);
+                            L->moments(&d, sb, sm, b, dq, Qb, J);
+                            L->moments(&d, sb, sm, c, dq, Qc, J);
+                            CHECK(fabs(Qc[0] - 0.5 * (Qa[0] + Qb[0])) <= 1e-9 * d.cap_b &&
+                                      fabs(Qc[1] - 0.5 * (Qa[1] + Qb[1])) <= 1e-9 * d.cap_b,
+                                  "law %d, sides %+d %+d: Q has a kink between (%g, %g) and (%g, %g) that no "
+                                  "breakpoint marks", law, sb, sm, a[0], a[1], b[0], b[1]);
+                        }
+    }
+}
+
+/* The collapse test at the event where a hinge leaves its elastic range: the state sits on the
+ * range's end to rounding, and the direction of motion decides (past instability when the wall
+ * moves out with G <= 0; standing when it moves back in). The state is the one of a wall without
+ * a spring (K_d = 0, dohertyHinge) at its base's first breakpoint, found by the engine's longer
+ * random study: the FMU kept the wall standing there and declared the collapse 32 ms later. */
+static void test_collapse_where_the_elastic_range_ends(void)
+{
+    rw_params p;
+    rw_derived d;
+    rw_mode m;
+    rw_input in = {0.0, 0.0};
+    double x[RW_NX], G;
+    rw_params_default(&p);
+    p.h = 0.6391264126739408; p.b = 0.06893094565554227; p.W = 948.586498217323; p.psi = 2.43956223451747;
+    p.er = 0.5190288381649051; p.delta1Ratio = 0.19495750897142883; p.hingeSat = 2.326972415937138;
+    p.hingeLaw = RW_DOHERTY_HINGE; p.Kd = 0.0;
+    rw_derive(&p, &d);
+    x[0] = -2.0 * d.D1 / p.h * (1.0 - 1e-13); /* the breakpoint, on the elastic side by rounding */
+    x[1] = x[0] - 0.0512;
+    x[2] = -0.2039; x[3] = -0.7509;            /* moving out of the elastic range */
+    init(&p, &d, &m, &in, x);
+    G = rw_collapse_G(&p, &d, &m, &in, x);
+    CHECK(G < 0.0, "the test state should be past instability but for the elastic range: G = %g", G);
+    CHECK(rw_collapse_reason(&p, &d, &m, &in, x) == RW_PAST_INSTABILITY,
+          "leaving the elastic range with G = %g < 0: not collapsed", G);
+    x[2] = -x[2]; x[3] = -x[3];               /* moving back in */
+    CHECK(rw_collapse_reason(&p, &d, &m, &in, x) == RW_STANDING, "entering the elastic range: collapsed");
+}
+
 int main(int argc, char **argv)
 {
     test_defaults_valid();
@@ -686,6 +758,8 @@ int main(int argc, char **argv)
     test_energy();
     test_hinge_laws_jacobian_and_potential();
     test_doherty_hinge_reduces_to_trilinear();
+    test_hinge_laws_kinks_are_breakpoints();
+    test_collapse_where_the_elastic_range_ends();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
