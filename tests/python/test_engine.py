@@ -17,9 +17,16 @@ of the run's largest (amplitudes above 1e-3 of the peak), from fmi2sim's event r
 are the impacts of a wall settling to rest: the elastic laws' last crossings at rotations of
 ~1e-13 rad (the size of the hinge indicators' offsets, below what CVODE resolves) and the rigid
 2DOF's chatter near rest, where a 1e-12 relative perturbation changes the count (CVODE's own
-counts differ between rtol 1e-10 and 1e-12 there, e.g. scene 68: 80 and 77, the engine 95).
+counts differ between rtol 1e-10 and 1e-12 there, e.g. scene 68: 80 and 77, the engine 95). An
+impact within a factor 3 of that cut-off counts either way: the engine's count must lie between
+fmi2sim's above 3e-6 and above 3.3e-7 of the largest. In a long chatter tail the count at a sharp
+cut-off moves with any rounding: scene 736 (rigid, K_d = 1e12 N/m per m) counts 159 in the engine,
+165 with the record scaled by 1 + 1e-10, 168 and 172 in CVODE at rtol 1e-10 and 1e-12, while the
+engine's impact times agree with CVODE's at 1e-12 to 1e-6 s over the first 100 of them (CVODE's
+at 1e-10 are off by 1e-4 s).
 """
 import math
+import os
 import pathlib
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
@@ -31,10 +38,18 @@ import engine_scenes as es
 from rockingwall import engine as rw_engine
 from rwref import inputs
 
-N_SCENES = 200
+# The random scenes: seeds 0-199 and what the longer study found (scripts/engine_study.sh, seeds
+# 200-1199) in every test run: 361, semiRigidPaper under a 1e12 spring (the kink of its Q at q1 = 0
+# was no breakpoint); 651, a wall without a spring that collapses as its base leaves the elastic
+# range; 736, a rigid wall's long chatter (the impact count at its cut-off). The study runs the
+# range FIRST:LAST of RW_ENGINE_SCENES instead, with the same checks.
+STUDY_FINDINGS = (361, 651, 736)
+SCENES = (range(*(int(v) for v in os.environ["RW_ENGINE_SCENES"].split(":"))) if os.environ.get("RW_ENGINE_SCENES")
+          else [*range(200), *STUDY_FINDINGS])
 TERMINATE_DELAY = 1e-6
 PEAK_RTOL = 1e-5
 SIGNIFICANT = 1e-6  # of the largest impact energy
+BORDERLINE = 3.0  # an impact within this factor of the cut-off may count either way
 
 
 @pytest.fixture(scope="module")
@@ -46,8 +61,8 @@ def engine_run(sc, **kw):
     return rw_engine.run(sc["t"], sc["ag"], t_end=sc["t_end"], impact_log=100000, **kw, **sc["params"])
 
 
-def significant_impacts_fmi2sim(exe, fmu, sc, rtol, workdir, e_min):
-    """Impacts whose energy just before is above e_min, from fmi2sim's event rows."""
+def impact_energies_fmi2sim(exe, fmu, sc, rtol, workdir):
+    """The energy just before each impact, from fmi2sim's event rows."""
     csv = workdir / f"in{sc['seed']}.csv"
     out = workdir / f"h{sc['seed']}_{rtol:g}.csv"
     args = [str(exe), str(fmu), "--input", str(csv), "--rtol", f"{rtol:g}", "--stop-time", f"{sc['t_end']:.17g}",
@@ -57,7 +72,12 @@ def significant_impacts_fmi2sim(exe, fmu, sc, rtol, workdir, e_min):
     subprocess.run(args, check=True, capture_output=True, timeout=600)
     d = np.genfromtxt(out, delimiter=",", names=True)
     steps = np.nonzero(np.diff(d["impacts"]) > 0)[0]
-    return int(np.sum(d["energy"][steps] > e_min))
+    return d["energy"][steps]
+
+
+def counts_around(energies, e_cut):
+    """Impacts above BORDERLINE x e_cut, above e_cut, and above e_cut / BORDERLINE."""
+    return tuple(int(np.sum(energies > e)) for e in (BORDERLINE * e_cut, e_cut, e_cut / BORDERLINE))
 
 
 def peak_tolerance(r, sc, cv):
@@ -86,11 +106,12 @@ def compare(r, sc, cv, e_sig_engine, sig_cv, spread=None):
         extra = spread["t_collapse"] if spread else 0.0
         if abs(r.t_collapse - t_cv) > 1e-6 * max(1.0, t_cv) + 2 * extra:
             bad.append(f"collapse time engine {r.t_collapse:.12g} fmi2sim {t_cv:.12g}")
-    if r.impacts != cv["impacts"] and e_sig_engine != sig_cv():
+    if r.impacts != cv["impacts"]:
+        strict, cut, loose = sig_cv()
         extra = spread["impacts"] if spread else 0
-        if abs(e_sig_engine - sig_cv()) > 2 * extra:
+        if not strict - 2 * extra <= e_sig_engine <= loose + 2 * extra:
             bad.append(f"impacts engine {r.impacts} ({e_sig_engine} significant) fmi2sim {cv['impacts']} "
-                       f"({sig_cv()} significant), spread {extra}")
+                       f"({cut} significant, {strict} to {loose} with the borderline ones), spread {extra}")
     return bad
 
 
@@ -100,10 +121,10 @@ def fmi2sim_runs(fmi2sim_exe, rockingwall_fmu, workdir):
     def one(seed):
         return es.fmi2sim(fmi2sim_exe, rockingwall_fmu, es.scene(seed), 1e-10, workdir)
     with ThreadPoolExecutor(2) as pool:
-        return dict(zip(range(N_SCENES), pool.map(one, range(N_SCENES))))
+        return dict(zip(SCENES, pool.map(one, SCENES)))
 
 
-@pytest.mark.parametrize("seed", range(N_SCENES))
+@pytest.mark.parametrize("seed", SCENES)
 def test_random_scene_against_fmi2sim(seed, fmi2sim_exe, rockingwall_fmu, workdir, fmi2sim_runs):
     sc = es.scene(seed)
     r = engine_run(sc)
@@ -115,7 +136,8 @@ def test_random_scene_against_fmi2sim(seed, fmi2sim_exe, rockingwall_fmu, workdi
 
     def sig(rtol):
         if rtol not in cache:
-            cache[rtol] = significant_impacts_fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, rtol, workdir, SIGNIFICANT * e_max)
+            energies = impact_energies_fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, rtol, workdir)
+            cache[rtol] = counts_around(energies, SIGNIFICANT * e_max)
         return cache[rtol]
 
     bad = compare(r, sc, cv10, e_sig, lambda: sig(1e-10))
@@ -128,7 +150,7 @@ def test_random_scene_against_fmi2sim(seed, fmi2sim_exe, rockingwall_fmu, workdi
         cv12 = es.fmi2sim(fmi2sim_exe, rockingwall_fmu, sc, 1e-11, workdir, max_step=1e-4)
     spread = {k: abs(cv10[k] - cv12[k]) for k in ("peak_s1", "peak_s2")}
     spread["t_collapse"] = abs(cv10["end_time"] - cv12["end_time"])
-    spread["impacts"] = abs(sig(1e-10) - sig(1e-12)) if r.impacts != cv12["impacts"] else 0
+    spread["impacts"] = abs(sig(1e-10)[1] - sig(1e-12)[1]) if r.impacts != cv12["impacts"] else 0
     bad12 = compare(r, sc, cv12, e_sig, lambda: sig(1e-12), spread)
     assert not bad12, f"scene {seed} ({sc['label']}, {sc['params']}): " + "; ".join(bad12)
 
