@@ -9,7 +9,7 @@ tolerance the rtol implies. A very stiff spring (K_d >= 1e9 N/m per m) is also r
 simply supported wall, the cheaper model it tends to, and the difference is reported.
 
     .venv/bin/python scripts/stability.py [--only TEXT] [--no-fmpy] [--no-readme]
-(about 10 minutes on 2 cores)."""
+(about 4 minutes on 2 cores)."""
 import argparse
 import contextlib
 import csv
