@@ -1498,11 +1498,20 @@ static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_sp
     carry_point(e, &pt, sp->t0);
 }
 
-/* the indicators that are lines of the rotations under the modes m (they change only at events) */
+/* the indicators that are lines of the rotations under the modes m (they change only at events).
+ * Under a law of q alone the mid-height hinge's switch changes nothing in the motion
+ * (rw_mid_side_enters_motion): its line is left out, so the engine does not stop there. Under a
+ * wall held at its top that switch comes microseconds after each base crossing, and each such pair
+ * of events cost as much as seven quiet segments. The side is brought up to date by the event
+ * update at the next event and at the end of every step (rw_engine_step). */
 static void region_lines(rw_engine *e, const rw_mode *m)
 {
     int k;
     rw_indicator_lines(&e->P, &e->D, m, e->lines);
+    if (e->mid_is_bookkeeping) {
+        const rw_indicator_line never = {{0.0, 0.0}, 0.0, 0.0, 1.0, 0};
+        e->lines[RW_Z_MID] = never;
+    }
     e->line_mask = 0;
     for (k = 0; k < RW_NZ; k++) {
         const rw_indicator_line *L = &e->lines[k];
@@ -1573,7 +1582,8 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const doub
 
 
 /* Right after an event under a stiff spring the next one often follows within microseconds (the
- * base and the mid-height hinge of a wall held at its top switch nearly together). Left to the
+ * base and the mid-height hinge of a wall held at its top switch nearly together, under the laws
+ * whose moments take the sides: the rigid law, semiRigidPaper). Left to the
  * band (fast_substep), it costs a band test of the rest of the segment before it and another after.
  * So when an indicator of the span's start point (the carried point) heads for zero, linearly,
  * within the piece over which the fast mode turns by RW_PHASE_PER_SUBSTEP, advance() resolves that
@@ -1730,6 +1740,7 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
     rw_derive(p, &e->D);
     e->law = rw_hinge_law_of(p->hingeLaw);
     e->rigid = rw_is_rigid(p);
+    e->mid_is_bookkeeping = p->support == RW_FLEXIBLE_TOP && !rw_mid_side_enters_motion(p);
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
     e->floor_rate = rocking_rate(e);
@@ -1798,6 +1809,7 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
     *t_reached = t;
     rc = input_jump(e, m, x, t, &now);
     if (rc == 0) rc = advance(e, m, x, t_reached, t + h, in, t);
+    if (rc == 0 && e->mid_is_bookkeeping) rw_sync_mid_side(&e->P, &e->D, m, x); /* the `condition` it reports */
     if (rc == 0 && e->b_stale) { /* an event at the step's end: its states, for the next input_jump */
         rw_input end;
         end.ag = in->ag + in->ag_slope * (*t_reached - t);

@@ -174,6 +174,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     rw_engine_point slow_carry;
     double slow_carry_ddq[2];
     /* run bookkeeping */
+    int mid_is_bookkeeping;     /* the mid-height switch changes nothing in the motion (region_lines) */
     int b[RW_NZ];               /* indicator states z > 0 */
     double b_sign[RW_NZ];       /* the same as +-1 */
     double peak_s1, peak_s2;

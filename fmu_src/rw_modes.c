@@ -174,6 +174,23 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
     set_offsets(d, m, x);
 }
 
+/* The mid-height hinge's switch: its side changes where x = q2 - q1 crosses zero. 1 if it did. */
+static int mid_switch(const rw_derived *d, rw_mode *m, const double x[RW_NX], rw_log_fn log, void *ctx)
+{
+    const double xr = x[1] - x[0], dxr = x[3] - x[2];
+    if (!crossed(m->side_m, xr, dxr, d)) return 0;
+    m->side_m = -m->side_m;
+    logf_(log, ctx, "mid-hinge switch: q2-q1 = %g, rate %g, side %+d", xr, dxr, m->side_m);
+    return 1;
+}
+
+int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
+{
+    if (p->support != RW_FLEXIBLE_TOP || rw_mid_side_enters_motion(p) || !mid_switch(d, m, x, NULL, NULL)) return 0;
+    set_offsets(d, m, x);
+    return 1;
+}
+
 void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx)
 {
@@ -205,18 +222,12 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
     }
 
     /* mid hinge (flexibleTop): x = q2 - q1 crossing 0 = switch of condition, no energy loss */
-    if (p->support == RW_FLEXIBLE_TOP && !(rigid && m->closed_m)) {
-        const double xr = x[1] - x[0], dxr = x[3] - x[2];
-        if (crossed(m->side_m, xr, dxr, d)) {
-            const int eff = -m->side_m;
-            m->side_m = eff;
-            r->modes_changed = 1;
-            logf_(log, ctx, "mid-hinge switch: q2-q1 = %g, rate %g, side %+d", xr, dxr, eff);
-            if (rigid && fabs(dxr) < p->restRate) {
-                close_mid(m, x);
-                r->states_changed = 1;
-                logf_(log, ctx, "mid hinge closes (|dq2-dq1| < restRate = %g)", p->restRate);
-            }
+    if (p->support == RW_FLEXIBLE_TOP && !(rigid && m->closed_m) && mid_switch(d, m, x, log, ctx)) {
+        r->modes_changed = 1;
+        if (rigid && fabs(x[3] - x[2]) < p->restRate) {
+            close_mid(m, x);
+            r->states_changed = 1;
+            logf_(log, ctx, "mid hinge closes (|dq2-dq1| < restRate = %g)", p->restRate);
         }
     }
 

@@ -94,6 +94,11 @@ int rw_is_rigid(const rw_params *p)
     return p->support == RW_PARAPET || law(p)->set_valued;
 }
 
+int rw_mid_side_enters_motion(const rw_params *p)
+{
+    return p->support == RW_FLEXIBLE_TOP && !law(p)->q_only;
+}
+
 /* ---- forces -------------------------------------------------------------------------------- */
 
 /* Q(q) of the open hinges, from the law (docs/model.md "Hinge laws"). */

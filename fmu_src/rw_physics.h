@@ -164,6 +164,11 @@ void rw_derive(const rw_params *p, rw_derived *d);
 
 /* Is the hinge law set-valued (rest / closed-hinge states)? */
 int rw_is_rigid(const rw_params *p);
+/* 1 when the mid-height hinge's side enters the motion (flexibleTop under the rigid law and
+ * semiRigidPaper, whose moments take the sides). Under a law of q alone its switch changes the
+ * `condition` output and nothing else: the exact engine does not stop there, and brings the side
+ * up to date (rw_sync_mid_side) at its events and where it reports. */
+int rw_mid_side_enters_motion(const rw_params *p);
 
 /* Physics ------------------------------------------------------------------------------------ */
 /* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides), from the law. */
@@ -250,6 +255,9 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
 /* Event-mode update: impacts, mid-hinge switches, closing and opening of rigid hinges. */
 void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx);
+/* The mid-height hinge's side brought up to date with x by rw_event_update's own rule, for a
+ * caller that did not stop at its switch (rw_mid_side_enters_motion() == 0). Returns 1 if it switched. */
+int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX]);
 /* Opening test of closed rigid hinges only (part of rw_event_update). Returns 1 if a hinge opened. */
 int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
                    const double x[RW_NX], rw_log_fn log, void *ctx);

@@ -50,6 +50,7 @@
 #define rw_hinge_law_of FMU_SYMBOL(rw_hinge_law_of)
 #define rw_init_modes FMU_SYMBOL(rw_init_modes)
 #define rw_is_rigid FMU_SYMBOL(rw_is_rigid)
+#define rw_mid_side_enters_motion FMU_SYMBOL(rw_mid_side_enters_motion)
 #define rw_open_hinges FMU_SYMBOL(rw_open_hinges)
 #define rw_param_by_name FMU_SYMBOL(rw_param_by_name)
 #define rw_param_by_vr FMU_SYMBOL(rw_param_by_vr)
@@ -60,5 +61,6 @@
 #define rw_params_validate FMU_SYMBOL(rw_params_validate)
 #define rw_s1 FMU_SYMBOL(rw_s1)
 #define rw_s2 FMU_SYMBOL(rw_s2)
+#define rw_sync_mid_side FMU_SYMBOL(rw_sync_mid_side)
 
 #endif
