@@ -122,12 +122,11 @@ static int hinge_elastic(const rw_derived *d, const double q[2], const double dq
 /* ---- semiRigidPaper: Fig. 4.1/4.2, finite stiffness on q1 and on the absolute q2 ------------ */
 
 /* Q1 = A_c min(1,|q1|/ty), Q2 = B_c min(1,|q2|/ty), A_c, B_c of the condition of the sides.
- * min(1,|q1|/ty)*sign(q1) = sat(q1/ty), so the base part is written with sat (continuous at 0).
- * The mid-height part of Q1 takes |sat(q1/ty)| as side_b*sat(q1/ty): the two are equal wherever
- * the base's side is the sign of q1, i.e. everywhere but inside the base crossing's zero zone
- * (within `tiny` of q1 = 0, rw_modes.c), and so the kink of |q1| is the base crossing's own
- * event rather than a breakpoint of its own, which an importer would meet within 1e-13 rad of
- * that event. Q2 takes |q2|: its kink at q2 = 0 is a breakpoint. */
+ * min(1,|q1|/ty)*sign(q1) = sat(q1/ty), so the base part is written with sat (continuous at 0);
+ * the mid-height part of Q1 takes |sat(q1/ty)| and Q2 takes |q2|: both have a kink at 0, which is
+ * therefore a breakpoint. (The base indicator's root is at q1 = 0 too, but not always: a base
+ * crossing within `tiny` of zero is taken at an event just before, by its direction of motion,
+ * and the indicator's offset then moves its root past zero, rw_modes.c.) */
 static void paper_moments(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
                           double Q[2], double J[2][2])
 {
@@ -136,11 +135,12 @@ static void paper_moments(const rw_derived *d, int side_b, int side_m, const dou
     const double sat1 = sat_mu(q[0], dq[0], ty, &k1);
     const double s2 = q[1] != 0.0 ? sgn(q[1]) : (dq[1] != 0.0 ? sgn(dq[1]) : 1.0);
     const int in2 = !past(q[1], dq[1], ty);
+    (void)side_b;
     r2 = in2 ? fabs(q[1]) / ty : 1.0;
     k2 = in2 ? s2 / ty : 0.0;
-    Q[0] = (-d->cap_b + d->cap_m * side_m * side_b) * sat1;
+    Q[0] = -d->cap_b * sat1 + d->cap_m * side_m * fabs(sat1);
     Q[1] = -d->cap_m * side_m * r2;
-    J[0][0] = (-d->cap_b + d->cap_m * side_m * side_b) * k1;
+    J[0][0] = -d->cap_b * k1 + d->cap_m * side_m * sgn(q[0] != 0.0 ? q[0] : dq[0]) * k1;
     J[0][1] = 0.0;
     J[1][0] = 0.0;
     J[1][1] = -d->cap_m * side_m * k2;
@@ -148,9 +148,11 @@ static void paper_moments(const rw_derived *d, int side_b, int side_m, const dou
 
 static void paper_breakpoints(const rw_derived *d, rw_indicator_line z[RW_NBREAK])
 {
+    const rw_indicator_line sign_q1 = {{1.0 / d->theta_y, 0.0}, 0.0, 1.0, 0.0, 0}; /* the kink of |sat(q1)| at 0 */
     const rw_indicator_line sign_q2 = {{0.0, 1.0 / d->theta_y}, 0.0, 1.0, 0.0, 0}; /* the kink of |q2| at 0 */
     no_breakpoints(d, z);
     z[0] = kink(1.0, 0.0, d->theta_y);
+    z[1] = sign_q1;
     z[2] = kink(0.0, 1.0, d->theta_y);
     z[3] = sign_q2;
 }
