@@ -5,7 +5,7 @@
 # (tests/python/test_engine.py). Not part of CI; needs the build (scripts/run_tests.sh makes it).
 #
 #   scripts/engine_study.sh [FIRST [LAST]]   (seeds FIRST to LAST - 1; default 200 1200, the 1 000
-#                                             scenes after the test run's; about 20 minutes)
+#                                             scenes after the test run's; about 2 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
