@@ -37,11 +37,16 @@ static int crossed(int side, double z, double dz, const rw_derived *d)
 /* Offsets of the open-hinge indicators: eps_q, or more when the rotation sits (by integration
  * noise) slightly on the far side of zero while still moving toward its active side, so that the
  * indicator is never zero at a restart (CVODE would ignore that root function). */
+static double offset_for(const rw_derived *d, double v)
+{
+    const double eps = RW_EPS_Q(d);
+    return v < 0.0 ? eps - v : eps;
+}
+
 static void set_offsets(const rw_derived *d, rw_mode *m, const double x[RW_NX])
 {
-    const double eps = RW_EPS_Q(d), vb = m->side_b * x[0], vm = m->side_m * (x[1] - x[0]);
-    m->zoff_b = vb < 0.0 ? eps - vb : eps;
-    m->zoff_m = vm < 0.0 ? eps - vm : eps;
+    m->zoff_b = offset_for(d, m->side_b * x[0]);
+    m->zoff_m = offset_for(d, m->side_m * (x[1] - x[0]));
 }
 
 static void slave(const rw_params *p, double x[RW_NX])
@@ -187,7 +192,7 @@ static int mid_switch(const rw_derived *d, rw_mode *m, const double x[RW_NX], rw
 int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
 {
     if (p->support != RW_FLEXIBLE_TOP || rw_mid_side_enters_motion(p) || !mid_switch(d, m, x, NULL, NULL)) return 0;
-    set_offsets(d, m, x);
+    m->zoff_m = offset_for(d, m->side_m * (x[1] - x[0])); /* the base's offset stays: no event here */
     return 1;
 }
 
