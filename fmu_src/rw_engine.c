@@ -1500,7 +1500,7 @@ static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_sp
 
 /* the indicators that are lines of the rotations under the modes m (they change only at events).
  * Under a law of q alone the mid-height hinge's switch changes nothing in the motion
- * (rw_mid_side_enters_motion): its line is left out, so the engine does not stop there. Under a
+ * (rw_mid_switch_is_bookkeeping): its line is left out, so the engine does not stop there. Under a
  * wall held at its top that switch comes microseconds after each base crossing, and each such pair
  * of events cost as much as seven quiet segments. The side is brought up to date by the event
  * update at the next event and at the end of every step (rw_engine_step). */
@@ -1740,7 +1740,7 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
     rw_derive(p, &e->D);
     e->law = rw_hinge_law_of(p->hingeLaw);
     e->rigid = rw_is_rigid(p);
-    e->mid_is_bookkeeping = p->support == RW_FLEXIBLE_TOP && !rw_mid_side_enters_motion(p);
+    e->mid_is_bookkeeping = rw_mid_switch_is_bookkeeping(p);
     e->max_same_instant = 100;
     e->t_last_event = -INFINITY;
     e->floor_rate = rocking_rate(e);

@@ -191,7 +191,7 @@ static int mid_switch(const rw_derived *d, rw_mode *m, const double x[RW_NX], rw
 
 int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
 {
-    if (p->support != RW_FLEXIBLE_TOP || rw_mid_side_enters_motion(p) || !mid_switch(d, m, x, NULL, NULL)) return 0;
+    if (!rw_mid_switch_is_bookkeeping(p) || !mid_switch(d, m, x, NULL, NULL)) return 0;
     m->zoff_m = offset_for(d, m->side_m * (x[1] - x[0])); /* the base's offset stays: no event here */
     return 1;
 }

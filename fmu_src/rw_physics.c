@@ -94,9 +94,9 @@ int rw_is_rigid(const rw_params *p)
     return p->support == RW_PARAPET || law(p)->set_valued;
 }
 
-int rw_mid_side_enters_motion(const rw_params *p)
+int rw_mid_switch_is_bookkeeping(const rw_params *p)
 {
-    return p->support == RW_FLEXIBLE_TOP && !law(p)->q_only;
+    return p->support == RW_FLEXIBLE_TOP && law(p)->q_only;
 }
 
 /* ---- forces -------------------------------------------------------------------------------- */

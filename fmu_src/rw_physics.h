@@ -164,11 +164,11 @@ void rw_derive(const rw_params *p, rw_derived *d);
 
 /* Is the hinge law set-valued (rest / closed-hinge states)? */
 int rw_is_rigid(const rw_params *p);
-/* 1 when the mid-height hinge's side enters the motion (flexibleTop under the rigid law and
- * semiRigidPaper, whose moments take the sides). Under a law of q alone its switch changes the
- * `condition` output and nothing else: the exact engine does not stop there, and brings the side
- * up to date (rw_sync_mid_side) at its events and where it reports. */
-int rw_mid_side_enters_motion(const rw_params *p);
+/* 1 when the mid-height hinge's switch changes the `condition` output and nothing else: flexibleTop
+ * under a law of q alone (semiRigidHinge, dohertyHinge; the rigid law's and semiRigidPaper's
+ * moments take the sides). The exact engine does not stop there, and brings the side up to date
+ * (rw_sync_mid_side) at its events and where it reports. */
+int rw_mid_switch_is_bookkeeping(const rw_params *p);
 
 /* Physics ------------------------------------------------------------------------------------ */
 /* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides), from the law. */
@@ -256,7 +256,7 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
 void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx);
 /* The mid-height hinge's side brought up to date with x by rw_event_update's own rule, for a
- * caller that did not stop at its switch (rw_mid_side_enters_motion() == 0). Returns 1 if it switched. */
+ * caller that did not stop at its switch (rw_mid_switch_is_bookkeeping). Returns 1 if it switched. */
 int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX]);
 /* Opening test of closed rigid hinges only (part of rw_event_update). Returns 1 if a hinge opened. */
 int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,

@@ -50,7 +50,7 @@
 #define rw_hinge_law_of FMU_SYMBOL(rw_hinge_law_of)
 #define rw_init_modes FMU_SYMBOL(rw_init_modes)
 #define rw_is_rigid FMU_SYMBOL(rw_is_rigid)
-#define rw_mid_side_enters_motion FMU_SYMBOL(rw_mid_side_enters_motion)
+#define rw_mid_switch_is_bookkeeping FMU_SYMBOL(rw_mid_switch_is_bookkeeping)
 #define rw_open_hinges FMU_SYMBOL(rw_open_hinges)
 #define rw_param_by_name FMU_SYMBOL(rw_param_by_name)
 #define rw_param_by_vr FMU_SYMBOL(rw_param_by_vr)
