@@ -302,13 +302,12 @@ def test_engine_stops_only_where_the_motion_changes(law):
 
 # ---- Co-Simulation through the engine (fmu_src/cs_exact.c) ----------------------------------------
 
-def cosim(fmu, sig, t_end, rtol, step, **params):
+def cosim(fmu, sig, t_end, rtol, step, outputs=("s1", "s2", "impacts", "collapsed"), **params):
     from fmpy import simulate_fmu
     table = np.zeros(len(sig.t), dtype=[("time", np.float64), ("ag", np.float64)])
     table["time"], table["ag"] = sig.t, sig.a
     res = simulate_fmu(str(fmu), start_time=0.0, stop_time=t_end, relative_tolerance=rtol, output_interval=step,
-                       start_values=params, input=table, output=["s1", "s2", "impacts", "collapsed"],
-                       fmi_type="CoSimulation")
+                       start_values=params, input=table, output=list(outputs), fmi_type="CoSimulation")
     return res
 
 
@@ -337,13 +336,8 @@ def test_cosim_condition_follows_the_rotations(rockingwall_fmu):
     up to date at every step's end: the `condition` output at each communication point is the
     paper's condition of the signs of q1 and q2 - q1 (1: q1 > 0 > q2 - q1, 2: q1 < 0 < q2 - q1,
     3: both > 0, 4: both < 0)."""
-    from fmpy import simulate_fmu
-    sig = inputs.el_centro(0.5)
-    table = np.zeros(len(sig.t), dtype=[("time", np.float64), ("ag", np.float64)])
-    table["time"], table["ag"] = sig.t, sig.a
-    res = simulate_fmu(str(rockingwall_fmu), stop_time=10.0, output_interval=0.01, input=table,
-                       start_values=dict(support=3, hingeLaw=4, Kd=5e4), output=["condition", "q1", "q2"],
-                       fmi_type="CoSimulation")
+    res = cosim(rockingwall_fmu, inputs.el_centro(0.5), 10.0, 1e-6, 0.01, outputs=("condition", "q1", "q2"),
+                support=3, hingeLaw=4, Kd=5e4)
     sb, sm = np.sign(res["q1"]), np.sign(res["q2"] - res["q1"])
     want = np.where(sb > 0, np.where(sm < 0, 1, 3), np.where(sm > 0, 2, 4))
     clear = (np.abs(res["q1"]) > 1e-9) & (np.abs(res["q2"] - res["q1"]) > 1e-9)
