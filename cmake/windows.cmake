@@ -1,7 +1,7 @@
 # The FMUs' Windows binaries (binaries/win64/RockingWall.dll, Diaphragm.dll, Building.dll), cross-compiled with
 # Debian's mingw-w64 by the ExternalProject rw_win64 (cmake/win64/CMakeLists.txt with
 # cmake/toolchain-mingw-w64.cmake), and their tests, run under wine. Included by
-# fmu_src/CMakeLists.txt, whose rw_add_fmu packs RW_WIN64_BINARY_DIR/NAME.dll into NAME.fmu.
+# fmu_src/CMakeLists.txt, whose rw_add_fmu (fmu_src/fmu_package.cmake) packs RW_WIN64_BINARY_DIR/NAME.dll into NAME.fmu.
 #
 # RW_WIN64: ON, OFF or AUTO (the default): AUTO is ON when the cross compiler is found, OFF when
 # not and under the sanitizers (those builds test the Linux binaries; the Windows build would only
@@ -100,7 +100,8 @@ endforeach()
 # The packaged RockingWall.dll loaded under wine (LoadLibrary) and the packaged RockingWall.so
 # loaded on Linux (dlopen) by the same runner give the same free-rocking results, ME and CS.
 add_executable(fmu_binary_runner ${_rw_win64_tests}/fmu_binary_runner.c)
-target_include_directories(fmu_binary_runner PRIVATE ${FMI2_HEADERS_DIR} ${CMAKE_SOURCE_DIR}/fmu_src)
+target_include_directories(fmu_binary_runner PRIVATE ${FMI2_HEADERS_DIR} ${CMAKE_SOURCE_DIR}/fmu_src/models/RockingWall
+                           ${CMAKE_SOURCE_DIR}/fmu_src/wall ${CMAKE_SOURCE_DIR}/fmu_src/platform)
 target_compile_definitions(fmu_binary_runner PRIVATE _POSIX_C_SOURCE=200809L)
 target_link_libraries(fmu_binary_runner PRIVATE ${CMAKE_DL_LIBS} m)
 if(RW_WINE64)

@@ -1,12 +1,11 @@
 #!/usr/bin/env python3
 """Generate each FMU's modelDescription.xml from its C variable table, the one source of truth
-for its variables: RockingWall (fmu_src/model_variables.h -> modelDescription.xml at the top level),
-Diaphragm (fmu_src/diaphragm/diaphragm_variables.h -> fmu_src/diaphragm/modelDescription.xml) and
-Building (fmu_src/building/building_variables.h -> fmu_src/building/modelDescription.xml);
-and from the RockingWall and Diaphragm tables the FMI 3.0 modelDescription.xml and
-sources/buildDescription.xml of each (fmu_src/fmi3/NAME/).
+for its variables: RockingWall (fmu_src/models/RockingWall/model_variables.h), Diaphragm
+(fmu_src/models/Diaphragm/diaphragm_variables.h) and Building (fmu_src/models/Building/building_variables.h),
+each into its folder fmu_src/models/NAME/: the FMI 2.0 fmi2/modelDescription.xml, and the FMI 3.0
+fmi3/modelDescription.xml and fmi3/buildDescription.xml (the FMU's sources/buildDescription.xml).
 
-The parameter table of docs/model.md comes from fmu_src/rw_parameters.h too.
+The parameter table of docs/model.md comes from fmu_src/wall/rw_parameters.h too.
 
     scripts/gen_model_description.py                    # (re)write both and the docs table
     scripts/gen_model_description.py --check            # exit 1 if a committed file differs
@@ -20,32 +19,33 @@ from xml.sax.saxutils import escape
 
 REPO = pathlib.Path(__file__).resolve().parents[1]
 
-# Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_none.c stands
-# in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
-SHARED_SOURCES = ["fmi2Functions.c", "fmu_core.c", "cs_none.c"]
-FMI3_SHARED_SOURCES = ["fmi3Functions.c", "fmu_core.c", "cs_none.c"]
-FMI3_DIR = REPO / "fmu_src" / "fmi3"
+# Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_without_cvode.c
+# stands in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
+SHARED_SOURCES = ["fmi2Functions.c", "fmu_core.c", "cs_without_cvode.c"]
+FMI3_SHARED_SOURCES = ["fmi3Functions.c", "fmu_core.c", "cs_without_cvode.c"]
+MODELS_DIR = REPO / "fmu_src" / "models"
 # the value reference of FMI 3.0's independent variable `time` (FMI3_TIME_VR of fmi3Functions.c)
 FMI3_TIME_VR = 0
 MODELS = {
     "RockingWall": dict(
-        header=REPO / "fmu_src" / "model_variables.h", output=REPO / "modelDescription.xml", prefix="RW",
-        parameters=REPO / "fmu_src" / "rw_parameters.h",
+        header=MODELS_DIR / "RockingWall" / "model_variables.h",
+        output=MODELS_DIR / "RockingWall" / "fmi2" / "modelDescription.xml", prefix="RW",
+        parameters=REPO / "fmu_src" / "wall" / "rw_parameters.h",
         description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
                     "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
         sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_physics.c", "rw_modes.c", "rw_engine.c",
                  "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c", "cs_exact.c"] + SHARED_SOURCES,
         log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
     "Diaphragm": dict(
-        header=REPO / "fmu_src" / "diaphragm" / "diaphragm_variables.h",
-        output=REPO / "fmu_src" / "diaphragm" / "modelDescription.xml", prefix="DG",
+        header=MODELS_DIR / "Diaphragm" / "diaphragm_variables.h",
+        output=MODELS_DIR / "Diaphragm" / "fmi2" / "modelDescription.xml", prefix="DG",
         description="Floor or roof diaphragm as one degree of freedom per metre of wall (mass, stiffness, "
                     "damping ratio), driven by the ground acceleration and the wall's top force",
         sources=["diaphragm_model.c"] + SHARED_SOURCES,
         log_events="Instantiation and Co-Simulation steps"),
     "Building": dict(
-        header=REPO / "fmu_src" / "building" / "building_variables.h",
-        output=REPO / "fmu_src" / "building" / "modelDescription.xml", prefix="BD",
+        header=MODELS_DIR / "Building" / "building_variables.h",
+        output=MODELS_DIR / "Building" / "fmi2" / "modelDescription.xml", prefix="BD",
         description="In-plane building of 1 to 5 storeys per metre of out-of-plane wall: storey shear springs "
                     "and floor diaphragms (linear, Bouc-Wen, or Bouc-Wen with pinching), Rayleigh damping, "
                     "driven by the ground acceleration and the out-of-plane walls' forces",
@@ -120,7 +120,7 @@ def _macro_rows(text, letter, fields, path):
     return rows
 
 
-def parse_parameters(path=REPO / "fmu_src" / "rw_parameters.h"):
+def parse_parameters(path=REPO / "fmu_src" / "wall" / "rw_parameters.h"):
     """The parameter table P(ID, VR, TYPE, UNIT, DEFAULT, MIN, MAX, DESCRIPTION) as variable dicts."""
     params = []
     for p in _macro_rows(path.read_text(), "P", PARAM_FIELDS, path):
@@ -369,12 +369,12 @@ def build_description3(name="RockingWall"):
 
 def fmi3_outputs(name):
     """(path, content) of the FMI 3.0 files of one FMU."""
-    return [(FMI3_DIR / name / "modelDescription.xml", generate3(name)),
-            (FMI3_DIR / name / "buildDescription.xml", build_description3(name))]
+    return [(MODELS_DIR / name / "fmi3" / "modelDescription.xml", generate3(name)),
+            (MODELS_DIR / name / "fmi3" / "buildDescription.xml", build_description3(name))]
 
 
 DOCS = REPO / "docs" / "model.md"
-DOCS_BEGIN, DOCS_END = "<!-- BEGIN parameters (generated from fmu_src/rw_parameters.h) -->", "<!-- END parameters -->"
+DOCS_BEGIN, DOCS_END = "<!-- BEGIN parameters (generated from fmu_src/wall/rw_parameters.h) -->", "<!-- END parameters -->"
 
 
 def _fmt_doc_number(value, typ):

@@ -1,4 +1,4 @@
-"""Python binding of the exact event-driven engine (fmu_src/rw_engine.h, librwengine.so).
+"""Python binding of the exact event-driven engine (fmu_src/engine/rw_engine.h, librwengine.so).
 
     from rockingwall import engine
     r = engine.run(t, ag, t_end=80.0, support=3, hingeLaw=4, Kd=5e4)
@@ -7,7 +7,7 @@
 `t`, `ag` (and optionally `u_top`) are the samples of a piecewise-linear record (unequal spacing
 allowed, ends held). Parameters are the FMU's, by name; the struct layout, defaults, units and
 ranges are read from the library's own parameter table (RW_PARAM_INFO, generated from
-fmu_src/rw_parameters.h), so they cannot drift from the C side.
+fmu_src/wall/rw_parameters.h), so they cannot drift from the C side.
 """
 import ctypes
 import dataclasses

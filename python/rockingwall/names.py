@@ -1,5 +1,5 @@
 """The names users give supports, hinge laws and the paper's walls, and the codes the FMU and
-the engine take (fmu_src/rw_parameters.h: `support`, `hingeLaw`). The one copy of these maps."""
+the engine take (fmu_src/wall/rw_parameters.h: `support`, `hingeLaw`). The one copy of these maps."""
 
 SUPPORTS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
 HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}

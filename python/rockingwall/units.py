@@ -1,7 +1,7 @@
 """Quantities with explicit units: '30kN/m/m', '30 kN/m per m', '14.08 kN/m', '230 mm', or a bare
 number in the parameter's SI unit (the unit column of `rockingwall info`).
 
-Every parameter has one SI unit (fmu_src/rw_parameters.h); a value given with a unit is converted
+Every parameter has one SI unit (fmu_src/wall/rw_parameters.h); a value given with a unit is converted
 to it here, and a unit of the wrong kind (kN/m for a stiffness per metre of wall) is an error."""
 import math
 import re

@@ -1,6 +1,6 @@
 /* Both FMUs' sources under the FMI 3.0 layer compiled into one shared object, each with its own
  * FMI3_FUNCTION_PREFIX (RockingWall_, Diaphragm_), as importers combine source-code FMUs
- * (fmu_src/fmi3.cmake: combined_fmi3_fmus). Each FMU is simulated in Co-Simulation through the
+ * (fmu_src/fmu_package.cmake: combined_fmi3_fmus). Each FMU is simulated in Co-Simulation through the
  * combined object and through its own FMI 3.0 binary; the outputs must agree bitwise (same
  * sources, same compiler flags). The combined object must not export the unprefixed fmi3 names.
  *

@@ -1,4 +1,4 @@
-/* Tests of Co-Simulation (fmi2DoStep with CVODE inside, fmu_src/cs_cvode.c) through the FMI 2.0
+/* Tests of Co-Simulation (fmi2DoStep with CVODE inside, fmu_src/fmi/cs_cvode.c) through the FMI 2.0
  * API of RockingWall, linked statically: the step reaches the right state, events inside a step
  * are located, collapse ends the run with fmi2Discard, and the CS call sequence is enforced. */
 #include "check.h"

@@ -1,4 +1,4 @@
-/* Co-Simulation of a binary built without SUNDIALS (fmu_src/cs_none.c in place of cs_cvode.c):
+/* Co-Simulation of a binary built without SUNDIALS (fmu_src/fmi/cs_without_cvode.c in place of cs_cvode.c):
  * the Windows binaries, and a build from the FMU's sources. Compiled twice:
  *  -DTEST_ROCKINGWALL: supports 2 and 3 step through the exact engine (fmu_model.exact_step) and
  *   reach the states the engine's own batch run (rw_engine_run) gives, whatever the step size;

@@ -1,4 +1,4 @@
-/* The exact engine's C API (fmu_src/rw_engine.h), built into the ASan/UBSan run as every ctest:
+/* The exact engine's C API (fmu_src/engine/rw_engine.h), built into the ASan/UBSan run as every ctest:
  * a run of each support / hinge law with an output grid and an impact log, the stepper, the
  * Zeno guard's report, and an error code with a message for each kind of bad input. Agreement
  * with CVODE is tested in tests/python/test_engine.py. */

@@ -1,4 +1,4 @@
-/* Tests of the FMI 2.0 Model Exchange wrapper (fmu_src/fmi2Functions.c), linked statically. */
+/* Tests of the FMI 2.0 Model Exchange wrapper (fmu_src/fmi/fmi2Functions.c), linked statically. */
 #include "check.h"
 #include <math.h>
 #include <stdarg.h>

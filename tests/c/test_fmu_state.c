@@ -271,7 +271,7 @@ static void test_bad_input(void)
     pre = instance(fmi2CoSimulation, 0);
     fmi2GetFMUstate(pre, &early);
     fmi2SerializedFMUstateSize(pre, early, &m);
-#ifdef TEST_WITHOUT_CVODE /* cs_none.c: no integrator part after initialization either */
+#ifdef TEST_WITHOUT_CVODE /* cs_without_cvode.c: no integrator part after initialization either */
     CHECK(m > 0 && m == n, "a state before initialization has the size of one after (%u vs %u bytes)", (unsigned)m, (unsigned)n);
 #else
     CHECK(m > 0 && m < n, "a state before initialization has no integrator part (%u vs %u bytes)", (unsigned)m, (unsigned)n);

@@ -37,7 +37,7 @@ EXACT_STEP = ".exact_step = exact_step,"  # left out: the hostile slave's steps 
 
 def _build_flags(build_dir):
     """Include folders and libraries of the real Diaphragm build (CMake's own files)."""
-    target = build_dir / "fmu_src" / "CMakeFiles" / "Diaphragm.dir"
+    target = build_dir / "fmu_src" / "models" / "Diaphragm" / "CMakeFiles" / "Diaphragm.dir"
     flags = (target / "flags.make").read_text()
     includes = [tok for line in flags.splitlines() if line.startswith("C_INCLUDES") for tok in line.split()[2:]]
     link = (target / "link.txt").read_text().split()
@@ -46,7 +46,7 @@ def _build_flags(build_dir):
 
 
 def _hostile_fmu(repo, build_dir, out_dir, crash):
-    src = (repo / "fmu_src" / "diaphragm" / "diaphragm_model.c").read_text()
+    src = (repo / "fmu_src" / "models" / "Diaphragm" / "diaphragm_model.c").read_text()
     assert src.count(CALLBACKS) == 1 and src.count(EXACT_STEP) == 1 and src.count("const fmu_model FMU_MODEL") == 1, \
         "Diaphragm source changed"
     c_file = out_dir / "hostile.c"
@@ -54,7 +54,7 @@ def _hostile_fmu(repo, build_dir, out_dir, crash):
                       .replace(CALLBACKS, ".derivatives = hostile_derivatives,").replace(EXACT_STEP, ""))
     includes, libs = _build_flags(build_dir)
     so = out_dir / ("crash.so" if crash else "fail.so")
-    fmu_src = repo / "fmu_src"
+    fmu_src = repo / "fmu_src" / "fmi"
     subprocess.run(["cc", "-O1", "-std=c99", "-fPIC", "-shared", "-fvisibility=hidden", *includes,
                     *(["-DHOSTILE_CRASH"] if crash else []), "-Wl,--exclude-libs,ALL", "-o", str(so), str(c_file),
                     str(fmu_src / "fmi2Functions.c"), str(fmu_src / "fmu_core.c"), str(fmu_src / "cs_cvode.c"), *libs, "-lm"],

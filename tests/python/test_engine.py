@@ -1,4 +1,4 @@
-"""The exact event-driven engine (fmu_src/rw_engine.c via rockingwall.engine) against fmi2sim.
+"""The exact event-driven engine (fmu_src/engine/rw_engine.c via rockingwall.engine) against fmi2sim.
 
 Random scenes (tests/python/engine_scenes.py): the same collapse outcome and impact count, and
 peaks within 1e-5, against fmi2sim at rtol 1e-10; where the two disagree, fmi2sim at rtol 1e-12
@@ -300,7 +300,7 @@ def test_engine_stops_only_where_the_motion_changes(law):
     assert crossings > 50 and r.events == crossings
 
 
-# ---- Co-Simulation through the engine (fmu_src/cs_exact.c) ----------------------------------------
+# ---- Co-Simulation through the engine (fmu_src/models/RockingWall/cs_exact.c) ----------------------------------------
 
 def cosim(fmu, sig, t_end, rtol, step, outputs=("s1", "s2", "impacts", "collapsed"), **params):
     from fmpy import simulate_fmu

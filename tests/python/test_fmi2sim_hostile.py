@@ -19,7 +19,8 @@ SO = "binaries/linux64/RockingWall.so"
 MD = "modelDescription.xml"
 # the FMU's own count, as the committed model description declares it
 NZ_DECLARED = re.search(r'numberOfEventIndicators="\d+"',
-                        (pathlib.Path(__file__).resolve().parents[2] / MD).read_text()).group(0)
+                        (pathlib.Path(__file__).resolve().parents[2] / "fmu_src" / "models" / "RockingWall" / "fmi2"
+                         / MD).read_text()).group(0)
 
 
 def limited(limits):
@@ -111,7 +112,8 @@ def sub(old, new):
 
 
 # counted from the committed model description, so the cases follow the model's variables
-_XML = (pathlib.Path(__file__).resolve().parents[2] / "modelDescription.xml").read_text()
+_XML = (pathlib.Path(__file__).resolve().parents[2] / "fmu_src" / "models" / "RockingWall" / "fmi2"
+        / "modelDescription.xml").read_text()
 N_OUTPUTS = len(re.findall(r'causality="output"', _XML))
 
 

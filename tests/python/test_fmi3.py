@@ -1,6 +1,6 @@
 """The FMI 3.0 FMUs (build/fmi3/RockingWall.fmu, build/fmi3/Diaphragm.fmu) against fmpy and against
 their FMI 2.0 twins (build/RockingWall.fmu, build/Diaphragm.fmu), which share the models and the
-core but not the API layer (fmu_src/fmi3Functions.c vs fmu_src/fmi2Functions.c).
+core but not the API layer (fmu_src/fmi/fmi3Functions.c vs fmu_src/fmi/fmi2Functions.c).
 
 - fmpy's validator finds nothing in either FMU;
 - each binary exports the fmi3* API and nothing else;

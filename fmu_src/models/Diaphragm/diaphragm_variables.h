@@ -1,6 +1,6 @@
 /* Diaphragm: the one source of truth for the Diaphragm FMU's variables (same format as
- * fmu_src/model_variables.h; scripts/gen_model_description.py generates
- * fmu_src/diaphragm/modelDescription.xml from it).
+ * fmu_src/models/RockingWall/model_variables.h; scripts/gen_model_description.py generates
+ * fmu_src/models/Diaphragm/fmi2/modelDescription.xml from it).
  *
  * X(ID, VR, NAME, TYPE, CAUSALITY, VARIABILITY, INITIAL, START, UNIT, NOMINAL, DERIVATIVE_OF, DESCRIPTION) */
 #ifndef DIAPHRAGM_VARIABLES_H
@@ -27,7 +27,7 @@ X(P_damping, 35, "P_damping",  Real, "output",    "continuous", "calculated", 0,
 X(P_wall,    36, "P_wall",     Real, "output",    "continuous", "calculated", 0,     "W/m",   0,    0,  "Power of the wall force, F_top v")
 /* clang-format on */
 
-/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/model_variables.h) */
+/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/models/RockingWall/model_variables.h) */
 #define DG_EVENT_INDICATORS(Z)
 
 #define DG_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) DG_VR_##ID = VR,

@@ -1,6 +1,6 @@
 /* Building: the one source of truth for the Building FMU's variables (same format as
- * fmu_src/model_variables.h; scripts/gen_model_description.py generates
- * fmu_src/building/modelDescription.xml from it). Every quantity is per metre of out-of-plane wall,
+ * fmu_src/models/RockingWall/model_variables.h; scripts/gen_model_description.py generates
+ * fmu_src/models/Building/fmi2/modelDescription.xml from it). Every quantity is per metre of out-of-plane wall,
  * as RockingWall's: masses kg/m, stiffnesses N/m per m, forces N/m.
  *
  * Value references: the shared parameters and ag below 100; floor i (1..5) uses 100*i + k with the
@@ -186,7 +186,7 @@ X(F_diaph_5, 544, "F_diaph_5", Real, "output", "continuous", "calculated", 0, "N
 X(d_diaph_5, 545, "d_diaph_5", Real, "output", "continuous", "calculated", 0, "m", 0, 0, "Deformation of diaphragm 5: u_diaph_5 - u_floor_5")
 /* clang-format on */
 
-/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/model_variables.h) */
+/* no event indicators (the format of RW_EVENT_INDICATORS in fmu_src/models/RockingWall/model_variables.h) */
 #define BD_EVENT_INDICATORS(Z)
 
 #define BD_VR_ENUM(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) BD_VR_##ID = VR,

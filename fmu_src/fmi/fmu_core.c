@@ -137,7 +137,7 @@ int fmu_core_step(fmu_core *core, double h, const fmu_logger *log, char *msg, si
     size_t k;
     int rc;
     refresh_inputs(core);
-    msg[0] = '\0'; /* the exact step may leave its reason for declining here (cs_none.c reports it) */
+    msg[0] = '\0'; /* the exact step may leave its reason for declining here (cs_without_cvode.c reports it) */
     rc = exact_step(core, h, log, &t_reached, msg, msg_n); /* RockingWall, Diaphragm: closed-form steps */
     if (rc == FMU_NOT_EXACT) rc = cs_step(core->cs, core->time, h, core->inputs, core->n_inputs, log, &t_reached, msg, msg_n);
     for (k = 0; k < core->n_inputs; k++) core->inputs[k].slope = 0.0; /* derivatives hold for one step */
