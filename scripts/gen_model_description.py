@@ -33,8 +33,9 @@ MODELS = {
         parameters=REPO / "fmu_src" / "wall" / "rw_parameters.h",
         description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
                     "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
-        sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_events.c", "rw_engine.c",
-                 "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c", "cs_exact.c"] + SHARED_SOURCES,
+        sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_indicators.c", "rw_outputs.c",
+                 "rw_events.c", "rw_engine.c", "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c",
+                 "cs_exact.c"] + SHARED_SOURCES,
         log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
     "Diaphragm": dict(
         header=MODELS_DIR / "Diaphragm" / "diaphragm_variables.h",

@@ -126,7 +126,7 @@ static int hinge_elastic(const rw_derived *d, const double q[2], const double dq
  * the mid-height part of Q1 takes |sat(q1/ty)| and Q2 takes |q2|: both have a kink at 0, which is
  * therefore a breakpoint. (The base indicator's root is at q1 = 0 too, but not always: a base
  * crossing within `tiny` of zero is taken at an event just before, by its direction of motion,
- * and the indicator's offset then moves its root past zero, rw_modes.c.) */
+ * and the indicator's offset then moves its root past zero, rw_events.c.) */
 static void paper_moments(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
                           double Q[2], double J[2][2])
 {

@@ -1,6 +1,6 @@
 /* RockingWall parameters: defaults, range checks, getters and setters, all from the one table
  * RW_PARAMETERS of rw_parameters.h. The rules that tie parameters together need the derived
- * quantities and are in rw_params_validate() (rw_physics.c). */
+ * quantities and are in rw_params_validate() (rw_dynamics.c). */
 #include "rw_parameters.h"
 
 #include <math.h>

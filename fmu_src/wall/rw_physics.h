@@ -1,4 +1,7 @@
-/* RockingWall physics: the equations of motion of docs/model.md in plain C99 (no FMI types).
+/* RockingWall physics: the equations of motion of docs/model.md in plain C99 (no FMI types), the
+ * wall's one public header. Implemented by job: rw_dynamics.c (derived quantities, equations of
+ * motion), rw_indicators.c (event indicators, collapse), rw_outputs.c (outputs, energy),
+ * rw_events.c (event rules), rw_hinge_laws.c (one entry per hinge law).
  *
  * State vector x = (q1, q2, dq1, dq2): absolute rotations of the lower and upper body (clockwise
  * positive) and their rates. Models 1 (parapet) and 2 (simplySupported) keep q2 slaved to q1
@@ -157,7 +160,8 @@ typedef struct {
     double u_top; /* diaphragm displacement [m] */
 } rw_input;
 
-/* Parameters (the table, defaults and per-value checks: rw_parameters.h) ----------------------- */
+/* Parameters and derived quantities (rw_dynamics.c; the table, defaults and per-value checks:
+ * rw_parameters.h) ------------------------------------------------------------------------------ */
 /* Every range, then the rules that tie parameters together. 0 = ok, else msg filled. */
 int rw_params_validate(const rw_params *p, char *msg, size_t n);
 void rw_derive(const rw_params *p, rw_derived *d);
@@ -170,7 +174,7 @@ int rw_is_rigid(const rw_params *p);
  * (rw_sync_mid_side) at its events and where it reports. */
 int rw_mid_switch_is_bookkeeping(const rw_params *p);
 
-/* Physics ------------------------------------------------------------------------------------ */
+/* Dynamics (rw_dynamics.c) --------------------------------------------------------------------- */
 /* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides), from the law. */
 void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2]);
 /* Trilinear / rigid resisting force F(D) of the 1DOF (Doherty), rigid uses side for sign(D). */
@@ -183,9 +187,6 @@ void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, c
 /* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */
 void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                       const double x[RW_NX], double *f_b, double *f_m);
-/* The indicators of the rigid hinges that are closed under m (bit k = indicator k): not lines but
- * 1 - |f|/cap + eps_f, with f affine in the inputs and one rotation */
-unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m);
 /* The moments rw_closed_forces gives under m, (f_b, f_m) = c + G q + g_ag ag + g_u u_top, with the
  * inverses of the capacities, as data for the exact engine (rw_closed_force_form) */
 typedef struct {
@@ -194,6 +195,8 @@ typedef struct {
 void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_closed_form *f);
 /* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
+
+/* Event indicators (rw_indicators.c) ----------------------------------------------------------- */
 void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ]);
 /* The same indicators, those of `mask` (bit k = indicator k; the others are left), with
@@ -204,8 +207,9 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
 #define RW_Z_ALL ((1u << RW_NZ) - 1u)
 void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ]);
-/* The collapse indicator's form on the region Q = c + J q (rw_collapse_form) */
-void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[2][2], rw_collapse_form *f);
+/* The indicators of the rigid hinges that are closed under m (bit k = indicator k): not lines but
+ * 1 - |f|/cap + eps_f, with f affine in the inputs and one rotation */
+unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m);
 /* The indicators that are lines of the rotations under the modes m (rw_indicator_line; the others
  * marked none): they change only with the modes, so the exact engine takes them once per region. */
 void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_indicator_line lines[RW_NZ]);
@@ -217,6 +221,8 @@ void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_
                               const rw_input *in_rate, const double x[RW_NX], const double xd[RW_NX],
                               const double *Q, const double (*J)[2], unsigned mask, double z[RW_NZ],
                               double dz[RW_NZ]);
+/* The collapse indicator's form on the region Q = c + J q (rw_collapse_form) */
+void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[2][2], rw_collapse_form *f);
 /* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
 double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                      const double x[RW_NX]);
@@ -225,12 +231,13 @@ double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double
 /* RW_STANDING, or why x is taken as collapsed (spec "Collapse"). */
 int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                     const double x[RW_NX]);
+
+/* Outputs and energy (rw_outputs.c) ------------------------------------------------------------ */
 double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                  const double x[RW_NX]);
 /* Rate of work of the ground motion on the wall (energy bookkeeping). */
 double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
                        const double x[RW_NX]);
-/* Outputs */
 double rw_s1(const rw_params *p, const double x[RW_NX]);
 double rw_s2(const rw_params *p, const double x[RW_NX]);
 double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX]);
@@ -240,7 +247,7 @@ double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
                  const double x[RW_NX], const double dx[RW_NX]);
 int rw_condition(const rw_params *p, const rw_mode *m);
 
-/* Modes -------------------------------------------------------------------------------------- */
+/* Event rules (rw_events.c) -------------------------------------------------------------------- */
 typedef void (*rw_log_fn)(void *ctx, const char *message);
 
 typedef struct {

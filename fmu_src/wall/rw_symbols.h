@@ -1,5 +1,5 @@
-/* The external symbols of RockingWall's physics (rw_parameters.c, rw_hinge_laws.c, rw_physics.c,
- * rw_modes.c), its engine (rw_engine*.c) and exact step (cs_exact.c) under FMI2_FUNCTION_PREFIX
+/* The external symbols of RockingWall's physics (rw_parameters.c, rw_hinge_laws.c, rw_dynamics.c,
+ * rw_indicators.c, rw_outputs.c, rw_events.c), its engine (rw_engine*.c) and exact step (cs_exact.c) under FMI2_FUNCTION_PREFIX
  * (see fmu_symbol.h). A new external function of the physics needs a line
  * here: the test combined_fmus_symbols lists any symbol without the prefix. */
 #ifndef RW_SYMBOLS_H

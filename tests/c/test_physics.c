@@ -1,4 +1,4 @@
-/* Unit tests of the RockingWall physics module (fmu_src/wall/rw_physics.c, rw_modes.c).
+/* Unit tests of the RockingWall physics module (fmu_src/wall/: rw_dynamics.c, rw_indicators.c, rw_outputs.c, rw_events.c).
  * Usage: test_physics derive_equations.json  (written by scripts/derive_equations.py --json) */
 #include "check.h"
 #include <math.h>

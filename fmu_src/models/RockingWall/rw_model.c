@@ -1,5 +1,5 @@
-/* RockingWall as an FMU model: the callbacks of fmu_model.h over the physics of rw_physics.c and
- * rw_modes.c. Holds the instance data (parameters, modes, inputs, states, counters); the FMI 2.0
+/* RockingWall as an FMU model: the callbacks of fmu_model.h over the wall's physics (rw_physics.h,
+ * fmu_src/wall/). Holds the instance data (parameters, modes, inputs, states, counters); the FMI 2.0
  * API itself is the shared fmi2Functions.c. */
 #include <math.h>
 #include <stdio.h>
