@@ -279,7 +279,7 @@ static unsigned closed_hinge_values(const rw_engine *e, const rw_input *in, cons
  * zero), as the law's collapse test takes the sides from the rotations: in the moment before an
  * impact or a switch, where a rotation has just passed zero, the law's G keeps |rotation| terms
  * that the region's constant moments turn negative. */
-static int collapse_form_holds(const rw_engine *e, const rw_mode *m, const double x[RW_NX])
+static int collapse_form_holds(const rw_engine *e, const rw_regime *m, const double x[RW_NX])
 {
     return !e->rigid || (m->side_b * x[0] >= 0.0 && m->side_m * (x[1] - x[0]) >= 0.0);
 }
@@ -289,7 +289,7 @@ static int collapse_form_holds(const rw_engine *e, const rw_mode *m, const doubl
  * lines of the rotations (rw_indicator_lines, taken once per region) are evaluated here; the
  * others (collapse, toppling, closed hinges) by the shared physics, with the region's affine
  * hinge moments where the law has them (rw_hinge_law.q_only). */
-static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_input *in,
+static void region_indicators(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_input *in,
                               const double x[RW_NX], const double xd[RW_NX], unsigned mask, double *restrict z,
                               double *restrict dz)
 {
@@ -342,7 +342,7 @@ static void region_indicators(const rw_engine *e, const rw_mode *m, const rw_spa
     }
 }
 
-static inline void eval_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s,
+static inline void eval_point(const rw_engine *e, const rw_regime *m, const rw_span *sp, double s,
                               const double C[2][4], rw_point *pt)
 {
     double xd[RW_NX];
@@ -352,7 +352,7 @@ static inline void eval_point(const rw_engine *e, const rw_mode *m, const rw_spa
     region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
-static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+static double indicator_at(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s)
 {
     double x[RW_NX], z[RW_NZ];
     rw_input in = span_input(sp, s);
@@ -362,7 +362,7 @@ static double indicator_at(const rw_engine *e, const rw_mode *m, const rw_span *
 }
 
 /* rate of indicator k at s (for the extremum of a possible double crossing) */
-static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s)
+static double indicator_rate(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s)
 {
     rw_point pt;
     eval_point(e, m, sp, s, NULL, &pt);
@@ -373,9 +373,9 @@ static double indicator_rate(const rw_engine *e, const rw_mode *m, const rw_span
  * for the first s in (lo, hi] where the boolean (value > 0) differs from its value at lo, starting
  * from the guess (NaN: none). Returns hi at convergence (to a few ulps of the absolute time), the
  * first point known to be past the root. */
-typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s);
+typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s);
 
-static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double lo,
+static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double lo,
                           double flo, double hi, double fhi, double rel_tol, double guess)
 {
     const int blo = flo > 0.0;
@@ -414,7 +414,7 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_mode *m, 
 /* Indicator k and its rate at s and, for a line of the rotations, its second rate (*curv; NaN for
  * the others). A line's value comes from the same state and the same evaluation as
  * region_indicators', so its sign at the root is the one every other test sees. */
-static double indicator_rates_at(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, double s,
+static double indicator_rates_at(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s,
                                  double x[RW_NX], double *rate, double *curv)
 {
     double xd[RW_NX], z[RW_NZ], dz[RW_NZ];
@@ -449,7 +449,7 @@ static double root_step(double f, double df, double ddf)
  * halved it). Near the root the last step is taken a little past it, so that the bracket closes.
  * Returns hi, the first point known to be past the root, with the state there in x_hi if it was
  * evaluated here (*x_valid). */
-static double refine_root(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, double lo,
+static double refine_root(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, int was, double lo,
                           double flo, double hi, double fhi, double guess, double x_hi[RW_NX], int *x_valid)
 {
     double width_before = hi - lo, s = guess;
@@ -584,7 +584,7 @@ static double hermite_root(double za, double da, double zb, double db, double L)
  * clear zero; then the piece is split (a breakpoint indicator |w| - c has a kink at w = 0, so one
  * piece can hold a dip and a turn), and at the finest level the extremum is located. On a dip,
  * *lo, *hi bracket its first crossing. */
-static int dip(const rw_engine *e, const rw_mode *m, const rw_span *sp, int k, int was, const rw_point *a,
+static int dip(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, int was, const rw_point *a,
                const rw_point *b, int depth, double *lo, double *flo, double *hi, double *fhi)
 {
     const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
@@ -671,7 +671,7 @@ static inline int insert_by_guess(int order[RW_NZ], int n, const double guess[RW
 
 /* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
  * e->b[k], including a dip through zero and back inside the substep. Returns 1 and *s_event, or 0. */
-static int first_event(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_point *b,
+static int first_event(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a, const rw_point *b,
                        unsigned suspects, double *s_event, int *k_event, double x_event[RW_NX])
 {
     int order[RW_NZ], n = 0, i, found = 0, x_known = 0;
@@ -730,7 +730,7 @@ static double s_of(const rw_engine *e, int which, const double x[RW_NX])
     return e->s_coef[which][0] * x[0] + e->s_coef[which][1] * x[1];
 }
 
-static double rate_of_s(const rw_engine *e, const rw_mode *m, const rw_span *sp, int which, double s)
+static double rate_of_s(const rw_engine *e, const rw_regime *m, const rw_span *sp, int which, double s)
 {
     double x[RW_NX], v[RW_NX] = {0, 0, 0, 0};
     (void)m;
@@ -747,7 +747,7 @@ static void track_peak(rw_engine *e, int which, double value)
 }
 
 /* peaks over [a, b] of the span: the ends and an interior turning point of s1, s2 */
-static void peaks_on(rw_engine *e, const rw_mode *m, const rw_span *sp, const double xa[RW_NX], double sa,
+static void peaks_on(rw_engine *e, const rw_regime *m, const rw_span *sp, const double xa[RW_NX], double sa,
                      const double xb[RW_NX], double sb)
 {
     int w;
@@ -801,7 +801,7 @@ static void track_states(rw_engine *e, const double z[RW_NZ])
     }
 }
 
-static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX])
+static void set_indicator_states(rw_engine *e, const rw_regime *m, const rw_input *in, const double x[RW_NX])
 {
     double z[RW_NZ];
     rw_event_indicators(&e->P, &e->D, m, in, x, z);
@@ -810,7 +810,7 @@ static void set_indicator_states(rw_engine *e, const rw_mode *m, const rw_input 
 
 /* The model's event iteration at t (as the FMU's hosts run it), then its collapse test.
  * Returns 0, 1 on collapse, or an error code + 1 (Zeno). */
-static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *in)
+static int apply_event(rw_engine *e, rw_regime *m, double x[RW_NX], double t, const rw_input *in)
 {
     rw_event_result r;
     int rounds = 0;
@@ -836,7 +836,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
             e->impact_energy[e->impacts] = energy;
         }
         e->impacts += r.impacts;
-    } while ((r.modes_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
+    } while ((r.regime_changed || r.states_changed) && ++rounds < RW_MAX_EVENT_ROUNDS);
     e->b_stale = 1; /* the indicator states at x: from the start point of the next span (advance) */
     e->reason = rw_collapse_reason(&e->P, &e->D, m, in, x);
     if (e->reason != RW_STANDING) {
@@ -849,7 +849,7 @@ static int apply_event(rw_engine *e, rw_mode *m, double x[RW_NX], double t, cons
 
 /* The direction that picks the region on a breakpoint: dq a moment later (the acceleration is
  * continuous across a breakpoint, so this decides a grazing touch by its curvature). */
-static void selection_rate(const rw_engine *e, const rw_mode *m, const rw_input *in, const double x[RW_NX],
+static void selection_rate(const rw_engine *e, const rw_regime *m, const rw_input *in, const double x[RW_NX],
                            double dq_sel[2])
 {
     double dx[RW_NX];
@@ -911,7 +911,7 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
 /* The values and rates of the indicators of `mask` at the state x of the span's motion at s, for
  * the indicators that are lines, the toppling indicator, the collapse form and the closed hinges'
  * form: their rates need the rotations' rates alone (x[2], x[3]), not a propagation to s. */
-static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span *sp, const double x[RW_NX],
+static void point_from_state(const rw_engine *e, const rw_regime *m, const rw_span *sp, const double x[RW_NX],
                              double s, unsigned mask, rw_point *pt)
 {
     const double xd[RW_NX] = {x[2], x[3], 0.0, 0.0};
@@ -925,7 +925,7 @@ static void point_from_state(const rw_engine *e, const rw_mode *m, const rw_span
  * time and state: the closed hinges' indicators are taken again at the span's input (in *buf), since
  * their rates follow the input's; the other indicators depend on the state and the rotations'
  * rates alone. */
-static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_mode *m, const rw_span *sp,
+static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_regime *m, const rw_span *sp,
                                                   rw_point *buf)
 {
     *buf = e->carry;
@@ -933,14 +933,14 @@ static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_m
     return buf;
 }
 
-static const rw_point *carried_start(const rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
+static const rw_point *carried_start(const rw_engine *e, const rw_regime *m, const rw_span *sp, rw_point *buf)
 {
     return e->closed_mask ? carried_with_closed_hinges(e, m, sp, buf) : &e->carry;
 }
 
 /* The start point of a span: the end point of the span before, where that holds (carried_start),
  * else evaluated into *buf */
-static const rw_point *start_point(rw_engine *e, const rw_mode *m, const rw_span *sp, rw_point *buf)
+static const rw_point *start_point(rw_engine *e, const rw_regime *m, const rw_span *sp, rw_point *buf)
 {
     if (e->carry_valid && e->region_valid && e->carry_t == sp->t0 && memcmp(e->carry.x, sp->x0, sizeof e->carry.x) == 0)
         return carried_start(e, m, sp, buf);
@@ -966,7 +966,7 @@ static int q_fixes_region(const rw_engine *e, const rw_span *sp)
 
 /* After an event of the base or mid-height hinge indicator under a law whose hinge moments depend
  * on q alone (q_fixes_region), the region is the same: the event maps change rates and
- * modes, never q, and such a law's region is fixed by q, except on a breakpoint itself, where the
+ * the regime, never q, and such a law's region is fixed by q, except on a breakpoint itself, where the
  * direction of motion picks it (then it is found again). Only the lines (sides, offsets) change. */
 static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k_event, const double x[RW_NX])
 {
@@ -977,7 +977,7 @@ static int hinge_event_keeps_region(const rw_engine *e, const rw_span *sp, int k
     return 1;
 }
 
-static void region_lines(rw_engine *e, const rw_mode *m);
+static void region_lines(rw_engine *e, const rw_regime *m);
 
 /* What goes on after an event that keeps the region (hinge_event_keeps_region: a hinge's change of
  * side under semiRigidHinge or dohertyHinge), without going back to advance(): the lines and the
@@ -999,7 +999,7 @@ typedef struct {
     int restart;
 } rw_piece;
 
-static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const rw_piece *pc, const double x[RW_NX],
+static int go_on_after_event(rw_engine *e, const rw_regime *m, rw_span *sp, const rw_piece *pc, const double x[RW_NX],
                              int state_kept, double s_ev, rw_point *at_event, rw_point *pb)
 {
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
@@ -1028,7 +1028,7 @@ static int go_on_after_event(rw_engine *e, const rw_mode *m, rw_span *sp, const 
  * becomes *event_point, the point after it). Returns 0 when the piece has no more events (its rest
  * is quiet), -1 when an event ends the span (the caller starts a new one), or a collapse / error
  * code (apply_event). */
-static int events_in_piece(rw_engine *e, rw_mode *m, rw_span *sp, const rw_piece *pc, const rw_point **pa,
+static int events_in_piece(rw_engine *e, rw_regime *m, rw_span *sp, const rw_piece *pc, const rw_point **pa,
                            rw_point *pb, unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
 {
     double s_ev = 0.0;
@@ -1059,7 +1059,7 @@ static int events_in_piece(rw_engine *e, rw_mode *m, rw_span *sp, const rw_piece
  * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
  * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
  * pieces of length len/n (NULL: computed). */
-static int resolve(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+static int resolve(rw_engine *e, rw_regime *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
                    const rw_linear_input *in, double t_in, double len, int n, const double (*C)[4], double x[RW_NX],
                    double *t)
 {
@@ -1143,7 +1143,7 @@ typedef struct {
     double ddq_a[2], ddq_b[2];
 } rw_slow_ends;
 
-static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span *sp, double s, const double (*C)[4],
+static void eval_slow_point(const rw_engine *e, const rw_regime *m, const rw_span *sp, double s, const double (*C)[4],
                             const int *fast, rw_point *pt, double ddq[2], double *x_full)
 {
     double xd[RW_NX];
@@ -1158,7 +1158,7 @@ static void eval_slow_point(const rw_engine *e, const rw_mode *m, const rw_span 
 
 /* The band of the indicators of `mask` near the slow point a, evaluated: twice the larger change
  * of each at a +- dq_fast */
-static void band_by_evaluation(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a,
+static void band_by_evaluation(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a,
                                const rw_rates *r, unsigned mask, double band[RW_NZ])
 {
     double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
@@ -1178,7 +1178,7 @@ static void band_by_evaluation(const rw_engine *e, const rw_mode *m, const rw_sp
  * c + s|w| + t w of w = a.q, at most (|s| + |t|) |a.dq_fast|; for the toppling indicator,
  * max |dq_fast|/q_topple; the closed hinges' evaluated (band_by_evaluation). The collapse
  * indicator's is evaluated only where substep_suspects needs it. */
-static void band_of(const rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
+static void band_of(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
                     double band[RW_NZ])
 {
     const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
@@ -1241,7 +1241,7 @@ static int peak_possible(const rw_engine *e, int which, const rw_rates *r, const
  * when the substep is quiet. Then *peaks_full says whether a new peak is possible there: the band
  * is then negligible (below 1e-9 of the peak) and the peaks are taken on the full motion at the
  * substep's resolution. ends: the slow part's ends; x_end: the full state at the end. */
-static unsigned substep_suspects(const rw_engine *e, const rw_mode *m, const rw_span *sp, double L,
+static unsigned substep_suspects(const rw_engine *e, const rw_regime *m, const rw_span *sp, double L,
                                  const double (*C)[4], const rw_rates *r, int *peaks_full, rw_slow_ends *ends,
                                  double x_end[RW_NX])
 {
@@ -1323,7 +1323,7 @@ static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L,
  * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. The crossings
  * are refined the earliest guess first; a later line is monotone over the substep, so one still on
  * its tracked side at the first root crosses after it and needs no refinement. */
-static int crossings_through_band(const rw_engine *e, const rw_mode *m, const rw_span *sp, unsigned suspects,
+static int crossings_through_band(const rw_engine *e, const rw_regime *m, const rw_span *sp, unsigned suspects,
                                   double L, const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX],
                                   double *s_event, int *k_event, double x_event[RW_NX])
 {
@@ -1366,7 +1366,7 @@ static double peak_share(const rw_engine *e, const double x[RW_NX])
  * peak so far (peak_possible), [u, v] is halved until a half turns the fast mode by at most 8 rad,
  * and such a piece takes peaks_on on the full motion at the fast rate. Only the neighbourhood of a
  * new peak is resolved, and without the indicators. xu, xv: the slow part's states at u and v. */
-static void peaks_under_band(rw_engine *e, const rw_mode *m, const rw_span *sp, const rw_rates *r, double u,
+static void peaks_under_band(rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_rates *r, double u,
                              const double xu[RW_NX], double v, const double xv[RW_NX], int depth)
 {
     double reach, slow_max, len = v - u, xa[RW_NX], xb[RW_NX];
@@ -1400,7 +1400,7 @@ static void peaks_under_band(rw_engine *e, const rw_mode *m, const rw_span *sp, 
 
 /* The substep [0, L] of the span taken whole (quiet, or quiet but for indicators without a
  * crossing): x, *t at its end x_end, the slow end point carried to the next substep. */
-static void accept_substep(rw_engine *e, const rw_mode *m, const rw_span *sp, double L, const double x_end[RW_NX],
+static void accept_substep(rw_engine *e, const rw_regime *m, const rw_span *sp, double L, const double x_end[RW_NX],
                            int peaks_full, const rw_slow_ends *ends, double t_to, double x[RW_NX], double *t)
 {
     e->steps++;
@@ -1421,7 +1421,7 @@ static void accept_substep(rw_engine *e, const rw_mode *m, const rw_span *sp, do
  * halves are or are short enough (8 pieces at the fast rate) to be resolved in full, so that only
  * the neighbourhood of an event that the band cannot settle, or of a new peak, is resolved at the
  * fast rate. Returns as resolve(). */
-static int fast_substep(rw_engine *e, rw_mode *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
+static int fast_substep(rw_engine *e, rw_regime *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
                         const rw_linear_input *in, double t_in, double t_to, const double (*C)[4], const rw_rates *r,
                         double x[RW_NX], double *t, int depth)
 {
@@ -1489,7 +1489,7 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 /* The indicator states after an event: at the start point of the span that follows, which is kept
  * for resolve() (the region's own evaluation: the lines and the collapse form as the physics gives
  * them, so the same signs as rw_event_indicators) */
-static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_span *sp)
+static void refresh_indicator_states(rw_engine *e, const rw_regime *m, const rw_span *sp)
 {
     rw_point pt;
     eval_point(e, m, sp, 0.0, NULL, &pt);
@@ -1498,13 +1498,13 @@ static void refresh_indicator_states(rw_engine *e, const rw_mode *m, const rw_sp
     carry_point(e, &pt, sp->t0);
 }
 
-/* the indicators that are lines of the rotations under the modes m (they change only at events).
+/* the indicators that are lines of the rotations under the regime m (they change only at events).
  * Under a law of q alone the mid-height hinge's switch changes nothing in the motion
  * (rw_mid_switch_is_bookkeeping): its line is left out, so the engine does not stop there. Under a
  * wall held at its top that switch comes microseconds after each base crossing, and each such pair
  * of events cost as much as seven quiet segments. The side is brought up to date by the event
  * update at the next event and at the end of every step (rw_engine_step). */
-static void region_lines(rw_engine *e, const rw_mode *m)
+static void region_lines(rw_engine *e, const rw_regime *m)
 {
     int k;
     rw_indicator_lines(&e->P, &e->D, m, e->lines);
@@ -1544,8 +1544,8 @@ static void collapse_form_of_region(rw_engine *e)
 }
 
 /* The region of the motion at (x, t): kept from one input segment to the next, since without an
- * event no indicator, so no breakpoint and no mode, has changed; found again after each event. */
-static rw_cache_entry *current_region(rw_engine *e, const rw_mode *m, const double x[RW_NX], double t,
+ * event no indicator, so no breakpoint and no regime, has changed; found again after each event. */
+static rw_cache_entry *current_region(rw_engine *e, const rw_regime *m, const double x[RW_NX], double t,
                                       const rw_linear_input *in, double t_in, double g0[2], rw_affine_Q *aq)
 {
     rw_cache_entry *R;
@@ -1598,7 +1598,7 @@ static int event_ahead(const rw_engine *e, double piece)
 
 /* Advance over [t, t_end] with the input linear (in, given at t_in). Returns 0, 1 on collapse
  * (x, t at the collapse), or an error code + 1. */
-static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
+static int advance(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
                    double t_in)
 {
     while (*t < t_end) {
@@ -1655,7 +1655,7 @@ static int advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double 
  * the closed hinges' indicators vary, through the input. 1 - |f|/cap + eps_f with f affine in the
  * input, which is linear over a segment, is concave there: when it holds (> 0) at both ends it holds
  * throughout. Such a segment needs its end values alone. */
-static int at_rest(const rw_engine *e, const rw_mode *m)
+static int at_rest(const rw_engine *e, const rw_regime *m)
 {
     return e->rigid && m->closed_b && (m->closed_m || e->P.support != RW_FLEXIBLE_TOP);
 }
@@ -1684,7 +1684,7 @@ static int rest_holds(rw_engine *e, double t_end, const rw_linear_input *in, dou
  * at most RW_PHASE_PER_SUBSTEP), and the quick test clears every indicator. Such a segment is taken
  * here with the same evaluations as resolve() (so the same numbers), without its set-up; any other
  * segment is left untouched to rw_engine_advance. */
-int rw_engine_quiet_segment(rw_engine *e, const rw_mode *m, double x[RW_NX], double *t, double t_end,
+int rw_engine_quiet_segment(rw_engine *e, const rw_regime *m, double x[RW_NX], double *t, double t_end,
                             const rw_linear_input *in, double t_in)
 {
     const double len = t_end - *t;
@@ -1778,7 +1778,7 @@ void rw_engine_free(rw_engine *e)
 
 /* Did the inputs jump at t (a new step's values) so that an indicator changed sign? Then the
  * model's event iteration at t, as cs_cvode.c does at a communication point. */
-static int input_jump(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const rw_input *now)
+static int input_jump(rw_engine *e, rw_regime *m, double x[RW_NX], double t, const rw_input *now)
 {
     double z[RW_NZ];
     int k;
@@ -1793,7 +1793,7 @@ static int input_jump(rw_engine *e, rw_mode *m, double x[RW_NX], double t, const
     return 0;
 }
 
-int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
+int rw_engine_step(rw_engine *e, rw_regime *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
                    long *impacts, double *t_reached, char *msg, size_t n)
 {
     const long before = e->impacts;
@@ -1823,12 +1823,12 @@ int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h
 }
 
 /* ---- for the batch run (rw_engine_internal.h) ------------------------------------------------- */
-/* The start of a run at t0 from the state x (the modes from it, the hosts' initial event iteration,
+/* The start of a run at t0 from the state x (the regime from it, the hosts' initial event iteration,
  * the collapse test): 0, 1 if collapsed, or an error code + 1. */
-int rw_engine_begin(rw_engine *e, rw_mode *m, double x[RW_NX], double t0, const rw_input *in)
+int rw_engine_begin(rw_engine *e, rw_regime *m, double x[RW_NX], double t0, const rw_input *in)
 {
     memset(m, 0, sizeof *m);
-    rw_init_modes(&e->P, &e->D, in, x, m, NULL, NULL);
+    rw_init_regime(&e->P, &e->D, in, x, m, NULL, NULL);
     e->t_last_event = t0;
     e->same_instant = 0;
     e->events--; /* the initial iteration is not a located event */
@@ -1838,7 +1838,7 @@ int rw_engine_begin(rw_engine *e, rw_mode *m, double x[RW_NX], double t0, const 
     return apply_event(e, m, x, t0, in);
 }
 
-int rw_engine_advance(rw_engine *e, rw_mode *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
+int rw_engine_advance(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
                       double t_in)
 {
     return advance(e, m, x, t, t_end, in, t_in);

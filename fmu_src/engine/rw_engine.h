@@ -128,7 +128,7 @@ typedef struct {
     int h_valid[2], h_next;
 } rw_cache_entry;
 
-/* the indicator lines of the current modes as arrays (rw_indicator_line's fields), for the
+/* the indicator lines of the current regime as arrays (rw_indicator_line's fields), for the
  * vectorized evaluation of all of them at once */
 typedef struct {
     double a0[RW_NZ], a1[RW_NZ], s[RW_NZ], t[RW_NZ], c[RW_NZ];
@@ -147,7 +147,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     int region_valid, region;
     double region_g0[2];
     rw_affine_Q region_aq;
-    rw_indicator_line lines[RW_NZ]; /* the indicators that are lines under the current modes */
+    rw_indicator_line lines[RW_NZ]; /* the indicators that are lines under the current regime */
     unsigned line_mask;
     rw_line_arrays line_arrays;
     rw_collapse_form collapse_form; /* the collapse indicator of the region (if region_aq.valid) */
@@ -193,7 +193,7 @@ typedef struct rw_engine { /* by value in the FMU's data; use the functions, not
     double *impact_t, *impact_energy;
     size_t impact_cap;
     int b_valid;                /* b holds the indicator states of the last step's end */
-    int b_stale;                /* an event changed the modes: b is set at the next span's start */
+    int b_stale;                /* an event changed the regime: b is set at the next span's start */
     int region_keep;            /* the event kept the region (rw_engine.c hinge_event_keeps_region) */
     char msg[256];
 } rw_engine;
@@ -205,12 +205,12 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n);
 /* A heap engine over p (NULL with msg filled if p is refused or the parapet). */
 rw_engine *rw_engine_new(const rw_params *p, char *msg, size_t n);
 void rw_engine_free(rw_engine *e);
-/* Advance x, m (initialised by the caller: rw_init_modes and the initial event iteration) from t
+/* Advance x, m (initialised by the caller: rw_init_regime and the initial event iteration) from t
  * to t + h with the inputs linear over the step (value at t and slope). If the inputs jumped at t
  * since the previous step so that an indicator changed sign, the model's event iteration runs at
  * t first (an input can open a hinge at rest). Impacts are added to *impacts. Returns 0, 1 if the
  * wall collapsed at *t_reached (<= t + h), or an error code + 1 (msg filled). */
-int rw_engine_step(rw_engine *e, rw_mode *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
+int rw_engine_step(rw_engine *e, rw_regime *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
                    long *impacts, double *t_reached, char *msg, size_t n);
 
 /* ---- one linear region on its own (for tests of the closed form) ------------------------------

@@ -122,7 +122,7 @@ static void result_init(rw_engine_result *res)
 }
 
 /* Start: the state at t_start (x0 or rest) and the input there, then rw_engine_begin. */
-static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_mode *m, double x[RW_NX])
+static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_regime *m, double x[RW_NX])
 {
     const ptrdiff_t seg = segment_of(rec, o->t_start);
     const rw_linear_input li = record_segment(rec, seg);
@@ -137,7 +137,7 @@ static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options
 int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *o, rw_engine_result *res)
 {
     rw_engine *e;
-    rw_mode m;
+    rw_regime m;
     double x[RW_NX], t;
     ptrdiff_t seg;
     int rc;

@@ -146,7 +146,7 @@ static rw_cache_entry *cache_add(rw_engine *e, int cb, int cm, const double key[
 
 /* Doherty's 1DOF (support 2): mode 0 = q1 with (W/3g) D'' = -(W/2g) ag + F0 + F1 D, D = q1 h/2;
  * mode 1 = q1 + q2 = 0 (slaved, nothing acts on it). */
-static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+static rw_cache_entry *region_1dof(rw_engine *e, const rw_regime *m, const double x[RW_NX], const double dq_sel[2],
                                    double g0[2])
 {
     const rw_params *p = &e->P;
@@ -174,7 +174,7 @@ static rw_cache_entry *region_1dof(rw_engine *e, const rw_mode *m, const double 
 
 /* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
  * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
-static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2])
+static rw_cache_entry *region_closed(rw_engine *e, const rw_regime *m, double g0[2])
 {
     const rw_derived *d = &e->D;
     const double key[4] = {0, 0, 0, 0};
@@ -204,9 +204,9 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_mode *m, double g0[2
     return c;
 }
 
-/* The region the state x (moving along dq_sel) is in, under the modes m. NULL if the engine
+/* The region the state x (moving along dq_sel) is in, under the regime m. NULL if the engine
  * cannot decompose it (msg filled). */
-rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_mode *m, const double x[RW_NX], const double dq_sel[2],
+rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_regime *m, const double x[RW_NX], const double dq_sel[2],
                                  double g0[2], rw_affine_Q *aq)
 {
     double Q[2], J[2][2], c[2], key[4];

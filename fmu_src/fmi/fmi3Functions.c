@@ -889,7 +889,7 @@ fmi3Status fmi3DeserializeFMUState(fmi3Instance instance, const fmi3Byte seriali
 fmi3Status fmi3EvaluateDiscreteStates(fmi3Instance instance)
 {
     ENTER(fmi3EvaluateDiscreteStates);
-    LEAVE(fmi3OK); /* the modes change only in fmi3UpdateDiscreteStates */
+    LEAVE(fmi3OK); /* the discrete states change only in fmi3UpdateDiscreteStates */
 }
 
 /* In Co-Simulation the step (exact engine or CVODE) iterates its events itself, so Event Mode

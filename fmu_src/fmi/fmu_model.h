@@ -58,14 +58,14 @@ typedef struct {
     /* start values of everything (fmi2Instantiate, fmi2Reset) */
     void (*reset)(void *M);
     /* Getters for a list of value references already checked to be of the right type.
-     * `initializing` is 1 before fmi2ExitInitializationMode (modes not decided yet). */
+     * `initializing` is 1 before fmi2ExitInitializationMode (discrete states not decided yet). */
     void (*get_real)(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[]);
     void (*get_integer)(void *M, int initializing, const unsigned vr[], size_t n, int v[]); /* optional */
     void (*get_boolean)(void *M, const unsigned vr[], size_t n, int v[]);                   /* optional */
     /* Setters for one settable variable with a finite value: 0 = stored, else msg says why not. */
     int (*set_real)(void *M, unsigned vr, double v, char *msg, size_t n);   /* optional */
     int (*set_integer)(void *M, unsigned vr, int v, char *msg, size_t n);   /* optional */
-    /* fmi2ExitInitializationMode: validate the parameters together, decide the modes.
+    /* fmi2ExitInitializationMode: validate the parameters together, decide the discrete states.
      * 0 = ok, else msg says why not. Optional. */
     int (*exit_init)(void *M, double time, const fmu_logger *log, char *msg, size_t n);
 

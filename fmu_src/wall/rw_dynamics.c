@@ -104,14 +104,14 @@ int rw_mid_switch_is_bookkeeping(const rw_params *p)
 /* ---- forces -------------------------------------------------------------------------------- */
 
 /* Q(q) of the open hinges, from the law (docs/model.md "Hinge laws"). */
-void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2])
+void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_regime *m, const double x[RW_NX], double Q[2])
 {
     double J[2][2];
     law(p)->moments(d, m->side_b, m->side_m, x, x + 2, Q, J);
 }
 
 /* Doherty's 1DOF resisting force F(D) (Fig. 5.2). */
-double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, double D)
+double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_regime *m, double D)
 {
     const double a = fabs(D);
     double f;
@@ -138,20 +138,20 @@ static void load(const rw_derived *d, const rw_input *in, double F[2])
 }
 
 /* Base closed, mid open: q2'' from row 2 alone. */
-static double q2dd_base_closed(const rw_derived *d, const rw_mode *m, const double F[2], double q2)
+static double q2dd_base_closed(const rw_derived *d, const rw_regime *m, const double F[2], double q2)
 {
     return (F[1] - d->K[1][1] * q2 - d->cap_m * m->side_m) / d->M[1][1];
 }
 
 /* Mid closed, base open: q1 = q2 = theta moving together. */
-static double thdd_mid_closed(const rw_derived *d, const rw_mode *m, const double F[2], double th)
+static double thdd_mid_closed(const rw_derived *d, const rw_regime *m, const double F[2], double th)
 {
     const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
     const double kt = d->K[0][0] + 2.0 * d->K[0][1] + d->K[1][1];
     return (F[0] + F[1] - kt * th - d->cap_b * m->side_b) / mt;
 }
 
-void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                     const double x[RW_NX], double dx[RW_NX])
 {
     dx[0] = x[2];
@@ -206,7 +206,7 @@ void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, c
 
 /* Generalised moment a closed hinge must resist (reaction = -f), spec "Opening tendency".
  * Parapet: f_b = -ag (cap g tan(alpha)); simplySupported: f_b = -W ag/(2g) (cap F_r). */
-void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                       const double x[RW_NX], double *f_b, double *f_m)
 {
     double F[2];
@@ -226,9 +226,9 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m,
     }
 }
 
-/* rw_closed_forces is affine in the rotations and the inputs under one mode: its coefficients are
+/* rw_closed_forces is affine in the rotations and the inputs under one regime: its coefficients are
  * its differences over unit steps of each, so that the engine's values are this function's */
-void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_closed_form *f)
+void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_regime *m, rw_closed_form *f)
 {
     const double x0[RW_NX] = {0.0, 0.0, 0.0, 0.0}, x1[RW_NX] = {1.0, 0.0, 0.0, 0.0}, x2[RW_NX] = {0.0, 1.0, 0.0, 0.0};
     const rw_input none = {0.0, 0.0}, ag = {1.0, 0.0}, u = {0.0, 1.0};
@@ -259,7 +259,7 @@ void rw_caps(const rw_params *p, const rw_derived *d, double *cb, double *cm)
  * Doherty's 1DOF force as an affine function F = F0 + F1*D on the region the motion goes into:
  * on a breakpoint (to rounding) the direction dD decides, as the 2DOF laws' past() does. F is
  * continuous at the breakpoints, so F0 = F(D) - F1*D is the same from both sides. */
-void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_mode *m, double D, double dD,
+void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_regime *m, double D, double dD,
                           double *F0, double *F1)
 {
     const double a = fabs(D), out = sgn(D != 0.0 ? D : dD) * dD; /* > 0: moving away from 0 */

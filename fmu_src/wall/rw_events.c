@@ -1,6 +1,7 @@
-/* RockingWall discrete modes: initial modes, base impacts (Housner restitution, paper Sec. 3.2/4),
- * mid-hinge switches, and the rest / closed-hinge states of rigid hinges (docs/model.md
- * "Rigid hinges"). Called only in event mode; continuous-time code uses the stored modes.
+/* RockingWall event rules, which change the contact regime (rw_regime): the initial regime, base
+ * impacts (Housner restitution, paper Sec. 3.2/4), mid-hinge switches, and the rest / closed-hinge
+ * states of rigid hinges (docs/model.md "Rigid hinges"). Called only in event mode; continuous-time
+ * code uses the stored regime.
  *
  * Robustness: a crossing is decided from the stored side and the hinge's own event indicator
  * (see crossed()); an event reported slightly before the root acts on the crossing about to
@@ -43,7 +44,7 @@ static double offset_for(const rw_derived *d, double v)
     return v < 0.0 ? eps - v : eps;
 }
 
-static void set_offsets(const rw_derived *d, rw_mode *m, const double x[RW_NX])
+static void set_offsets(const rw_derived *d, rw_regime *m, const double x[RW_NX])
 {
     m->zoff_b = offset_for(d, m->side_b * x[0]);
     m->zoff_m = offset_for(d, m->side_m * (x[1] - x[0]));
@@ -55,21 +56,21 @@ static void slave(const rw_params *p, double x[RW_NX])
     else if (p->support == RW_SIMPLY_SUPPORTED) { x[1] = -x[0]; x[3] = -x[2]; }
 }
 
-static void close_base(const rw_params *p, rw_mode *m, double x[RW_NX])
+static void close_base(const rw_params *p, rw_regime *m, double x[RW_NX])
 {
     m->closed_b = 1;
     x[0] = x[2] = 0.0;
     if (p->support != RW_FLEXIBLE_TOP || m->closed_m) x[1] = x[3] = 0.0;
 }
 
-static void close_mid(rw_mode *m, double x[RW_NX])
+static void close_mid(rw_regime *m, double x[RW_NX])
 {
     m->closed_m = 1;
     x[1] = x[0];
     x[3] = x[2];
 }
 
-int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                    const double x[RW_NX], rw_log_fn log, void *ctx)
 {
     int iter, opened = 0;
@@ -87,7 +88,7 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw
         if (ob && om) {
             /* both overloaded: base alone if the mid hinge then holds, else mid alone if the base
              * then holds, else both */
-            rw_mode t = *m;
+            rw_regime t = *m;
             double fb2, fm2;
             t.closed_b = 0;
             t.side_b = sgni(fb);
@@ -138,13 +139,13 @@ static int base_past_elastic(const rw_params *p, const rw_derived *d, const doub
 /* Counting of base impacts: with rigid hinges every base crossing is one (the wall only moves
  * once uplifted); with a semi-rigid law the base oscillates elastically through q1 = 0 before any
  * uplift, so a crossing counts only when the base was past its elastic range since the last one. */
-static void note_uplift(const rw_params *p, const rw_derived *d, int rigid, rw_mode *m, const double x[RW_NX])
+static void note_uplift(const rw_params *p, const rw_derived *d, int rigid, rw_regime *m, const double x[RW_NX])
 {
     if (!rigid && base_past_elastic(p, d, x)) m->uplifted_b = 1;
 }
 
-void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
-                   rw_mode *m, rw_log_fn log, void *ctx)
+void rw_init_regime(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
+                    rw_regime *m, rw_log_fn log, void *ctx)
 {
     const int rigid = rw_is_rigid(p);
     int need_acc = 0;
@@ -173,14 +174,14 @@ void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, 
         if ((need_acc & 2) && dx[3] - dx[2] != 0.0) m->side_m = sgni(dx[3] - dx[2]);
     }
     if (m->closed_b) close_base(p, m, x);
-    logf_(log, ctx, "initial modes: base %s side %+d, mid %s side %+d", m->closed_b ? "closed" : "open",
+    logf_(log, ctx, "initial regime: base %s side %+d, mid %s side %+d", m->closed_b ? "closed" : "open",
           m->side_b, m->closed_m ? "closed" : "open", m->side_m);
     rw_open_hinges(p, d, m, in, x, log, ctx);
     set_offsets(d, m, x);
 }
 
 /* The mid-height hinge's switch: its side changes where x = q2 - q1 crosses zero. 1 if it did. */
-static int mid_switch(const rw_derived *d, rw_mode *m, const double x[RW_NX], rw_log_fn log, void *ctx)
+static int mid_switch(const rw_derived *d, rw_regime *m, const double x[RW_NX], rw_log_fn log, void *ctx)
 {
     const double xr = x[1] - x[0], dxr = x[3] - x[2];
     if (!crossed(m->side_m, xr, dxr, d)) return 0;
@@ -189,18 +190,18 @@ static int mid_switch(const rw_derived *d, rw_mode *m, const double x[RW_NX], rw
     return 1;
 }
 
-int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX])
+int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_regime *m, const double x[RW_NX])
 {
     if (!rw_mid_switch_is_bookkeeping(p) || !mid_switch(d, m, x, NULL, NULL)) return 0;
     m->zoff_m = offset_for(d, m->side_m * (x[1] - x[0])); /* the base's offset stays: no event here */
     return 1;
 }
 
-void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+void rw_event_update(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx)
 {
     const int rigid = rw_is_rigid(p); /* once: a look-up in the law table, and events come in thousands */
-    r->impacts = r->states_changed = r->modes_changed = 0;
+    r->impacts = r->states_changed = r->regime_changed = 0;
     note_uplift(p, d, rigid, m, x);
 
     /* base: q1 crossing 0 = impact (paper Sec. 4): rates times er, pivot changes side; counted
@@ -215,7 +216,7 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
             m->side_b = eff;
             if (rigid || m->uplifted_b) r->impacts++;
             m->uplifted_b = 0;
-            r->modes_changed = 1;
+            r->regime_changed = 1;
             if (x[2] != v1 || x[3] != v2) r->states_changed = 1;
             logf_(log, ctx, "base impact: q1 = %g, dq1 %g -> %g, pivot side %+d", x[0], v1, x[2], eff);
             if (rigid && fabs(x[2]) < p->restRate) {
@@ -228,7 +229,7 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
 
     /* mid hinge (flexibleTop): x = q2 - q1 crossing 0 = switch of condition, no energy loss */
     if (p->support == RW_FLEXIBLE_TOP && !(rigid && m->closed_m) && mid_switch(d, m, x, log, ctx)) {
-        r->modes_changed = 1;
+        r->regime_changed = 1;
         if (rigid && fabs(x[3] - x[2]) < p->restRate) {
             close_mid(m, x);
             r->states_changed = 1;
@@ -237,6 +238,6 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const 
     }
 
     /* closed rigid hinges: opening test (applied at once, also right after a closing) */
-    if (rigid && rw_open_hinges(p, d, m, in, x, log, ctx)) r->modes_changed = 1;
+    if (rigid && rw_open_hinges(p, d, m, in, x, log, ctx)) r->regime_changed = 1;
     set_offsets(d, m, x);
 }

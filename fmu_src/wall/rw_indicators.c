@@ -28,13 +28,13 @@ double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double
 }
 
 /* The hinge moments the collapse test takes at x: the sides from the rotations themselves */
-static void collapse_moments(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+static void collapse_moments(const rw_params *p, const rw_derived *d, const rw_regime *m, const double x[RW_NX],
                              double Q[2], double J[2][2])
 {
     law(p)->moments(d, side_of(x[0], m->side_b), side_of(x[1] - x[0], m->side_m), x, x + 2, Q, J);
 }
 
-double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                      const double x[RW_NX])
 {
     double Q[2], J[2][2];
@@ -43,7 +43,7 @@ double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, 
     return rw_collapse_G_of(d, x, Q);
 }
 
-void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ])
 {
     int i;
@@ -66,7 +66,7 @@ typedef struct {
 
 /* 1 - |f|/cap + eps of a closed rigid hinge and its rate: f is affine in the inputs and one
  * rotation (rw_closed_forces), so its rate is the difference over any step along the motion */
-static void closed_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+static void closed_indicators(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                               const double x[RW_NX], double cb, double cm, double z[2], const rw_rate_request *r,
                               double dz[2])
 {
@@ -84,10 +84,10 @@ static void closed_indicators(const rw_params *p, const rw_derived *d, const rw_
     }
 }
 
-void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_indicator_line L[RW_NZ])
+void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_regime *m, rw_indicator_line L[RW_NZ])
 {
     /* Hinge indicators carry a small offset so that none is exactly zero when integration restarts
-     * after the event that set the mode (CVODE ignores a root function that starts at zero):
+     * after the event that set the regime (CVODE ignores a root function that starts at zero):
      * open: side*rotation + eps_q, root just past zero (|rotation| < tiny, so the direction of
      * motion decides in rw_event_update); closed: margin + eps_f, root just past |f| = cap. */
     const rw_indicator_line unused = {{0.0, 0.0}, 0.0, 0.0, 1.0, 0}, none = {{0.0, 0.0}, 0.0, 0.0, 0.0, 1};
@@ -115,14 +115,14 @@ void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *
     L[RW_Z_COLLAPSE] = none;
 }
 
-unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m)
+unsigned rw_closed_hinge_mask(const rw_params *p, const rw_regime *m)
 {
     if (!rw_is_rigid(p)) return 0u;
     return (m->closed_b ? 1u << RW_Z_BASE : 0u) | (p->support == RW_FLEXIBLE_TOP && m->closed_m ? 1u << RW_Z_MID : 0u);
 }
 
 /* the indicators of closed rigid hinges (1 - |f|/cap + eps_f, rw_indicator_lines) */
-static void closed_hinge_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+static void closed_hinge_indicators(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                                     const double x[RW_NX], unsigned mask, double z[RW_NZ], const rw_rate_request *r)
 {
     double cb, cm, zc[2], dzc[2];
@@ -151,7 +151,7 @@ void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[
 
 /* G(q)/|q|^2/zscale of the 2DOF, clipped, from the hinge moments Q at x (NULL: the law's), and its
  * rate (rw_collapse_form) */
-static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_regime *m, const double x[RW_NX],
                             const double *Q, const rw_rate_request *r, double *dz)
 {
     const double q1 = x[0], q2 = x[1], n2 = q1 * q1 + q2 * q2;
@@ -177,7 +177,7 @@ static double collapse_2dof(const rw_params *p, const rw_derived *d, const rw_mo
 }
 
 /* the collapse indicator (Q: the hinge moments at x, NULL = from the law) */
-static double collapse_indicator(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX],
+static double collapse_indicator(const rw_params *p, const rw_derived *d, const rw_regime *m, const double x[RW_NX],
                                  const double *Q, const rw_rate_request *r)
 {
     double *dz = r ? &r->dz[RW_Z_COLLAPSE] : NULL;
@@ -192,7 +192,7 @@ static double collapse_indicator(const rw_params *p, const rw_derived *d, const 
     return collapse_2dof(p, d, m, x, Q, r, dz);
 }
 
-static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+static void indicators_of(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                           const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ],
                           const rw_rate_request *r)
 {
@@ -211,13 +211,13 @@ static void indicators_of(const rw_params *p, const rw_derived *d, const rw_mode
     if (wanted(mask, RW_Z_COLLAPSE)) z[RW_Z_COLLAPSE] = collapse_indicator(p, d, m, x, Q, r);
 }
 
-void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ])
 {
     indicators_of(p, d, m, in, x, Q, mask, z, NULL);
 }
 
-void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                               const rw_input *in_rate, const double x[RW_NX], const double xd[RW_NX],
                               const double *Q, const double (*J)[2], unsigned mask, double z[RW_NZ],
                               double dz[RW_NZ])
@@ -226,7 +226,7 @@ void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_
     indicators_of(p, d, m, in, x, Q, mask, z, &r);
 }
 
-int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                        const double x[RW_NX])
 {
     int past;

@@ -9,7 +9,7 @@ static const rw_hinge_law *law(const rw_params *p)
     return rw_hinge_law_of(p->hingeLaw);
 }
 
-double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_energy(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX])
 {
     const double q1 = x[0], q2 = x[1], v1 = x[2], v2 = x[3];
@@ -40,7 +40,7 @@ double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
 
 /* Power of the ground motion on the wall, the rate of work of the inertia load -m ag in the frame
  * of the ground: dE/dt = P_ground - F_top du_top/dt between impacts (E = rw_energy). */
-double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                        const double x[RW_NX])
 {
     if (m->closed_b) return 0.0; /* at rest on the base: nothing moves */
@@ -75,7 +75,7 @@ double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX])
 /* Horizontal momentum balance of the wall: sum_i m_i (ag + x_i'') = R - F_top, where R is the
  * support's reaction on the wall and -F_top the spring's force on it; the wall puts -R on its
  * base. scripts/derive_equations.py derives the coefficients (c = -p of Eq. 3.4). */
-double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_F_base(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX], const double dx[RW_NX])
 {
     const double m_wall = p->W / p->g, m_over = d->Wd / p->g;
@@ -93,7 +93,7 @@ double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, cons
     }
 }
 
-int rw_condition(const rw_params *p, const rw_mode *m)
+int rw_condition(const rw_params *p, const rw_regime *m)
 {
     if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) return 0;
     if (p->support != RW_FLEXIBLE_TOP) return m->side_b > 0 ? 1 : 2;

@@ -5,9 +5,10 @@
  *
  * State vector x = (q1, q2, dq1, dq2): absolute rotations of the lower and upper body (clockwise
  * positive) and their rates. Models 1 (parapet) and 2 (simplySupported) keep q2 slaved to q1
- * (q2 = q1, resp. q2 = -q1). Discrete state (modes) lives in rw_mode and changes only in
- * rw_event_update() (event mode of the FMU); everything else is a pure function of
- * (parameters, modes, inputs, x).
+ * (q2 = q1, resp. q2 = -q1). The discrete state, the contact regime (sides and closed flags of the
+ * hinges), lives in rw_regime and changes only in rw_event_update() (event mode of the FMU);
+ * everything else is a pure function of (parameters, regime, inputs, x). "Modes" are the
+ * eigenmodes of the exact engine's regions (rw_engine.h), nothing else.
  */
 #ifndef RW_PHYSICS_H
 #define RW_PHYSICS_H
@@ -153,7 +154,7 @@ typedef struct {
     int uplifted_b;         /* semi-rigid laws: the base has passed the end of its elastic range (the
                                law's first base breakpoint) since the last base crossing, so the next
                                crossing is a base impact that is counted (docs/model.md "Impacts") */
-} rw_mode;
+} rw_regime;
 
 typedef struct {
     double ag;    /* ground acceleration, + toward +x [m/s2] */
@@ -176,28 +177,28 @@ int rw_mid_switch_is_bookkeeping(const rw_params *p);
 
 /* Dynamics (rw_dynamics.c) --------------------------------------------------------------------- */
 /* Hinge terms Q(q) of the 2DOF for the open-hinge case (rigid: mu = sides), from the law. */
-void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_mode *m, const double x[RW_NX], double Q[2]);
+void rw_hinge_Q(const rw_params *p, const rw_derived *d, const rw_regime *m, const double x[RW_NX], double Q[2]);
 /* Trilinear / rigid resisting force F(D) of the 1DOF (Doherty), rigid uses side for sign(D). */
-double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_mode *m, double D);
+double rw_force_1dof(const rw_params *p, const rw_derived *d, const rw_regime *m, double D);
 /* For the exact engine: the same force as F0 + F1*D on the region the motion (dD) goes into. */
-void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_mode *m, double D, double dD,
+void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_regime *m, double D, double dD,
                           double *F0, double *F1);
-void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                     const double x[RW_NX], double dx[RW_NX]);
 /* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */
-void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                       const double x[RW_NX], double *f_b, double *f_m);
 /* The moments rw_closed_forces gives under m, (f_b, f_m) = c + G q + g_ag ag + g_u u_top, with the
  * inverses of the capacities, as data for the exact engine (rw_closed_force_form) */
 typedef struct {
     double c[2], G[2][2], g_ag[2], g_u[2], inv_cap[2];
 } rw_closed_form;
-void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_closed_form *f);
+void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_regime *m, rw_closed_form *f);
 /* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 
 /* Event indicators (rw_indicators.c) ----------------------------------------------------------- */
-void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                          const double x[RW_NX], double z[RW_NZ]);
 /* The same indicators, those of `mask` (bit k = indicator k; the others are left), with
  * the hinge moments Q(q) at x given by the caller (NULL: from the law). One definition of the rules
@@ -205,47 +206,47 @@ void rw_event_indicators(const rw_params *p, const rw_derived *d, const rw_mode 
  * refines a root) and passes the affine Q of its current linear region where the law's Q depends
  * on q alone (rw_hinge_law.q_only), which spares the law's case analysis at every evaluation. */
 #define RW_Z_ALL ((1u << RW_NZ) - 1u)
-void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicators_some(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                               const double x[RW_NX], const double *Q, unsigned mask, double z[RW_NZ]);
 /* The indicators of the rigid hinges that are closed under m (bit k = indicator k): not lines but
  * 1 - |f|/cap + eps_f, with f affine in the inputs and one rotation */
-unsigned rw_closed_hinge_mask(const rw_params *p, const rw_mode *m);
-/* The indicators that are lines of the rotations under the modes m (rw_indicator_line; the others
- * marked none): they change only with the modes, so the exact engine takes them once per region. */
-void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_mode *m, rw_indicator_line lines[RW_NZ]);
+unsigned rw_closed_hinge_mask(const rw_params *p, const rw_regime *m);
+/* The indicators that are lines of the rotations under the regime m (rw_indicator_line; the others
+ * marked none): they change only with the regime, so the exact engine takes them once per region. */
+void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_regime *m, rw_indicator_line lines[RW_NZ]);
 /* The same indicators of `mask` (the others left) with their rates dz = dz/dt along a motion: the state moving at
  * xd = dx/dt and the inputs at in_rate (d ag/dt, d u_top/dt). Q, J: the hinge moments at x and
  * their Jacobian dQ/dq, both given or both NULL (from the law). The exact engine's bracketing and
  * root refinement use the rates (docs/engine.md). */
-void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+void rw_event_indicator_rates(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                               const rw_input *in_rate, const double x[RW_NX], const double xd[RW_NX],
                               const double *Q, const double (*J)[2], unsigned mask, double z[RW_NZ],
                               double dz[RW_NZ]);
 /* The collapse indicator's form on the region Q = c + J q (rw_collapse_form) */
 void rw_collapse_form_of(const rw_derived *d, const double c[2], const double J[2][2], rw_collapse_form *f);
 /* G(q) = q.(K q - f_u - Q(q)) of the 2DOF (collapse when <= 0 outside the elastic range). */
-double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_collapse_G(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                      const double x[RW_NX]);
 /* The same G with the hinge moments Q at x given (one formula for both). */
 double rw_collapse_G_of(const rw_derived *d, const double x[RW_NX], const double Q[2]);
 /* RW_STANDING, or why x is taken as collapsed (spec "Collapse"). */
-int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                     const double x[RW_NX]);
 
 /* Outputs and energy (rw_outputs.c) ------------------------------------------------------------ */
-double rw_energy(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_energy(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX]);
 /* Rate of work of the ground motion on the wall (energy bookkeeping). */
-double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_ground_power(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                        const double x[RW_NX]);
 double rw_s1(const rw_params *p, const double x[RW_NX]);
 double rw_s2(const rw_params *p, const double x[RW_NX]);
 double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX]);
 /* Horizontal force of the wall on its base, + toward +x, from the horizontal momentum balance of
  * the bodies and the overburden (docs/model.md "Base force"); dx = rw_derivatives(x). */
-double rw_F_base(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+double rw_F_base(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX], const double dx[RW_NX]);
-int rw_condition(const rw_params *p, const rw_mode *m);
+int rw_condition(const rw_params *p, const rw_regime *m);
 
 /* Event rules (rw_events.c) -------------------------------------------------------------------- */
 typedef void (*rw_log_fn)(void *ctx, const char *message);
@@ -253,20 +254,20 @@ typedef void (*rw_log_fn)(void *ctx, const char *message);
 typedef struct {
     int impacts;        /* base impacts applied */
     int states_changed; /* a continuous state jumped */
-    int modes_changed;  /* a discrete mode changed */
+    int regime_changed; /* the contact regime changed */
 } rw_event_result;
 
-/* Initial modes from the start states (spec "Initial state"); slaves q2 for models 1, 2. */
-void rw_init_modes(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
-                   rw_mode *m, rw_log_fn log, void *ctx);
+/* Initial regime from the start states (spec "Initial state"); slaves q2 for models 1, 2. */
+void rw_init_regime(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
+                    rw_regime *m, rw_log_fn log, void *ctx);
 /* Event-mode update: impacts, mid-hinge switches, closing and opening of rigid hinges. */
-void rw_event_update(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+void rw_event_update(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx);
 /* The mid-height hinge's side brought up to date with x by rw_event_update's own rule, for a
  * caller that did not stop at its switch (rw_mid_switch_is_bookkeeping). Returns 1 if it switched. */
-int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_mode *m, const double x[RW_NX]);
+int rw_sync_mid_side(const rw_params *p, const rw_derived *d, rw_regime *m, const double x[RW_NX]);
 /* Opening test of closed rigid hinges only (part of rw_event_update). Returns 1 if a hinge opened. */
-int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_mode *m, const rw_input *in,
+int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                    const double x[RW_NX], rw_log_fn log, void *ctx);
 
 #endif

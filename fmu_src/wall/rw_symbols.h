@@ -48,7 +48,7 @@
 #define rw_ground_power FMU_SYMBOL(rw_ground_power)
 #define rw_hinge_Q FMU_SYMBOL(rw_hinge_Q)
 #define rw_hinge_law_of FMU_SYMBOL(rw_hinge_law_of)
-#define rw_init_modes FMU_SYMBOL(rw_init_modes)
+#define rw_init_regime FMU_SYMBOL(rw_init_regime)
 #define rw_is_rigid FMU_SYMBOL(rw_is_rigid)
 #define rw_mid_switch_is_bookkeeping FMU_SYMBOL(rw_mid_switch_is_bookkeeping)
 #define rw_open_hinges FMU_SYMBOL(rw_open_hinges)

@@ -73,7 +73,7 @@ static void test_stepper(void)
 {
     rw_params p;
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0.0, 0.0};
     double x[RW_NX] = {0.01, -0.01, 0.0, 0.0}, t = 0.0, reached;
     long impacts = 0;
@@ -82,7 +82,7 @@ static void test_stepper(void)
     int k, rc = 0;
     rw_params_default(&p);
     rw_derive(&p, &d);
-    rw_init_modes(&p, &d, &in, x, &m, NULL, NULL);
+    rw_init_regime(&p, &d, &in, x, &m, NULL, NULL);
     e = rw_engine_new(&p, msg, sizeof msg);
     CHECK(e != NULL, "rw_engine_new: %s", msg);
     if (!e) return;

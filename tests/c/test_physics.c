@@ -169,7 +169,7 @@ static void test_against_sympy(const char *json_path)
         const char *km[] = {"base_mass", NULL}, *kc[] = {"base_per_qdd", NULL};
         const double x0[RW_NX] = {0, 0, 0, 0};
         double mass, c[2];
-        rw_mode m = {0, 0, 1, -1, 0, 0, 0};
+        rw_regime m = {0, 0, 1, -1, 0, 0, 0};
         rw_input in = {1.0, 0.0};
         double dx[RW_NX] = {0, 0, 0, 0};
         CHECK(json_numbers(json, km, &mass, 1) == 1 && json_numbers(json, kc, c, 2) == 2, "base force not found");
@@ -186,7 +186,7 @@ static void test_against_sympy(const char *json_path)
     for (i = 1; i <= 4; i++) {
         char cond[2] = {(char)('0' + i), 0};
         const char *ka[] = {"conditions", cond, "A", NULL}, *kb[] = {"conditions", cond, "B", NULL};
-        rw_mode m = {0, 0, sides[i][0], sides[i][1], 0, 0, 0};
+        rw_regime m = {0, 0, sides[i][0], sides[i][1], 0, 0, 0};
         double q[RW_NX] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1], 0, 0}, Q[2], a, b;
         rw_hinge_Q(&p, &d, &m, q, Q);
         CHECK(json_numbers(json, ka, &a, 1) == 1 && json_numbers(json, kb, &b, 1) == 1, "condition %d missing", i);
@@ -217,7 +217,7 @@ static void test_trilinear(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m = {0, 0, 1, 1, 0, 0, 0};
+    rw_regime m = {0, 0, 1, 1, 0, 0, 0};
     p.support = RW_SIMPLY_SUPPORTED;
     rw_derive(&p, &d);
     check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, d.D1 / 2), -d.Fi / 2, 1e-12);
@@ -232,17 +232,17 @@ static void test_trilinear(void)
     check_close("Delta_2", d.D2, 0.92 * d.D1 + 0.21 * d.Du, 1e-12);
 }
 
-static void init(const rw_params *p, rw_derived *d, rw_mode *m, const rw_input *in, double x[RW_NX])
+static void init(const rw_params *p, rw_derived *d, rw_regime *m, const rw_input *in, double x[RW_NX])
 {
     rw_derive(p, d);
-    rw_init_modes(p, d, in, x, m, NULL, NULL);
+    rw_init_regime(p, d, in, x, m, NULL, NULL);
 }
 
 static void test_impact_map(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0, 0};
     rw_event_result r;
     double x[RW_NX] = {0.01, 0.0, -0.2, 0.1};
@@ -257,7 +257,7 @@ static void test_impact_map(void)
     CHECK(r.states_changed, "states_changed not set");
     /* repeated call: nothing */
     rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
-    CHECK(r.impacts == 0 && !r.states_changed && !r.modes_changed, "second call changed something");
+    CHECK(r.impacts == 0 && !r.states_changed && !r.regime_changed, "second call changed something");
     /* the base swings past its elastic range on the new side (an event at the breakpoint), so
      * the next crossing is an impact that counts */
     x[0] = -0.01;
@@ -296,7 +296,7 @@ static void test_indicators(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0.5, 0.0};
     double x[RW_NX] = {0.001, 0.0005, -0.1, 0.0}, z1[RW_NZ], z2[RW_NZ], y[RW_NX];
     int law, i;
@@ -304,7 +304,7 @@ static void test_indicators(void)
         p.hingeLaw = law;
         memcpy(y, x, sizeof y);
         init(&p, &d, &m, &in, y);
-        /* continuity and sign change across q1 = 0 with the modes frozen */
+        /* continuity and sign change across q1 = 0 with the regime frozen */
         y[0] = 1e-7;
         rw_event_indicators(&p, &d, &m, &in, y, z1);
         y[0] = -1e-7;
@@ -331,8 +331,8 @@ static double uniform(unsigned long *state, double lo, double hi)
     return lo + (hi - lo) * (double)(*state >> 11) / 9007199254740992.0;
 }
 
-/* every indicator at x moved by u along (xd, in_rate) with the modes frozen */
-static void indicators_along(const rw_params *p, const rw_derived *d, const rw_mode *m, const rw_input *in,
+/* every indicator at x moved by u along (xd, in_rate) with the regime frozen */
+static void indicators_along(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                              const rw_input *rate, const double x[RW_NX], const double xd[RW_NX], double u,
                              double z[RW_NZ])
 {
@@ -358,7 +358,7 @@ static void test_indicator_rates(void)
             for (trial = 0; trial < 400; trial++) {
                 rw_params p = paper_params();
                 rw_derived d;
-                rw_mode m;
+                rw_regime m;
                 rw_input in, rate;
                 double x[RW_NX], xd[RW_NX], z[RW_NZ], dz[RW_NZ], zp[RW_NZ], zm[RW_NZ], zpp[RW_NZ], zmm[RW_NZ];
                 const double u = 1e-6;
@@ -449,7 +449,7 @@ static void test_closed_force_form(void)
         for (trial = 0; trial < 200; trial++) {
             rw_params p = paper_params();
             rw_derived d;
-            rw_mode m;
+            rw_regime m;
             rw_closed_form F;
             double x[RW_NX], fb, fm, want[2];
             rw_input in;
@@ -483,7 +483,7 @@ static void test_rigid_open_close(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0.1, 0.0};
     rw_event_result r;
     double x[RW_NX] = {0, 0, 0, 0}, z[RW_NZ];
@@ -497,7 +497,7 @@ static void test_rigid_open_close(void)
     rw_event_indicators(&p, &d, &m, &in, x, z);
     CHECK(z[RW_Z_BASE] < 0 || z[RW_Z_MID] < 0, "overload not signalled %g %g", z[0], z[1]);
     rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
-    CHECK(r.modes_changed && (!m.closed_b || !m.closed_m), "nothing opened");
+    CHECK(r.regime_changed && (!m.closed_b || !m.closed_m), "nothing opened");
     CHECK(m.closed_b || m.side_b == -1, "base opened on side %d", m.side_b);
     {
         double dx[RW_NX];
@@ -540,7 +540,7 @@ static void test_collapse(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0, 0};
     double x[RW_NX];
     int law;
@@ -577,7 +577,7 @@ static void test_energy(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0, 0};
     rw_event_result r;
     double x[RW_NX] = {0.03, -0.01, 0, 0}, E0, E;
@@ -647,7 +647,7 @@ static void test_doherty_hinge_reduces_to_trilinear(void)
 {
     rw_params p = paper_params();
     rw_derived d;
-    rw_mode m = {0, 0, 1, -1, 0, 0, 0};
+    rw_regime m = {0, 0, 1, -1, 0, 0, 0};
     const double Ds[] = {0.2, 0.9, 1.5, 3.0, 5.0, 15.0, 19.0}; /* in units of Delta_1 */
     int i;
     p.hingeLaw = RW_DOHERTY_HINGE;
@@ -720,7 +720,7 @@ static void test_collapse_where_the_elastic_range_ends(void)
 {
     rw_params p;
     rw_derived d;
-    rw_mode m;
+    rw_regime m;
     rw_input in = {0.0, 0.0};
     double x[RW_NX], G;
     rw_params_default(&p);

@@ -53,7 +53,7 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     in.ag_slope = slope_of(RW_VR_ag, slope_vr, slope, n_in);
     in.u_slope = slope_of(RW_VR_u_top, slope_vr, slope, n_in);
     dissipated = S->engine.dissipated;
-    rc = rw_engine_step(&S->engine, &S->mode, S->x, t, h, &in, &impacts, t_reached, msg, n);
+    rc = rw_engine_step(&S->engine, &S->regime, S->x, t, h, &in, &impacts, t_reached, msg, n);
     S->impacts += (int)impacts;
     S->dissipated += S->engine.dissipated - dissipated;
     S->time = *t_reached;

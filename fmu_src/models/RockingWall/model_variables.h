@@ -65,7 +65,7 @@ enum { RW_PARAMETERS(RW_VR_PARAM_ENUM) RW_VARIABLES(RW_VR_ENUM) RW_VR_MAX_PLUS_O
 #define RW_STATE_VRS {RW_VR_q1, RW_VR_q2, RW_VR_dq1, RW_VR_dq2}
 
 /* ModelStructure: D(ID, "space-separated names of the states and inputs it depends on") for every
- * output and every state derivative (superset over all models and modes). */
+ * output and every state derivative (superset over all models and regimes). */
 #define RW_DEPENDENCIES(D) \
 D(s1,        "q1") \
 D(s2,        "q1 q2") \

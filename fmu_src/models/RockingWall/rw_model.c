@@ -1,5 +1,5 @@
 /* RockingWall as an FMU model: the callbacks of fmu_model.h over the wall's physics (rw_physics.h,
- * fmu_src/wall/). Holds the instance data (parameters, modes, inputs, states, counters); the FMI 2.0
+ * fmu_src/wall/). Holds the instance data (parameters, contact regime, inputs, states, counters); the FMI 2.0
  * API itself is the shared fmi2Functions.c. */
 #include <math.h>
 #include <stdio.h>
@@ -45,16 +45,16 @@ static void reset(void *M)
     memset(S, 0, sizeof *S);
     rw_params_default(&S->P);
     rw_derive(&S->P, &S->D);
-    S->mode.side_b = S->mode.side_m = 1;
+    S->regime.side_b = S->regime.side_m = 1;
 }
 
-/* modes and states as seen by getters: before initialization ends the modes are not decided, so
+/* regime and states as seen by getters: before initialization ends the regime is not decided, so
  * they are computed on copies from the start values */
-static void view(rw_data *S, int initializing, rw_mode *m, double x[RW_NX])
+static void view(rw_data *S, int initializing, rw_regime *m, double x[RW_NX])
 {
     memcpy(x, S->x, sizeof S->x);
-    *m = S->mode;
-    if (initializing) rw_init_modes(&S->P, &S->D, &S->in, x, m, NULL, NULL);
+    *m = S->regime;
+    if (initializing) rw_init_regime(&S->P, &S->D, &S->in, x, m, NULL, NULL);
 }
 
 static int state_index(unsigned vr)
@@ -71,7 +71,7 @@ static int state_index(unsigned vr)
 static void get_real(void *M, int initializing, double time, const unsigned vr[], size_t n, double v[])
 {
     rw_data *S = (rw_data *)M;
-    rw_mode m;
+    rw_regime m;
     double x[RW_NX], dx[RW_NX];
     size_t i;
     (void)time;
@@ -102,7 +102,7 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
 static void get_integer(void *M, int initializing, const unsigned vr[], size_t n, int v[])
 {
     rw_data *S = (rw_data *)M;
-    rw_mode m;
+    rw_regime m;
     double x[RW_NX];
     size_t i;
     view(S, initializing, &m, x);
@@ -152,7 +152,7 @@ static void check_collapse(rw_data *S)
     char buf[512];
     int reason;
     if (S->collapsed) return;
-    reason = rw_collapse_reason(&S->P, &S->D, &S->mode, &S->in, S->x);
+    reason = rw_collapse_reason(&S->P, &S->D, &S->regime, &S->in, S->x);
     if (reason == RW_STANDING) return;
     S->collapsed = 1;
     S->terminate_time = S->time + RW_TERMINATE_DELAY;
@@ -172,7 +172,7 @@ static int exit_init(void *M, double time, const fmu_logger *log, char *msg, siz
     S->log = log;
     S->time = time;
     rw_derive(&S->P, &S->D);
-    rw_init_modes(&S->P, &S->D, &S->in, S->x, &S->mode, physics_log, S);
+    rw_init_regime(&S->P, &S->D, &S->in, S->x, &S->regime, physics_log, S);
     S->impacts = 0;
     S->collapsed = 0;
     S->dissipated = 0.0;
@@ -182,7 +182,7 @@ static int exit_init(void *M, double time, const fmu_logger *log, char *msg, siz
 
 static void get_states(void *M, int initializing, double x[])
 {
-    rw_mode m;
+    rw_regime m;
     view((rw_data *)M, initializing, &m, x);
 }
 
@@ -194,13 +194,13 @@ static void set_states(void *M, const double x[])
 static void derivatives(void *M, double dx[])
 {
     rw_data *S = (rw_data *)M;
-    rw_derivatives(&S->P, &S->D, &S->mode, &S->in, S->x, dx);
+    rw_derivatives(&S->P, &S->D, &S->regime, &S->in, S->x, dx);
 }
 
 static void event_indicators(void *M, int initializing, double z[])
 {
     rw_data *S = (rw_data *)M;
-    rw_mode m;
+    rw_regime m;
     double x[RW_NX];
     view(S, initializing, &m, x);
     rw_event_indicators(&S->P, &S->D, &m, &S->in, x, z);
@@ -232,14 +232,14 @@ static void event_update(void *M, double time, const fmu_logger *log, fmu_event_
         }
         return;
     }
-    energy_before = rw_energy(&S->P, &S->D, &S->mode, &S->in, S->x);
-    rw_event_update(&S->P, &S->D, &S->mode, &S->in, S->x, &e, physics_log, S);
+    energy_before = rw_energy(&S->P, &S->D, &S->regime, &S->in, S->x);
+    rw_event_update(&S->P, &S->D, &S->regime, &S->in, S->x, &e, physics_log, S);
     S->impacts += e.impacts;
     if (e.states_changed) {
         r->states_changed = 1;
-        S->dissipated += energy_before - rw_energy(&S->P, &S->D, &S->mode, &S->in, S->x);
+        S->dissipated += energy_before - rw_energy(&S->P, &S->D, &S->regime, &S->in, S->x);
     }
-    r->more = e.modes_changed || e.states_changed; /* confirm at the same instant */
+    r->more = e.regime_changed || e.states_changed; /* confirm at the same instant */
     check_collapse(S);
     if (S->collapsed) {
         r->more = 0;

@@ -14,7 +14,7 @@
 typedef struct {
     rw_params P;
     rw_derived D;
-    rw_mode mode;
+    rw_regime regime;
     rw_input in;
     double x[RW_NX];
     int impacts;
