@@ -84,8 +84,11 @@ rw_wine_test(win64_test_cosim_without_cvode_dg test_cosim_without_cvode_dg.exe)
 rw_wine_test(win64_test_cosim_without_cvode_bd test_cosim_without_cvode_bd.exe)
 rw_wine_test(win64_test_fmu_state_dg test_fmu_state_dg.exe)
 rw_wine_test(win64_test_engine test_engine.exe)
-rw_wine_test(win64_test_physics test_physics.exe ${CMAKE_BINARY_DIR}/tests/c/derive_equations.json)
-set_tests_properties(win64_test_physics PROPERTIES FIXTURES_REQUIRED "wine_prefix;derive_json")
+rw_wine_test(win64_test_physics_dynamics test_physics_dynamics.exe ${CMAKE_BINARY_DIR}/tests/c/derive_equations.json)
+set_tests_properties(win64_test_physics_dynamics PROPERTIES FIXTURES_REQUIRED "wine_prefix;derive_json")
+foreach(_unit hinge_laws indicators events)
+  rw_wine_test(win64_test_physics_${_unit} test_physics_${_unit}.exe)
+endforeach()
 
 # The packaged FMUs hold binaries/win64/NAME.dll that imports only Windows system DLLs and
 # exports exactly the functions the linux64 binary exports (the fmi2 API).
