@@ -33,7 +33,7 @@ import tempfile
 
 import numpy as np
 
-from . import _paths, records
+from . import paths, records
 from .couple import CouplingError, _close_slaves, _fmi_call, _FmuLog, _initialise, _load_slave
 from .names import HINGE_LAWS, SUPPORTS, paper_wall
 
@@ -65,8 +65,8 @@ class Scene:
     wall_fmu: str = None
 
     def __post_init__(self):
-        self.building_fmu = str(self.building_fmu or _paths.building_fmu())
-        self.wall_fmu = str(self.wall_fmu or _paths.wall_fmu())
+        self.building_fmu = str(self.building_fmu or paths.building_fmu())
+        self.wall_fmu = str(self.wall_fmu or paths.wall_fmu())
         n = self.n_storeys
         if not 1 <= n <= MAX_STOREYS:
             raise ValueError(f"nStoreys {n} is outside 1..{MAX_STOREYS}")

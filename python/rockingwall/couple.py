@@ -42,7 +42,7 @@ import tempfile
 
 import numpy as np
 
-from . import _paths, records
+from . import paths, records
 from .names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
 
 from . import coupling_rules
@@ -506,8 +506,8 @@ def parse_args(argv):
     ap.add_argument("--json", help="run one master in this process and write its result arrays as JSON "
                                    "(how the command line runs each master in a child process)")
     a = ap.parse_args(argv)
-    a.wall_fmu = a.wall_fmu or str(_paths.wall_fmu())
-    a.diaphragm_fmu = a.diaphragm_fmu or str(_paths.diaphragm_fmu())
+    a.wall_fmu = a.wall_fmu or str(paths.wall_fmu())
+    a.diaphragm_fmu = a.diaphragm_fmu or str(paths.diaphragm_fmu())
     return a
 
 

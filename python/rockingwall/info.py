@@ -3,7 +3,7 @@ read from the FMU's model description (generated from the one C parameter table)
 import zipfile
 import xml.etree.ElementTree as ET
 
-from . import _paths
+from . import paths
 
 
 def parser(sub):
@@ -14,7 +14,7 @@ def parser(sub):
 
 def parameters(fmu=None):
     """[(name, unit, default, min, max, description)] of the FMU's parameters."""
-    with zipfile.ZipFile(fmu or _paths.wall_fmu()) as z:
+    with zipfile.ZipFile(fmu or paths.wall_fmu()) as z:
         root = ET.fromstring(z.read("modelDescription.xml"))
     rows = []
     for v in root.iter("ScalarVariable"):

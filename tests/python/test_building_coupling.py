@@ -15,7 +15,7 @@ import pytest
 
 from rockingwall import building_scene as bs
 from rockingwall import couple, records
-from rockingwall._paths import diaphragm_fmu, wall_fmu
+from rockingwall.paths import diaphragm_fmu, wall_fmu
 
 M_D, K_D, ZETA = 2000.0, 7e5, 0.05
 

@@ -129,7 +129,7 @@ def test_not_xml(archive, tmp_path):
 
 def test_replacement_building_without_the_masters_variables(archive, tmp_path):
     """The Diaphragm FMU put in the building's place: named as lacking what the master reads."""
-    from rockingwall._paths import diaphragm_fmu
+    from rockingwall.paths import diaphragm_fmu
 
     def edit(s):  # its connectors still name the building's variables: drop those checks' cause
         return s.replace('source="resources/Building.fmu"', 'source="resources/Diaphragm.fmu"')

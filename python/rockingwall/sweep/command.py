@@ -28,7 +28,7 @@ import subprocess
 import sys
 import time
 
-from .. import _paths
+from .. import paths
 from . import grid, records, store
 from .execute import check_options, describe as describe_outcome, execute
 from .execute import Terminated
@@ -116,10 +116,10 @@ def describe(cfg, suite, specs):
 
 def check_artefacts(args):
     if args.engine == "exact":
-        _paths.engine_library()
+        paths.engine_library()
         return
-    args.fmi2sim = args.fmi2sim or str(_paths.fmi2sim())
-    args.fmu = args.fmu or str(_paths.wall_fmu())
+    args.fmi2sim = args.fmi2sim or str(paths.fmi2sim())
+    args.fmu = args.fmu or str(paths.wall_fmu())
     for path in (args.fmi2sim, args.fmu):
         if not pathlib.Path(path).is_file():
             raise FileNotFoundError(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
