@@ -46,10 +46,8 @@ def load_records(specs, csv_units):
     out = []
     for spec in specs:
         if spec == "fema":
-            import os
-            from .sweep import records as suite
-            cache = os.environ.get("RW_RECORDS_CACHE", os.path.expanduser("~/.cache/rockingwall"))
-            out += [records.read_at2(r.path) for r in suite.fema_farfield(os.path.join(cache, "fema_farfield"))]
+            from .sweep import suites
+            out += [records.read_at2(r.path) for r in suites.fema_farfield(suites.fema_cache())]
         else:
             out.append(records.load(spec, units=csv_units))
     names = [r.name for r in out]

@@ -26,8 +26,8 @@ PNG = pathlib.Path(__file__).resolve().parents[2] / "docs" / "img" / "building_c
 
 
 def example_records(cache_dir):
-    from .sweep import records as suite
-    fema = {r.name: r for r in suite.fema_farfield(cache_dir)}
+    from .sweep import suites
+    fema = {r.name: r for r in suites.fema_farfield(cache_dir)}
     out = [records.el_centro()] + [records.read_at2(fema[n].path) for n in FEMA_NAMES]
     return [r.to_pga(PGA_G) for r in out]
 

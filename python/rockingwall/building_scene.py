@@ -357,8 +357,8 @@ def main(argv=None):
     try:
         if a.example:
             from . import building_example
-            from .sweep.command import FEMA_CACHE
-            return building_example.main(a.records_cache or FEMA_CACHE)
+            from .sweep import suites
+            return building_example.main(a.records_cache or suites.fema_cache())
         if a.from_ssp:
             from . import ssp
             scene = ssp.read(a.from_ssp)

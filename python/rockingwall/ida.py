@@ -20,7 +20,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 from .sweep import fragility, store
-from .sweep.runner import ERROR, OK, RETRIED
+from .sweep.rows import ERROR, OK, RETRIED
 
 def report_not_ok(d, path):
     """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the

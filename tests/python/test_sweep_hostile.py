@@ -15,7 +15,8 @@ import pytest
 
 from rockingwall import ida
 from rockingwall.sweep import command as sweep
-from rockingwall.sweep import records, runner
+from rockingwall.sweep import fmi2sim_task, suites
+from rockingwall.sweep import rows as result_rows
 from test_sweep import pulse_record
 
 
@@ -109,14 +110,14 @@ def test_finding02_rows_without_a_key_are_recomputed_and_kept_aside(fmi2sim_exe,
     out = tmp_path / "res.csv"
     args = sweep_args(one_record, out, fmi2sim_exe, rockingwall_fmu)
     assert sweep.main(args) == 0
-    old = rows(out)[runner.COLUMNS[:runner.COLUMNS.index("key")]]
+    old = rows(out)[result_rows.COLUMNS[:result_rows.COLUMNS.index("key")]]
     other = old.assign(run_id="another plan's run")
     pd.concat([old, other]).to_csv(out, index=False, lineterminator="\n")
     capsys.readouterr()
     assert sweep.main(args) == 0
     assert "1 no key (written before keys were recorded)" in capsys.readouterr().err
     d = rows(out)
-    assert list(d.columns) == runner.COLUMNS and len(d) == 2
+    assert list(d.columns) == result_rows.COLUMNS and len(d) == 2
     by_id = d.set_index("run_id")
     assert pd.isna(by_id.loc["another plan's run", "key"])  # not ours to judge: kept, without a key
     assert len(by_id.drop("another plan's run").key.iloc[0]) == 16  # the planned run, computed again
@@ -151,12 +152,12 @@ def test_finding03_timed_out_runs_are_retried(fmi2sim_exe, rockingwall_fmu, one_
     marker = fake_fmi2sim(exe, fmi2sim_exe, 'mkdir "$TMPDIR/fmi2sim_unpacked"; exec sleep 60')
     out = tmp_path / "res.csv"
     args = sweep_args(one_record, out, exe, rockingwall_fmu)
-    runner_timeout = runner.TIMEOUT_S
+    runner_timeout = fmi2sim_task.TIMEOUT_S
     try:
-        runner.TIMEOUT_S = 1.0
+        fmi2sim_task.TIMEOUT_S = 1.0
         assert sweep.main(args) == 1
     finally:
-        runner.TIMEOUT_S = runner_timeout
+        fmi2sim_task.TIMEOUT_S = runner_timeout
     assert rows(out).status[0] == "timeout"
     assert list(private_tmp.iterdir()) == []  # finding 9: the killed run's files are gone
     marker.unlink()
@@ -325,14 +326,14 @@ def test_finding16_huge_record_is_planned_in_bounded_memory(tmp_path, monkeypatc
     import tracemalloc
     tracemalloc.start()
     try:
-        rec = records.read_at2(big)
+        rec = suites.read_at2(big)
         peak = tracemalloc.get_traced_memory()[1] / 2**20
     finally:
         tracemalloc.stop()
     assert rec.pga_g == 0.2 and not rec.error
     assert peak < 32, f"planning a 24 MiB record took {peak:.0f} MiB"
-    monkeypatch.setattr(records, "MAX_RECORD_BYTES", 2**20)  # the bound, made small
-    rec = records.read_at2(big)
+    monkeypatch.setattr(suites, "MAX_RECORD_BYTES", 2**20)  # the bound, made small
+    rec = suites.read_at2(big)
     assert "24 MiB, more than the 1 MiB a record may have" in rec.error
 
 
@@ -340,9 +341,9 @@ def test_finding16_symlinked_record_keeps_its_own_name(one_record, tmp_path):
     links = tmp_path / "links"
     links.mkdir()
     (links / "mylink.AT2").symlink_to(one_record / "p1.AT2")
-    (rec,) = records.at2_folder(links)
+    (rec,) = suites.at2_folder(links)
     assert rec.name == "mylink" and rec.path == str(links / "mylink.AT2")
-    assert rec.pga_g == records.read_at2(one_record / "p1.AT2").pga_g
+    assert rec.pga_g == suites.read_at2(one_record / "p1.AT2").pga_g
 
 
 def test_finding16_non_utf8_byte_in_the_results_is_named(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path, capsys):
@@ -374,7 +375,7 @@ def test_finding16_garbage_in_an_ok_row_is_named_by_ida(tmp_path, capsys):
     path = synthetic_results(tmp_path)
     lines = path.read_text().splitlines(keepends=True)
     fields = lines[4].split(",")
-    fields[runner.COLUMNS.index("peak_s1")] = "banana"
+    fields[result_rows.COLUMNS.index("peak_s1")] = "banana"
     lines[4] = ",".join(fields)
     path.write_text("".join(lines))
     assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 1  # plots made, damage reported
@@ -404,9 +405,9 @@ def synthetic_results(tmp_path):
                 spec = dict(run_id=f"w1|flexibleTop|dohertyHinge|kd{kd:g}|{rec}|pga{pga:g}", wall=1,
                             model="flexibleTop", hinge_law="dohertyHinge", kd_kN=kd, record=rec, record_pga_g=0.3,
                             scale=pga / 0.3, pga_g=pga, key="0" * 16)
-                out.append(runner._row(spec, "ok", peak_s1=0.1 * pga + (kd == 5.0) * 0.01, peak_s2=0.05 * pga,
+                out.append(result_rows.make_row(spec, "ok", peak_s1=0.1 * pga + (kd == 5.0) * 0.01, peak_s2=0.05 * pga,
                                        peak_F_top=10.0, collapsed=pga > 0.3 + 0.05 * (rec == "r2"), impacts=3,
                                        end_time=4.0, steps=100, cpu_s=0.01, elapsed_s=0.02))
     path = tmp_path / "synthetic.csv"
-    pd.DataFrame(out, columns=runner.COLUMNS).to_csv(path, index=False, lineterminator="\n")
+    pd.DataFrame(out, columns=result_rows.COLUMNS).to_csv(path, index=False, lineterminator="\n")
     return path

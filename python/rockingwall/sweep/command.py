@@ -29,13 +29,10 @@ import sys
 import time
 
 from .. import paths
-from . import grid, records, store
+from . import grid, store, suites
 from .execute import check_options, describe as describe_outcome, execute
 from .execute import Terminated
 from .lock import Busy
-
-FEMA_CACHE = pathlib.Path(os.environ.get("RW_RECORDS_CACHE", pathlib.Path.home() / ".cache" / "rockingwall")) / "fema_farfield"
-
 
 def kd_in_kN(text):
     """K_d in kN/m per m from '30' (taken as kN/m per m) or a value with its unit ('3e4 N/m/m')."""
@@ -84,21 +81,10 @@ def parse_args(argv=None):
     return p.parse_args(argv)
 
 
-def load_suite(cfg):
-    suite = cfg["suite"]
-    recs = records.fema_farfield(FEMA_CACHE) if suite == "fema" else records.at2_folder(suite)
-    if cfg["records"]:
-        missing = set(cfg["records"]) - {r.name for r in recs}
-        if missing:
-            raise ValueError(f"records not in the suite '{suite}': {sorted(missing)}")
-        recs = [r for r in recs if r.name in set(cfg["records"])]
-    return recs
-
-
 def plan(args):
     flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
     cfg = grid.merge(grid.load_config(args.config), flags)
-    suite = load_suite(cfg)
+    suite = suites.load(cfg["suite"], cfg["records"])
     return cfg, suite, grid.expand(cfg, suite)
 
 
