@@ -13,8 +13,9 @@
 import numpy as np
 import pytest
 
-from rockingwall import building_scene as bs
-from rockingwall import couple, records
+from rockingwall import records
+from rockingwall.building import scene as bs
+from rockingwall.coupling import wall_diaphragm as couple
 from rockingwall.paths import diaphragm_fmu, wall_fmu
 
 M_D, K_D, ZETA = 2000.0, 7e5, 0.05

@@ -12,8 +12,9 @@ import zipfile
 import numpy as np
 import pytest
 
-from rockingwall import building_scene as bs
-from rockingwall import records, ssp
+from rockingwall import records
+from rockingwall.building import scene as bs
+from rockingwall.building import ssp
 
 T_END, H = 2.5, 1e-3
 
@@ -36,7 +37,7 @@ def archive(tmp_path_factory):
 
 def libcosim_peaks(path, storey=2):
     outputs = [(f"wall_{storey}", "s1"), (f"wall_{storey}", "s2"), ("building", f"u_diaph_{storey}")]
-    code = ("import json, sys; import numpy as np; from rockingwall import ssp, records\n"
+    code = ("import json, sys; import numpy as np; from rockingwall import records\nfrom rockingwall.building import ssp\n"
             f"o = ssp.run_libcosim({str(path)!r}, records.gaussian(0.03, 1.0, dt=1e-3), {T_END}, {H}, {outputs!r})\n"
             "print(json.dumps({k[0] + '.' + k[1]: float(np.abs(v).max()) for k, v in o.items() if k != 'time'}))")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)

@@ -11,7 +11,7 @@ import zipfile
 
 import pytest
 
-from rockingwall import couple
+from rockingwall.coupling import wall_diaphragm as couple
 
 
 # After 300 right-hand-side evaluations (t = 0.033 s at the defaults) the diaphragm's

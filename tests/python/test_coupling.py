@@ -10,7 +10,7 @@ import sys
 import numpy as np
 import pytest
 
-from rockingwall import couple
+from rockingwall.coupling import wall_diaphragm as couple
 from rockingwall import fmu as rw_fmu
 from rwref.inputs import el_centro
 from rwref.params import WALLS

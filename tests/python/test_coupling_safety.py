@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from rockingwall import couple
-from rockingwall import couple_monolithic
-from rockingwall import coupling_rules
+from rockingwall.coupling import monolithic as couple_monolithic
+from rockingwall.coupling import rules as coupling_rules
+from rockingwall.coupling import wall_diaphragm as couple
 from rwref.inputs import el_centro
 
 STIFF_WALL = {"b": 0.23, "h": 3.2, "W": 14080.0, "psi": 0.2}

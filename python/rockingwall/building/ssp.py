@@ -1,4 +1,4 @@
-"""The building scene (rockingwall.building_scene.Scene) as an SSP 1.0 file, and back.
+"""The building scene (rockingwall.building.scene.Scene) as an SSP 1.0 file, and back.
 
 An `.ssp` is a zip holding SystemStructure.ssd and the FMUs under resources/. The .ssd has one
 system with the record's ground acceleration as its input connector `ag` (it feeds every
@@ -22,7 +22,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 import zipfile
 
-from .building_scene import FLOOR_OUT, Scene, WallSpec
+from .scene import FLOOR_OUT, Scene, WallSpec
 
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
       "ssc": "http://ssp-standard.org/SSP1/SystemStructureCommon",

@@ -13,7 +13,7 @@ Signs (docs/model.md, docs/building.md): F_top = Kd (s2 - u_top) is the force of
 on the diaphragm it is tied to, F_base the force the wall puts on its base, both +x; F_wall_i is
 the force of the wall below on diaphragm i and F_above_i that of the wall above, +x; the Building
 adds them. The F_base of the wall of storey 1 goes into the ground. Each input takes one output,
-so the scene is also an SSP 1.0 system (rockingwall.ssp).
+so the scene is also an SSP 1.0 system (rockingwall.building.ssp).
 
 Second-order coupling (`order=2`): every coupled input gets, besides its value at the
 communication point t_k, a first derivative through fmi2SetRealInputDerivatives, so the slave
@@ -33,9 +33,9 @@ import tempfile
 
 import numpy as np
 
-from . import paths, records
-from .couple import CouplingError, _close_slaves, _fmi_call, _FmuLog, _initialise, _load_slave
-from .names import HINGE_LAWS, SUPPORTS, paper_wall
+from .. import paths, records
+from ..coupling.wall_diaphragm import CouplingError, _close_slaves, _fmi_call, _FmuLog, _initialise, _load_slave
+from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 
 WALL_OUT = ["s1", "s2", "F_top", "F_base", "energy", "P_ground", "dissipated"]
 FLOOR_OUT = ["u_diaph", "a_diaph", "u_top", "u_floor", "v_floor", "v_diaph", "work_storey", "work_diaph"]
@@ -356,8 +356,8 @@ def main(argv=None):
     a = parse_args(argv)
     try:
         if a.example:
-            from . import building_example
-            from .sweep import suites
+            from . import example as building_example
+            from ..sweep import suites
             return building_example.main(a.records_cache or suites.fema_cache())
         if a.from_ssp:
             from . import ssp

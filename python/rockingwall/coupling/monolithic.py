@@ -21,7 +21,7 @@ import tempfile
 
 import numpy as np
 
-from . import couple
+from . import wall_diaphragm as couple
 
 _DOUBLE = ctypes.sizeof(ctypes.c_double)
 

@@ -42,10 +42,10 @@ import tempfile
 
 import numpy as np
 
-from . import paths, records
-from .names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
+from .. import paths, records
+from ..names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
 
-from . import coupling_rules
+from . import rules as coupling_rules
 
 WALL_OUT = ["s1", "s2", "F_top", "energy", "P_ground", "dissipated"]
 DIA_OUT = ["u", "v", "energy", "P_ground", "P_damping"]
@@ -182,8 +182,8 @@ def parse_settings(items):
     """{name: value in SI} from --set NAME=VALUE items, as every other command reads them: a Real
     parameter of RockingWall, a number in its SI unit or with a unit ('14.08kN/m', '230mm'), inside
     the model's range. ValueError naming the item and what is wrong with it."""
-    from .engine import parameter_table
-    from .units import parse
+    from ..engine import parameter_table
+    from ..units import parse
     table = {name: row for name, row in parameter_table().items() if not row.is_integer}
     out = {}
     for item in items or []:
@@ -461,7 +461,7 @@ def plot(r, path, title, other=None):
 
 def _stiffness(text):
     """A stiffness per metre of wall in N/m per m, from a bare number or a value with its unit."""
-    from .units import parse
+    from ..units import parse
     return parse(text, "N/m2", "stiffness")
 
 
@@ -517,7 +517,7 @@ def run_here(a):
     wall = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
     dia = {"m": a.m, "k": a.k, "zeta": a.zeta}
     if a.master == "monolithic":
-        from . import couple_monolithic
+        from . import monolithic as couple_monolithic
         return couple_monolithic.run_monolithic(a.wall_fmu, a.diaphragm_fmu, t_in, ag_in, a.t_end, wall, dia,
                                                 rtol=a.rtol, output_interval=a.macro_step)
     if a.master == "libcosim":
