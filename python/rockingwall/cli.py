@@ -12,8 +12,8 @@ from .records import RecordError
 DELEGATED = {
     "sweep": ("rockingwall.sweep.command", "a parametric sweep (walls x records x intensities x K_d) on Dask"),
     "ida": ("rockingwall.ida", "incremental dynamic analysis and fragility from a sweep's results"),
-    "couple": ("rockingwall.coupling.wall_diaphragm", "the wall FMU coupled to the Diaphragm FMU (co-simulation)"),
-    "couple-building": ("rockingwall.building.scene", "walls in a Building FMU, second-order co-simulation, SSP"),
+    "couple": ("rockingwall.commands.couple", "the wall FMU coupled to the Diaphragm FMU (co-simulation)"),
+    "couple-building": ("rockingwall.commands.couple_building", "walls in a Building FMU, second-order co-simulation, SSP"),
     "paper": ("rockingwall.paper", "reproduce the paper's tables and figures"),
     "animate": ("rockingwall.animate", "an animation of the rocking wall under a record"),
     "demo": ("rockingwall.demo", "the main job: the paper's wall 1 under El Centro 1940 at 50 %"),

@@ -1,5 +1,6 @@
 """Out-of-plane walls in a building: Building.fmu plus one RockingWall.fmu per storey, coupled
-through FMI 2.0 Co-Simulation by a fixed-step Jacobi master over fmpy (FMU2Slave, in-process).
+through FMI 2.0 Co-Simulation by the package's Jacobi master (rockingwall.coupling.jacobi, fmpy
+FMU2Slave in this process). The scene, its run and its result.
 
 The wall of storey i stands on floor i-1 (the ground for i = 1) and is tied to floor i:
 
@@ -22,19 +23,17 @@ passes the slope to the wall's exact engine and to the Building's CVODE stepper)
 is extrapolated by the master from the last two exchanges, (v_k - v_{k-1})/H (the FMUs give no
 output derivatives: maxOutputDerivativeOrder = 0); the record's ag gets its exact secant slope
 over the step. `order=1` holds every input over the step (the scheme of `rockingwall couple`).
-
-    rockingwall couple-building --storeys 2 --record elcentro --scale 0.5
+A wall that collapses (its fmi2Discard) falls out of the scene; the building's force inputs then
+jump, and their slopes start again from 0.
 """
-import argparse
 import dataclasses
 import math
-import sys
-import tempfile
 
 import numpy as np
 
-from .. import paths, records
-from ..coupling.wall_diaphragm import CouplingError, _close_slaves, _fmi_call, _FmuLog, _initialise, _load_slave
+from .. import paths
+from ..coupling import jacobi
+from ..coupling.slaves import fmi_call
 from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 
 WALL_OUT = ["s1", "s2", "F_top", "F_base", "energy", "P_ground", "dissipated"]
@@ -101,6 +100,43 @@ class Scene:
     def ground_inputs(self):
         """(instance, variable) that take the record's ag."""
         return [("building", "ag")] + [(w.name, "ag") for w in self.walls if w.storey == 1]
+
+    # ---- the scene as the Jacobi master runs it (rockingwall.coupling.jacobi) ----
+    def slaves(self):
+        """The building first, then the walls in their order."""
+        return ([("building", self.building_fmu, (self.building_real, self.building_integer))]
+                + [(w.name, self.wall_fmu, (w.real, w.integer)) for w in self.walls])
+
+    def outputs(self, name):
+        if name == "building":
+            return [f"{q}_{i}" for i in range(1, self.n_storeys + 1) for q in FLOOR_OUT]
+        return WALL_OUT
+
+    def inputs(self, outputs, ag, fallen):
+        """{(instance, variable): value} of every input at a communication point, from the
+        outputs. A collapsed wall (in `fallen`) has fallen out: it takes no inputs and puts no
+        force."""
+        n = self.n_storeys
+        b_out = outputs["building"]
+        standing = {w.storey: w for w in self.walls if w.name not in fallen}
+        values = {("building", "ag"): ag}
+        for i in range(1, n + 1):
+            below, above = standing.get(i), standing.get(i + 1)
+            values[("building", f"F_wall_{i}")] = outputs[below.name]["F_top"] if below else 0.0
+            values[("building", f"F_above_{i}")] = outputs[above.name]["F_base"] if above else 0.0
+        for i, w in standing.items():
+            values[(w.name, "ag")] = ag if i == 1 else b_out[f"a_diaph_{i - 1}"]
+            values[(w.name, "u_top")] = b_out[f"u_top_{i}"]
+        return values
+
+    @staticmethod
+    def may_fall(name):
+        return name != "building"
+
+    @staticmethod
+    def jumps_when_a_slave_falls(key):
+        """A wall fell out: the building's force inputs jump."""
+        return key[1].startswith(("F_wall_", "F_above_"))
 
 
 def default_scene(n_storeys=2, walls=None, wall=1, Kd=None, diaphragm_law=2, hinge_law="dohertyHinge",
@@ -172,219 +208,47 @@ class SceneResult(dict):
 def _building_meta(b, n):
     """The building's masses, stiffnesses and Rayleigh coefficients as the FMU holds them."""
     names = [f"{q}_{i + 1}" for i in range(n) for q in ("m", "md", "k", "kd")] + ["rayleighMass", "rayleighStiffness"]
-    v = dict(zip(names, _fmi_call(b, "reading the parameters", b.getReal, [b.vr[x] for x in names])))
+    v = dict(zip(names, fmi_call(b, "reading the parameters", b.getReal, [b.vr[x] for x in names])))
     return dict(n_storeys=n, m=[v[f"m_{i + 1}"] for i in range(n)], md=[v[f"md_{i + 1}"] for i in range(n)],
                 k=[v[f"k_{i + 1}"] for i in range(n)], kd=[v[f"kd_{i + 1}"] for i in range(n)],
                 a0=v["rayleighMass"], a1=v["rayleighStiffness"])
 
 
-class _Exchange:
-    """The coupled inputs of every slave at one communication point, and their slopes over the
-    step: extrapolated from the previous exchange (order 2) or zero (order 1)."""
-
-    def __init__(self, order, H):
-        self.order, self.H, self.previous = order, H, None
-
-    def forget_forces(self):
-        """A wall fell out: the building's force inputs jump; no slope across the jump."""
-        if self.previous is not None:
-            self.previous = {k: v for k, v in self.previous.items() if not k[1].startswith(("F_wall_", "F_above_"))}
-
-    def slopes(self, values):
-        if self.order < 2 or self.previous is None:
-            out = {k: 0.0 for k in values}
-        else:
-            out = {k: (v - self.previous[k]) / self.H if k in self.previous else 0.0 for k, v in values.items()}
-        self.previous = dict(values)
-        return out
-
-
-def _coupled_inputs(scene, b_out, w_out, ag, collapsed=()):
-    """{(instance, variable): value} of every input at a communication point, from the outputs.
-    A collapsed wall (in `collapsed`) has fallen out: it takes no inputs and puts no force."""
-    n = scene.n_storeys
-    standing = {w.storey: w for w in scene.walls if w.name not in collapsed}
-    values = {("building", "ag"): ag}
-    for i in range(1, n + 1):
-        below, above = standing.get(i), standing.get(i + 1)
-        values[("building", f"F_wall_{i}")] = w_out[below.name]["F_top"] if below else 0.0
-        values[("building", f"F_above_{i}")] = w_out[above.name]["F_base"] if above else 0.0
-    for i, w in standing.items():
-        values[(w.name, "ag")] = ag if i == 1 else b_out[f"a_diaph_{i - 1}"]
-        values[(w.name, "u_top")] = b_out[f"u_top_{i}"]
-    return values
-
-
-def _set_inputs(slaves, values, slopes, ground_keys, ground_slope, at):
-    """Set every input, then its slope (the record's own slope for the inputs that take ag)."""
-    for name, s in slaves.items():
-        keys = [k for k in values if k[0] == name]
-        vr = [s.vr[k[1]] for k in keys]
-        _fmi_call(s, at, s.setReal, vr, [values[k] for k in keys])
-        d = [ground_slope if k in ground_keys else slopes[k] for k in keys]
-        if any(x != 0.0 for x in d):  # after setReal, which holds an input until told otherwise
-            _fmi_call(s, at, s.setRealInputDerivatives, vr, [1] * len(vr), d)
-
-
-def _read(slaves, scene, w_last=None, collapsed=()):
-    """The building's floor outputs and the walls' outputs; a collapsed wall keeps its last ones."""
-    b = slaves["building"]
-    n = scene.n_storeys
-    names = [f"{q}_{i}" for i in range(1, n + 1) for q in FLOOR_OUT]
-    b_out = dict(zip(names, b.getReal([b.vr[x] for x in names])))
-    w_out = {w.name: (w_last[w.name] if w.name in collapsed else
-                      dict(zip(WALL_OUT, slaves[w.name].getReal([slaves[w.name].vr[x] for x in WALL_OUT]))))
-             for w in scene.walls}
-    return b_out, w_out
-
-
 def run(scene, record, t_end, H, order=2, rtol=1e-8):
-    """The fmpy master over `scene` under `record` (a rockingwall.records.Record, ag in m/s2) to
-    t_end with macro step H. Returns a SceneResult. A wall that collapses (its fmi2Discard) falls
-    out of the scene: from then on it takes no inputs and puts no force on the building, its
-    outputs stay at the collapse; result["collapsed"] = {storey: t}, result["collapsed_at"] the
-    first (None if none), and the energy terms hold up to then only. Any other failure raises
-    CouplingError."""
+    """The Jacobi master (rockingwall.coupling.jacobi) over `scene` under `record` (a
+    rockingwall.records.Record, ag in m/s2) to t_end with macro step H. Returns a SceneResult. A
+    wall that collapses (its fmi2Discard) falls out of the scene: from then on it takes no inputs
+    and puts no force on the building, its outputs stay at the collapse; result["collapsed"] =
+    {storey: t}, result["collapsed_at"] the first (None if none), and the energy terms hold up to
+    then only. Any other failure raises CouplingError."""
     if not (math.isfinite(H) and 1e-6 <= H <= t_end):
         raise ValueError(f"macro step {H!r} is outside [1e-6, t_end = {t_end:g}] s")
     if order not in (1, 2):
         raise ValueError(f"coupling order {order!r}: 1 (inputs held) or 2 (inputs ramped)")
-    log, slaves = _FmuLog(), {}
-    with tempfile.TemporaryDirectory(prefix="building_scene_") as unzip_root:
-        try:
-            slaves["building"] = _load_slave(scene.building_fmu, "building", unzip_root, log)
-            _initialise(slaves["building"], (scene.building_real, scene.building_integer), rtol)
-            for w in scene.walls:
-                slaves[w.name] = _load_slave(scene.wall_fmu, w.name, unzip_root, log)
-                _initialise(slaves[w.name], (w.real, w.integer), rtol)
-            return _jacobi(scene, slaves, np.asarray(record.t, float), np.asarray(record.ag, float), t_end, H, order)
-        finally:
-            _close_slaves(list(slaves.values()))
-
-
-def _jacobi(scene, slaves, t_in, ag_in, t_end, H, order):
-    from fmpy.fmi1 import FMICallException
-    from fmpy.fmi2 import fmi2Discard
-    ground_keys = set(scene.ground_inputs())
-    n_steps = int(round(t_end / H))
-    exchange = _Exchange(order, H)
-    rows, collapsed = [], {}
-    b_out, w_out = _read(slaves, scene)
-
-    def ag_at(t):
-        return float(np.interp(t, t_in, ag_in, right=0.0))
-
-    for k in range(n_steps + 1):
-        t = k * H
-        at = f"at t = {t:.6g} s"
-        ag = ag_at(t)
-        values = _coupled_inputs(scene, b_out, w_out, ag, collapsed)
-        slopes = exchange.slopes(values)
-        ag_slope = (ag_at(t + H) - ag) / H if order == 2 else 0.0
-        standing = {n: s for n, s in slaves.items() if n not in collapsed}
-        _set_inputs(standing, values, slopes, ground_keys, ag_slope, at)
-        b_out, w_out = _read(slaves, scene, w_out, collapsed)  # outputs with these inputs (algebraic ones change)
-        rows.append(_row(t, ag, b_out, w_out, values))
-        if k == n_steps:
-            break
-        for name, s in standing.items():
-            try:
-                s.doStep(currentCommunicationPoint=t, communicationStepSize=H)
-            except FMICallException as exc:
-                if exc.status != fmi2Discard or name == "building":  # an error, not a wall's collapse
-                    _fmi_call(s, at, _raise, exc)
-                collapsed[name] = t
-                w_out[name] = dict(zip(WALL_OUT, s.getReal([s.vr[x] for x in WALL_OUT])))  # at the collapse
-                exchange.forget_forces()
-        if collapsed and len(collapsed) == len(scene.walls):
-            break  # every wall fell: nothing of interest remains
-        b_out, w_out = _read(slaves, scene, w_out, collapsed)
+    history = jacobi.run(scene, record.t, record.ag, t_end, H, order=order, rtol=rtol,
+                         read_at_end=lambda slaves: _building_meta(slaves["building"], scene.n_storeys),
+                         prefix="building_scene_")
+    rows = [_row(p) for p in history.points]
     r = SceneResult({key: np.asarray([row.get(key, np.nan) for row in rows]) for key in rows[0]})
-    r["collapsed_at"] = min(collapsed.values()) if collapsed else None
-    r["collapsed"] = {int(name.split("_")[1]): t for name, t in collapsed.items()}
-    r.meta = dict(_building_meta(slaves["building"], scene.n_storeys), walls=[w.storey for w in scene.walls])
+    r["collapsed_at"] = min(history.fallen.values()) if history.fallen else None
+    r["collapsed"] = {int(name.split("_")[1]): t for name, t in history.fallen.items()}
+    r.meta = dict(history.at_end, walls=[w.storey for w in scene.walls])
     return r
 
 
-def _row(t, ag, b_out, w_out, values):
-    row = {"time": t, "ag": ag}
-    row.update(b_out)
-    for name, out in w_out.items():
-        row.update({f"{name}_{q}": v for q, v in out.items()})
-    row.update({f"{k[0]}_{k[1]}_in": v for k, v in values.items()})
+def _row(point):
+    """One row of the result: time, ag, the building's outputs as they are named, each wall's as
+    wall_<i>_<output>, each input set as <instance>_<variable>_in."""
+    row = {"time": point.t, "ag": point.ag}
+    row.update(point.outputs["building"])
+    for name, out in point.outputs.items():
+        if name != "building":
+            row.update({f"{name}_{q}": v for q, v in out.items()})
+    row.update({f"{k[0]}_{k[1]}_in": v for k, v in point.inputs.items()})
     return row
-
-
-def _raise(exc):
-    raise exc
 
 
 def observed_orders(H_list, peaks, reference):
     """log2 of successive error ratios of peaks against the reference, for halving H."""
     err = np.abs(np.asarray(peaks) - reference)
     return [math.log(err[i] / err[i + 1], H_list[i] / H_list[i + 1]) for i in range(len(err) - 1)]
-
-
-# ---- command line ---------------------------------------------------------------------------------
-
-def parse_args(argv):
-    ap = argparse.ArgumentParser(prog="rockingwall couple-building", description=__doc__,
-                                 formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--storeys", type=int, default=2, help="nStoreys of the building, 1..5")
-    ap.add_argument("--walls", help="comma-separated storeys with a wall (default: every storey)")
-    ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
-    ap.add_argument("--Kd", type=float, default=1e6, help="wall-to-diaphragm connection, N/m per m")
-    ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(HINGE_LAWS))
-    ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2],
-                    help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber)")
-    ap.add_argument("--record", default="elcentro", help="'elcentro', 'gaussian[:D,T]' or an .AT2/.csv file")
-    ap.add_argument("--scale", type=float, default=0.5)
-    ap.add_argument("--macro-step", type=float, default=1e-3, help="H [s]")
-    ap.add_argument("--t-end", type=float, default=None, help="[s], default the record's duration")
-    ap.add_argument("--order", type=int, default=2, choices=[1, 2],
-                    help="2: inputs ramped with extrapolated derivatives; 1: inputs held")
-    ap.add_argument("--ssp", help="also write the scene as an SSP 1.0 file here")
-    ap.add_argument("--from-ssp", help="run the scene of this SSP file instead of the options above")
-    ap.add_argument("--example", action="store_true",
-                    help="generate the worked example of docs/building-coupling.md (plot and table)")
-    ap.add_argument("--records-cache", help="folder of the converted FEMA P695 far-field records "
-                                            "(default: the one `rockingwall sweep` uses)")
-    return ap.parse_args(argv)
-
-
-def main(argv=None):
-    a = parse_args(argv)
-    try:
-        if a.example:
-            from . import example as building_example
-            from ..sweep import suites
-            return building_example.main(a.records_cache or suites.fema_cache())
-        if a.from_ssp:
-            from . import ssp
-            scene = ssp.read(a.from_ssp)
-        else:
-            walls = [int(x) for x in a.walls.split(",")] if a.walls else None
-            scene = default_scene(a.storeys, walls, a.wall, a.Kd, a.diaphragm_law, a.hinge_law)
-        if a.ssp:
-            from . import ssp
-            ssp.write(scene, a.ssp)
-            print(f"wrote {a.ssp}")
-        rec = records.load(a.record).scaled(a.scale)
-        t_end = a.t_end or float(rec.t[-1])
-        r = run(scene, rec, t_end, a.macro_step, a.order)
-    except (ValueError, OSError, CouplingError) as exc:
-        print(f"couple-building: error: {exc}", file=sys.stderr)
-        return 1
-    for w in scene.walls:
-        print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
-    e = r.energy_terms()
-    upto = r["time"] <= (r["collapsed_at"] if r["collapsed_at"] is not None else np.inf)
-    print(f"energy (up to the first collapse): max |residual| {np.abs(e['residual'][upto]).max():.4g} J/m "
-          f"of max input {np.abs(e['input'][upto]).max():.4g} J/m")
-    for storey, t in sorted(r["collapsed"].items()):
-        print(f"the wall in storey {storey} collapsed at t = {t:.3f} s and fell out of the scene")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
