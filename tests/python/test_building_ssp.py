@@ -179,3 +179,10 @@ def test_building_variables_the_master_reads_are_checked():
     lacking = {k: v for k, v in full.items() if not k.startswith("v_floor_")}
     with pytest.raises(ssp.SSPError, match="lacks variables the master reads: v_floor_1, v_floor_2"):
         ssp._check_building_variables(scene(), lacking, "x.ssp")
+
+
+def test_the_documented_module_path_names_the_same_functions():
+    """docs/building-coupling.md has long named rockingwall.ssp; it is rockingwall.building.ssp."""
+    import rockingwall.ssp as documented
+    assert (documented.write, documented.read, documented.run_libcosim, documented.SSPError) == (
+        ssp.write, ssp.read, ssp.run_libcosim, ssp.SSPError)
