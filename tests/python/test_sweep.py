@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rockingwall.sweep import command as sweep
+from rockingwall.commands import sweep
 from rockingwall.sweep import fragility, grid, suites
 from rockingwall.sweep.execute import execute
 

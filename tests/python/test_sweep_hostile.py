@@ -13,8 +13,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rockingwall import ida
-from rockingwall.sweep import command as sweep
+from rockingwall.commands import ida as ida_command
+from rockingwall.commands import sweep
+from rockingwall.sweep import ida
 from rockingwall.sweep import fmi2sim_task, suites
 from rockingwall.sweep import rows as result_rows
 from test_sweep import pulse_record
@@ -378,12 +379,12 @@ def test_finding16_garbage_in_an_ok_row_is_named_by_ida(tmp_path, capsys):
     fields[result_rows.COLUMNS.index("peak_s1")] = "banana"
     lines[4] = ",".join(fields)
     path.write_text("".join(lines))
-    assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 1  # plots made, damage reported
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 1  # plots made, damage reported
     err = capsys.readouterr().err
     assert f"{path}:5: peak_s1 = 'banana' is not a number" in err
     assert (tmp_path / "plots" / "kd_map.png").exists()
     (tmp_path / "empty.csv").write_text("a,b\n1,2\n")
-    assert ida.main([str(tmp_path / "empty.csv"), "--out", str(tmp_path / "plots")]) == 2
+    assert ida_command.main([str(tmp_path / "empty.csv"), "--out", str(tmp_path / "plots")]) == 2
     assert "not a results file" in capsys.readouterr().err
 
 
@@ -391,7 +392,7 @@ def test_ida_on_a_single_kd_gives_plots_not_a_traceback(tmp_path):
     path = synthetic_results(tmp_path)
     d = pd.read_csv(path)
     d[d.kd_kN == 5.0].to_csv(path, index=False, lineterminator="\n")
-    assert ida.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 0
     assert (tmp_path / "plots" / "kd_map.png").exists()
 
 

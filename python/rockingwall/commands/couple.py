@@ -11,7 +11,7 @@ integrate themselves with CVODE; a master exchanges their values every macro ste
 Two independent masters run the same fixed-step Jacobi scheme (every slave steps from t to t+H
 with the inputs set at t; after the step the outputs at t+H become the inputs of the next step):
 fmpy (FMU2Slave) and libcosim (libcosimpy). The command line runs each master in a child process
-(this command with --json), so an FMU that crashes or a libcosim abort ends in a message naming
+(this script with --json), so an FMU that crashes or a libcosim abort ends in a message naming
 the master and the signal, not a dead interpreter; every file the child unpacks goes into a
 temporary folder removed afterwards. The ground motion is held over each step in both.
 

@@ -13,7 +13,7 @@ Signs (docs/model.md, docs/building.md): F_top = Kd (s2 - u_top) is the force of
 on the diaphragm it is tied to, F_base the force the wall puts on its base, both +x; F_wall_i is
 the force of the wall below on diaphragm i and F_above_i that of the wall above, +x; the Building
 adds them. The F_base of the wall of storey 1 goes into the ground. Each input takes one output,
-so the scene is also an SSP 1.0 system (rockingwall.building.ssp).
+so the scene is also an SSP 1.0 system (rockingwall.ssp).
 
 Second-order coupling (`order=2`): every coupled input gets, besides its value at the
 communication point t_k, a first derivative through fmi2SetRealInputDerivatives, so the slave

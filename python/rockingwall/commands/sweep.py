@@ -29,10 +29,9 @@ import sys
 import time
 
 from .. import paths
-from . import grid, store, suites
-from .execute import check_options, describe as describe_outcome, execute
-from .execute import Terminated
-from .lock import Busy
+from ..sweep import grid, store
+from ..sweep.execute import Terminated, check_options, describe as describe_outcome, execute
+from ..sweep.lock import Busy
 
 def kd_in_kN(text):
     """K_d in kN/m per m from '30' (taken as kN/m per m) or a value with its unit ('3e4 N/m/m')."""
@@ -79,25 +78,6 @@ def parse_args(argv=None):
                         "and print the speed-up")
     p.add_argument("--no-progress", action="store_true")
     return p.parse_args(argv)
-
-
-def plan(args):
-    flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
-    cfg = grid.merge(grid.load_config(args.config), flags)
-    suite = suites.load(cfg["suite"], cfg["records"])
-    return cfg, suite, grid.expand(cfg, suite)
-
-
-def describe(cfg, suite, specs):
-    kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
-    levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
-    bad = [r.name for r in suite if r.error]
-    lines = [f"walls {cfg['walls']}; models {cfg['models']}; hinge laws {cfg['hinge_laws']}",
-             f"K_d [kN/m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
-             f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
-             levels,
-             f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]
-    return "\n".join(lines)
 
 
 def check_artefacts(args):
@@ -157,8 +137,9 @@ def main(argv=None):
 
 def run(args):
     check_command(args)
-    cfg, suite, specs = plan(args)
-    print(describe(cfg, suite, specs))
+    flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
+    cfg, suite, specs = grid.plan(args.config, flags)
+    print(grid.describe(cfg, suite, specs))
     if args.dry_run:
         return 0
     check_artefacts(args)
@@ -185,6 +166,3 @@ def run(args):
         print(f"speed-up {first} -> {n} workers: {times[first] / times[n]:.2f}x")
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())
