@@ -54,5 +54,11 @@ def rockingwall_fmu():
 
 
 @pytest.fixture(scope="session")
+def ball_fmu():
+    """The bouncing ball with analytic bounce times (tests/bouncingball), for fmi2sim's tests."""
+    return _artefact("BouncingBall.fmu")
+
+
+@pytest.fixture(scope="session")
 def fmi2sim_exe():
     return _artefact("fmi2sim")
