@@ -11,16 +11,9 @@ import pytest
 from rockingwall.commands import sweep
 from rockingwall.sweep import fragility, grid, suites
 from rockingwall.sweep.execute import execute
+from sweep_harness import pulse_record
 
 WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0)  # the paper's wall 1, written out independently
-
-
-def pulse_record(path, amp_g, period, n_cycles=3, dt=0.01, tail=1.0):
-    """A short sine burst in g as an AT2 file: rocks the wall in a fraction of a second of CPU."""
-    t = np.arange(0.0, n_cycles * period + tail, dt)
-    acc = np.where(t < n_cycles * period, amp_g * np.sin(2 * np.pi * t / period), 0.0)
-    suites.write_at2(path, acc, dt, f"test pulse {amp_g} g, {period} s")
-    return acc
 
 
 @pytest.fixture()
