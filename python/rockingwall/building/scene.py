@@ -32,7 +32,7 @@ import math
 import numpy as np
 
 from .. import paths
-from ..coupling import jacobi
+from ..coupling import jacobi, rules
 from ..coupling.slaves import fmi_call
 from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 
@@ -159,10 +159,6 @@ class SceneResult(dict):
     """Arrays on the communication grid: time, ag, wall_<i>_<out>, <out>_<i> of the building's
     floors, F_wall_<i>, and the energy balance of the whole scene."""
 
-    def _integral(self, p):
-        t = self["time"]
-        return np.concatenate([[0.0], np.cumsum(0.5 * (p[1:] + p[:-1]) * np.diff(t))])
-
     def peak(self, storey, what="s1"):
         return float(np.max(np.abs(self[f"wall_{storey}_{what}"])))
 
@@ -187,8 +183,8 @@ class SceneResult(dict):
                 P_in = P_in + (self[f"wall_{s}_F_top"] + self[f"wall_{s}_F_base"]) * self[f"v_diaph_{s - 1}"]
             stored = stored + self[f"wall_{s}_energy"]
             impacts = impacts + self[f"wall_{s}_dissipated"]
-        damping = self._integral(self._damping_power())
-        inp = self._integral(P_in)
+        damping = rules.work(self["time"], self._damping_power())
+        inp = rules.work(self["time"], P_in)
         return dict(input=inp, stored=stored - stored[0], damping=damping, impacts=impacts - impacts[0],
                     residual=inp - (stored - stored[0]) - damping - (impacts - impacts[0]))
 

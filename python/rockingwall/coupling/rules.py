@@ -115,6 +115,12 @@ def max_macro_step(m_w, m_d, Kd, k, zeta_num_max=ZETA_NUM_MAX):
     return H_SEARCH[1]
 
 
+def work(t, power):
+    """The work of a power history up to each time of t (trapezoidal rule, 0 at t[0]): the energy
+    terms of the coupled scenes' bookkeeping."""
+    return np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(t))])
+
+
 def energy_check(residual, ground_work, share_max=ENERGY_SHARE_MAX):
     """(share, ok): the largest |energy residual| as a share of the largest |ground work|, and
     whether it is within share_max. A run with no ground work has share 0 when its residual is 0."""

@@ -103,20 +103,15 @@ class CoupledResult(dict):
     def energy_residual(self):
         """(E_wall + E_dia)(t) - E(0) - ground work + damping + impact losses: the energy the
         coupled system made or lost unaccounted for (trapezoidal work integrals)."""
-        t = self["time"]
         stored = self["wall_energy"] + self["dia_energy"]
         power_in = self["wall_P_ground"] + self["dia_P_ground"] - self["dia_P_damping"]
-        work = np.concatenate([[0.0], np.cumsum(0.5 * (power_in[1:] + power_in[:-1]) * np.diff(t))])
-        return stored - stored[0] - work + self["wall_dissipated"]
-
-    def _work(self, p):
-        return np.concatenate([[0.0], np.cumsum(0.5 * (p[1:] + p[:-1]) * np.diff(self["time"]))])
+        return stored - stored[0] - rules.work(self["time"], power_in) + self["wall_dissipated"]
 
     def ground_work(self):
-        return self._work(self["wall_P_ground"] + self["dia_P_ground"])
+        return rules.work(self["time"], self["wall_P_ground"] + self["dia_P_ground"])
 
     def damping_loss(self):
-        return self._work(self["dia_P_damping"])
+        return rules.work(self["time"], self["dia_P_damping"])
 
 
 def assemble(t, wall_rows, dia_rows):
