@@ -140,7 +140,7 @@ def reference_run(sig, names, kd, t_end, rtol):
 def sweep(workers=2):
     """The 3 520-run fragility sweep over the FEMA P695 far-field set on `workers` threads."""
     from concurrent.futures import ThreadPoolExecutor
-    from rockingwall.sweep.records import fema_farfield
+    from rockingwall.sweep.suites import fema_farfield
     cache = pathlib.Path(os.environ.get("XDG_CACHE_HOME", pathlib.Path.home() / ".cache")) / "rockingwall" / "fema_farfield"
     records = [read_at2(r.path) for r in fema_farfield(cache)]
     jobs = [(rec, kd) for rec in records for kd in SWEEP_KD]

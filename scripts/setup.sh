@@ -48,7 +48,7 @@ if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
 fi
 
 # The package rockingwall (python/rockingwall) and the reference solver rwref (reference/), both
-# editable: the package finds the compiled parts in build/ (rockingwall/_paths.py). `pip install .`
+# editable: the package finds the compiled parts in build/ (rockingwall/paths.py). `pip install .`
 # (without -e) is what a user elsewhere runs: it builds with CMake and installs the binaries too.
 if ! .venv/bin/python -c "import rockingwall, rwref" 2>/dev/null; then
   echo "setup: installing the packages rockingwall and rwref into .venv (editable)"

@@ -1,3 +1,4 @@
+"""`python -m rockingwall`: the command line (rockingwall.cli)."""
 import sys
 
 from .cli import main

@@ -7,7 +7,7 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from . import _paths, fmi2sim, names
+from . import fmi2sim, names, paths
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .records import Record
 from .wall import Wall
@@ -72,7 +72,7 @@ def _fmi2sim(wall, record, t_end, grid, rtol, output_interval):
         table = os.path.join(tmp, "input.csv")
         pd.DataFrame({"time": record.t, "ag": record.ag}).to_csv(table, index=False, float_format="%.17g")
         out = os.path.join(tmp, "out.csv")
-        summary = fmi2sim.run(_paths.wall_fmu(), input_csv=table, stop_time=t_end, rtol=rtol,
+        summary = fmi2sim.run(paths.wall_fmu(), input_csv=table, stop_time=t_end, rtol=rtol,
                               output_interval=output_interval, sets=_sets(wall), output=out)
         data = pd.read_csv(out)
     o = summary["outputs"]
@@ -88,7 +88,7 @@ def _fmpy(wall, record, t_end, grid, rtol, output_interval):
     from . import fmu
     p = dict(wall.params)
     support, law = names.SUPPORT_NAMES[int(p.pop("support"))], names.HINGE_LAW_NAMES[int(p.pop("hingeLaw"))]
-    run = fmu.simulate(_paths.wall_fmu(), t_end, record.t, record.ag, rtol=rtol,
+    run = fmu.simulate(paths.wall_fmu(), t_end, record.t, record.ag, rtol=rtol,
                                  output_interval=output_interval, support=support, hinge_law=law, **p)
     s1, s2 = fmu.on_grid(run.t, run.s1, grid, right=np.nan), fmu.on_grid(run.t, run.s2, grid, right=np.nan)
     t_collapse = float(run.t[-1]) if run.collapsed else float("nan")

@@ -5,23 +5,23 @@ import os
 import sys
 
 from . import __version__
-from . import cli_common as cc
+from .commands import common as cc
 from .records import RecordError
 
 # commands with their own argument parser: name -> (module, one-line help)
 DELEGATED = {
-    "sweep": ("rockingwall.sweep.command", "a parametric sweep (walls x records x intensities x K_d) on Dask"),
-    "ida": ("rockingwall.ida", "incremental dynamic analysis and fragility from a sweep's results"),
-    "couple": ("rockingwall.couple", "the wall FMU coupled to the Diaphragm FMU (co-simulation)"),
-    "couple-building": ("rockingwall.building_scene", "walls in a Building FMU, second-order co-simulation, SSP"),
-    "paper": ("rockingwall.paper", "reproduce the paper's tables and figures"),
-    "animate": ("rockingwall.animate", "an animation of the rocking wall under a record"),
-    "demo": ("rockingwall.demo", "the main job: the paper's wall 1 under El Centro 1940 at 50 %"),
+    "sweep": ("rockingwall.commands.sweep", "a parametric sweep (walls x records x intensities x K_d) on Dask"),
+    "ida": ("rockingwall.commands.ida", "incremental dynamic analysis and fragility from a sweep's results"),
+    "couple": ("rockingwall.commands.couple", "the wall FMU coupled to the Diaphragm FMU (co-simulation)"),
+    "couple-building": ("rockingwall.commands.couple_building", "walls in a Building FMU, second-order co-simulation, SSP"),
+    "paper": ("rockingwall.commands.paper", "reproduce the paper's tables and figures"),
+    "animate": ("rockingwall.commands.animate", "an animation of the rocking wall under a record"),
+    "demo": ("rockingwall.commands.demo", "the main job: the paper's wall 1 under El Centro 1940 at 50 %"),
 }
 
 
 def build_parser():
-    from . import assess, info, run
+    from .commands import assess, info, run
     p = argparse.ArgumentParser(prog="rockingwall", description=__doc__ + "\n\n" + "\n".join(
         f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter)

@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from . import _paths
+from . import paths
 
 NX = 4
 ERRORS = {1: "bad argument", 2: "bad parameters", 3: "unsupported", 4: "Zeno", 5: "no memory"}
@@ -123,7 +123,7 @@ _lib = None
 def library():
     global _lib
     if _lib is None:
-        lib = ctypes.CDLL(str(_paths.engine_library()))
+        lib = ctypes.CDLL(str(paths.engine_library()))
         lib.rw_engine_run.argtypes = [ctypes.c_void_p, ctypes.POINTER(_Record), ctypes.POINTER(_Options),
                                       ctypes.POINTER(_Result)]
         lib.rw_engine_run.restype = ctypes.c_int

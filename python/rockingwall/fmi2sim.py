@@ -7,7 +7,7 @@ import pathlib
 import subprocess
 import tempfile
 
-from . import _paths
+from . import paths
 
 
 class Fmi2simError(RuntimeError):
@@ -22,7 +22,7 @@ def command(fmu, *, ag=None, ag_scale=None, input_csv=None, stop_time=None, rtol
             sets=(), summary=None, output=None, output_interval=None, executable=None):
     """The argument list of one fmi2sim run (also what a user types to repeat it by hand).
     sets: (name, value) pairs for --set."""
-    cmd = [str(executable or _paths.fmi2sim()), str(fmu)]
+    cmd = [str(executable or paths.fmi2sim()), str(fmu)]
     options = [("--ag", ag), ("--ag-scale", ag_scale), ("--input", input_csv), ("--stop-time", stop_time),
                ("--rtol", rtol), ("--solver", solver), ("--output-interval", output_interval),
                ("--summary", summary), ("--output", output)]

@@ -54,5 +54,35 @@ def rockingwall_fmu():
 
 
 @pytest.fixture(scope="session")
+def ball_fmu():
+    """The bouncing ball with analytic bounce times (tests/bouncingball), for fmi2sim's tests."""
+    return _artefact("BouncingBall.fmu")
+
+
+@pytest.fixture(scope="session")
 def fmi2sim_exe():
     return _artefact("fmi2sim")
+
+
+# ---- sweeps (tests/python/sweep_harness.py) ----
+
+@pytest.fixture()
+def one_record(tmp_path):
+    """A suite folder holding one short pulse record."""
+    from sweep_harness import pulse_record  # the tests' folder is on sys.path once conftest is loaded
+    d = tmp_path / "suite"
+    d.mkdir()
+    pulse_record(d / "p1.AT2", 0.10, 0.6)
+    return d
+
+
+@pytest.fixture()
+def private_tmp(tmp_path, monkeypatch):
+    """A temporary folder of the test's own (TMPDIR for this process and its children), so a
+    test can check that a sweep leaves nothing in it."""
+    import tempfile
+    tmp = tmp_path / "tmpdir"
+    tmp.mkdir()
+    monkeypatch.setenv("TMPDIR", str(tmp))
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp))
+    return tmp

@@ -10,7 +10,7 @@ import rockingwall as rw
 from rockingwall import fmi2sim, intensity, limits
 from rockingwall.records import Record
 from rockingwall.sweep import fragility
-from rockingwall.sweep import records as suite
+from rockingwall.sweep import suites as suite
 
 ENGINEER = dict(b=0.23, h=3.2, W=14080.0, psi=0.2, Kd=30e3, hingeLaw=3)
 WALL_FLAGS = ["--b", "230mm", "--h", "3.2", "--W", "14.08kN/m", "--psi", "0.2", "--hinge-law", "semiRigidHinge"]

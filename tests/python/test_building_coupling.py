@@ -1,4 +1,4 @@
-"""Walls in a building (rockingwall.building_scene): Building.fmu + RockingWall.fmu per storey.
+"""Walls in a building (rockingwall.building.scene): Building.fmu + RockingWall.fmu per storey.
 
 - One storey with rigid in-plane walls (storey spring 1e11 N/m2) and a linear diaphragm is the
   wall + Diaphragm scene of `rockingwall couple`: with the inputs held (order 1) at the same
@@ -7,15 +7,16 @@
 - The macro-step error of peak s1 falls with order >= 1.8 with the extrapolated derivatives
   (against a run at H = 0.125 ms), and about 1 without them.
 - A wall that collapses falls out of the scene; the others run on to the end.
-- Energy bookkeeping of the whole scene (building_scene.SceneResult.energy_terms): the residual
+- Energy bookkeeping of the whole scene (building.scene.SceneResult.energy_terms): the residual
   falls with the macro step and lies below 0.1 % of the peak input work at H = 2 ms.
 """
 import numpy as np
 import pytest
 
-from rockingwall import building_scene as bs
-from rockingwall import couple, records
-from rockingwall._paths import diaphragm_fmu, wall_fmu
+from rockingwall import records
+from rockingwall.building import scene as bs
+from rockingwall.coupling import wall_diaphragm
+from rockingwall.paths import diaphragm_fmu, wall_fmu
 
 M_D, K_D, ZETA = 2000.0, 7e5, 0.05
 
@@ -25,7 +26,7 @@ def one_storey_scene():
     as mass-proportional Rayleigh damping a0 = c/md (a0 M on the diaphragm is c y')."""
     c = 2 * ZETA * np.sqrt(K_D * M_D)
     real = {"m_1": 4000.0, "k_1": 1e11, "md_1": M_D, "kd_1": K_D, "rayleighMass": c / M_D, "rayleighStiffness": 0.0}
-    wall = couple.wall_start_values(1, 1e5)
+    wall = wall_diaphragm.wall_start_values(1, 1e5)
     return bs.Scene(real, {"nStoreys": 1, "storeyLaw": 0, "diaphragmLaw": 0}, [bs.WallSpec(1, *wall)]), wall
 
 
@@ -39,8 +40,8 @@ def one_storey_runs(el_centro_half):
     scene, wall = one_storey_scene()
     rec, t_end = el_centro_half, 6.0
     dia = dict(m=M_D, k=K_D, zeta=ZETA)
-    ref_1ms = couple.run_fmpy(wall_fmu(), diaphragm_fmu(), rec.t, rec.ag, t_end, 1e-3, wall, dia)
-    ref_fine = couple.run_fmpy(wall_fmu(), diaphragm_fmu(), rec.t, rec.ag, t_end, 2.5e-4, wall, dia)
+    ref_1ms = wall_diaphragm.run_fmpy(wall_fmu(), diaphragm_fmu(), rec.t, rec.ag, t_end, 1e-3, wall, dia)
+    ref_fine = wall_diaphragm.run_fmpy(wall_fmu(), diaphragm_fmu(), rec.t, rec.ag, t_end, 2.5e-4, wall, dia)
     held = bs.run(scene, rec, t_end, 1e-3, order=1)
     ramped = bs.run(scene, rec, t_end, 1e-3, order=2)
     return ref_1ms, ref_fine, held, ramped

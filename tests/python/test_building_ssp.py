@@ -12,8 +12,9 @@ import zipfile
 import numpy as np
 import pytest
 
-from rockingwall import building_scene as bs
-from rockingwall import records, ssp
+from rockingwall import records
+from rockingwall.building import scene as bs
+from rockingwall.building import ssp
 
 T_END, H = 2.5, 1e-3
 
@@ -36,7 +37,7 @@ def archive(tmp_path_factory):
 
 def libcosim_peaks(path, storey=2):
     outputs = [(f"wall_{storey}", "s1"), (f"wall_{storey}", "s2"), ("building", f"u_diaph_{storey}")]
-    code = ("import json, sys; import numpy as np; from rockingwall import ssp, records\n"
+    code = ("import json, sys; import numpy as np; from rockingwall import records\nfrom rockingwall.building import ssp\n"
             f"o = ssp.run_libcosim({str(path)!r}, records.gaussian(0.03, 1.0, dt=1e-3), {T_END}, {H}, {outputs!r})\n"
             "print(json.dumps({k[0] + '.' + k[1]: float(np.abs(v).max()) for k, v in o.items() if k != 'time'}))")
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=600)
@@ -129,7 +130,7 @@ def test_not_xml(archive, tmp_path):
 
 def test_replacement_building_without_the_masters_variables(archive, tmp_path):
     """The Diaphragm FMU put in the building's place: named as lacking what the master reads."""
-    from rockingwall._paths import diaphragm_fmu
+    from rockingwall.paths import diaphragm_fmu
 
     def edit(s):  # its connectors still name the building's variables: drop those checks' cause
         return s.replace('source="resources/Building.fmu"', 'source="resources/Diaphragm.fmu"')
@@ -178,3 +179,10 @@ def test_building_variables_the_master_reads_are_checked():
     lacking = {k: v for k, v in full.items() if not k.startswith("v_floor_")}
     with pytest.raises(ssp.SSPError, match="lacks variables the master reads: v_floor_1, v_floor_2"):
         ssp._check_building_variables(scene(), lacking, "x.ssp")
+
+
+def test_the_documented_module_path_names_the_same_functions():
+    """docs/building-coupling.md has long named rockingwall.ssp; it is rockingwall.building.ssp."""
+    import rockingwall.ssp as documented
+    assert (documented.write, documented.read, documented.run_libcosim, documented.SSPError) == (
+        ssp.write, ssp.read, ssp.run_libcosim, ssp.SSPError)

@@ -11,7 +11,9 @@ import zipfile
 
 import pytest
 
-from rockingwall import couple
+from rockingwall.commands import couple as couple_command
+from rockingwall.coupling import wall_diaphragm
+from rockingwall.coupling.slaves import CouplingError
 
 
 # After 300 right-hand-side evaluations (t = 0.033 s at the defaults) the diaphragm's
@@ -91,7 +93,7 @@ def couple_cli(tmp_path, *args):
 
 def test_finding09_couple_leaves_no_extracted_fmus(build_dir, tmp_path, private_tmp):
     wall, dia = build_dir / "RockingWall.fmu", build_dir / "Diaphragm.fmu"
-    r = couple.run_fmpy(wall, dia, [0.0, 1.0], [0.0, 0.0], 0.05, 1e-3)
+    r = wall_diaphragm.run_fmpy(wall, dia, [0.0, 1.0], [0.0, 0.0], 0.05, 1e-3)
     assert len(r["time"]) == 51
     assert list(private_tmp.iterdir()) == []
     proc = couple_cli(tmp_path, "--t-end", 0.05, "--master", "both")
@@ -112,8 +114,8 @@ def test_finding17_failing_slave_exits_nonzero_with_the_real_error(hostile, tmp_
 
 
 def test_finding17_failing_slave_raises_from_run_fmpy(build_dir, hostile, private_tmp):
-    with pytest.raises(couple.CouplingError, match=r"(?i)\(diaphragm\): fmi2DoStep returned error at t = [0-9.]+ s: .*CVODE failed"):
-        couple.run_fmpy(build_dir / "RockingWall.fmu", hostile["failing"], [0.0, 1.0], [0.0, 0.0], 0.5, 1e-3)
+    with pytest.raises(CouplingError, match=r"(?i)\(diaphragm\): fmi2DoStep returned error at t = [0-9.]+ s: .*CVODE failed"):
+        wall_diaphragm.run_fmpy(build_dir / "RockingWall.fmu", hostile["failing"], [0.0, 1.0], [0.0, 0.0], 0.5, 1e-3)
     assert list(private_tmp.iterdir()) == []
 
 
@@ -128,7 +130,7 @@ def test_finding17_crashing_fmu_is_reported(hostile, tmp_path, private_tmp, mast
 
 @pytest.mark.parametrize("H", ["0", "-0.001", "1e-300", "1", "nan"])
 def test_finding17_absurd_macro_step_is_refused_with_the_range(tmp_path, capsys, H):
-    assert couple.main(["--t-end", "0.5", f"--macro-step={H}", "--out", str(tmp_path / "c.csv"),
+    assert couple_command.main(["--t-end", "0.5", f"--macro-step={H}", "--out", str(tmp_path / "c.csv"),
                         "--plot", str(tmp_path / "c.png")]) == 2
     err = capsys.readouterr().err
     assert err.startswith(f"couple.py: error: --macro-step {float(H)!r} is outside [1e-06, t_end = 0.5] s"), err

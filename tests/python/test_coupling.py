@@ -10,7 +10,7 @@ import sys
 import numpy as np
 import pytest
 
-from rockingwall import couple
+from rockingwall.coupling import isolation, wall_diaphragm
 from rockingwall import fmu as rw_fmu
 from rwref.inputs import el_centro
 from rwref.params import WALLS
@@ -31,7 +31,7 @@ def fmus(build_dir):
 
 
 def coupled(fmus, quake, H, dia=None, t_end=T_END, rtol=1e-8):
-    return couple.run_fmpy(*fmus, *quake, t_end, H, couple.wall_start_values(1, KD), dia, rtol=rtol)
+    return wall_diaphragm.run_fmpy(*fmus, *quake, t_end, H, wall_diaphragm.wall_start_values(1, KD), dia, rtol=rtol)
 
 
 def test_stiff_light_diaphragm_reproduces_the_spring_fixed_to_the_ground(fmus, quake):
@@ -110,13 +110,13 @@ def test_libcosim_master_agrees_with_fmpy_master(fmus, quake, tmp_path):
     and the same Jacobi scheme agrees with the fmpy master."""
     H, t_end = 2e-3, T_END
     out = tmp_path / "libcosim.json"
-    proc = couple.run_libcosim_subprocess(
+    proc = isolation.run_libcosim_subprocess(
         [f"--wall-fmu={fmus[0]}", f"--diaphragm-fmu={fmus[1]}", f"--macro-step={H}", f"--t-end={t_end}",
          f"--Kd={KD}"], out)
     assert proc.returncode == 0, proc.stderr[-3000:]
     other = {k: np.asarray(v) for k, v in json.loads(out.read_text()).items()}
     dia = {"m": 2000.0, "k": 7e5, "zeta": 0.05}  # couple.py's defaults, as passed to libcosim
-    r = couple.run_fmpy(*fmus, *quake, t_end, H, couple.wall_start_values(1, KD), dia, rtol=1e-6)
+    r = wall_diaphragm.run_fmpy(*fmus, *quake, t_end, H, wall_diaphragm.wall_start_values(1, KD), dia, rtol=1e-6)
     assert len(other["time"]) == len(r["time"])
     for key in ("wall_s1", "wall_s2", "dia_u"):
         peak = np.abs(r[key]).max()

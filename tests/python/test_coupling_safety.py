@@ -1,5 +1,5 @@
-"""Safety of the wall-diaphragm coupling (rockingwall.couple, rockingwall.coupling_rules,
-rockingwall.couple_monolithic, docs/coupling.md): the macro-step rule of the tie, the energy check,
+"""Safety of the wall-diaphragm coupling (rockingwall.coupling.wall_diaphragm, rockingwall.coupling.rules,
+rockingwall.coupling.monolithic, docs/coupling.md): the macro-step rule of the tie, the energy check,
 and the monolithic run (both FMUs as Model Exchange under one CVODE) as the independent result.
 
 The stiff case is an engineer's top-storey wall (b = 0.23 m, h = 3.2 m, W = 14 080 N/m, psi = 0.2)
@@ -12,9 +12,9 @@ import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
 
-from rockingwall import couple
-from rockingwall import couple_monolithic
-from rockingwall import coupling_rules
+from rockingwall.commands import couple as couple_command
+from rockingwall.coupling import monolithic, wall_diaphragm
+from rockingwall.coupling import rules as coupling_rules
 from rwref.inputs import el_centro
 
 STIFF_WALL = {"b": 0.23, "h": 3.2, "W": 14080.0, "psi": 0.2}
@@ -28,9 +28,9 @@ def fmus(build_dir):
 
 
 def run_cli(fmus, tmp_path, name, extra, capsys):
-    """couple.main on the stiff case; (exit status, summary dict, stderr)."""
+    """`rockingwall couple` on the stiff case; (exit status, summary dict, stderr)."""
     out = tmp_path / f"{name}.csv"
-    status = couple.main([f"--wall-fmu={fmus[0]}", f"--diaphragm-fmu={fmus[1]}", f"--out={out}",
+    status = couple_command.main([f"--wall-fmu={fmus[0]}", f"--diaphragm-fmu={fmus[1]}", f"--out={out}",
                           f"--plot={tmp_path / name}.png"] + STIFF_ARGS + extra)
     err = capsys.readouterr().err
     return status, json.loads(out.with_suffix(".json").read_text()), err
@@ -40,8 +40,8 @@ def run_cli(fmus, tmp_path, name, extra, capsys):
 def monolithic_stiff(fmus):
     """The stiff case under one CVODE: the reference of the co-simulation runs."""
     sig = el_centro(0.4705)
-    wall = couple.wall_start_values(1, 1e6, overrides=STIFF_WALL)
-    return couple_monolithic.run_monolithic(*fmus, np.asarray(sig.t), np.asarray(sig.a), 5.0, wall,
+    wall = wall_diaphragm.wall_start_values(1, 1e6, overrides=STIFF_WALL)
+    return monolithic.run_monolithic(*fmus, np.asarray(sig.t), np.asarray(sig.a), 5.0, wall,
                                             {"m": 400.0, "k": 30e3, "zeta": 0.05}, rtol=1e-8, output_interval=1e-3)
 
 
@@ -105,7 +105,7 @@ def test_stiff_tie_at_the_old_1_ms_step_is_flagged(fmus, tmp_path, capsys):
     of the ground work (exit 0, no warning). Now the step is reported above the tie's limit, the
     energy check fails on stderr and in the summary, and --strict exits with 3."""
     status, info, err = run_cli(fmus, tmp_path, "coarse", ["--macro-step=1e-3", "--strict"], capsys)
-    assert status == couple.EXIT_FLAGGED
+    assert status == couple_command.EXIT_FLAGGED
     assert "exceeds the step the tie allows" in err and "ENERGY CHECK FAILED" in err
     assert info["step_ok"] is False and info["energy_ok"] is False and info["flagged"] is True
     assert info["energy_residual_share"] > 0.1
@@ -131,9 +131,9 @@ def test_monolithic_agrees_with_co_simulation_at_a_small_step(fmus):
     and F_top within 0.5 %."""
     sig = el_centro(0.5)
     t_in, ag_in = np.asarray(sig.t), np.asarray(sig.a)
-    wall, dia = couple.wall_start_values(1, 1e5), {"m": 2000.0, "k": 7e5, "zeta": 0.05}
-    mono = couple_monolithic.run_monolithic(*fmus, t_in, ag_in, 10.0, wall, dia, rtol=1e-8, output_interval=1e-3)
-    cosim = couple.run_fmpy(*fmus, t_in, ag_in, 10.0, 62.5e-6, wall, dia, rtol=1e-8)
+    wall, dia = wall_diaphragm.wall_start_values(1, 1e5), {"m": 2000.0, "k": 7e5, "zeta": 0.05}
+    mono = monolithic.run_monolithic(*fmus, t_in, ag_in, 10.0, wall, dia, rtol=1e-8, output_interval=1e-3)
+    cosim = wall_diaphragm.run_fmpy(*fmus, t_in, ag_in, 10.0, 62.5e-6, wall, dia, rtol=1e-8)
     for col in ("wall_s1", "wall_s2", "dia_u", "wall_F_top"):
         assert np.abs(mono[col]).max() == pytest.approx(np.abs(cosim[col]).max(), rel=0.005), col
     assert mono["collapsed_at"] is None and mono["wall_dissipated"][-1] > 0  # it rocked and impacted
@@ -144,10 +144,10 @@ def test_monolithic_collapse_ends_the_run_like_the_co_simulation(fmus):
     2 % of the time the fmpy master at a small step sees the wall's fmi2Discard."""
     sig = el_centro(0.35 / 0.312987481555883)  # the stiff case at 0.35 g collapses
     t_in, ag_in = np.asarray(sig.t), np.asarray(sig.a)
-    wall = couple.wall_start_values(1, 1e5, overrides=STIFF_WALL)
+    wall = wall_diaphragm.wall_start_values(1, 1e5, overrides=STIFF_WALL)
     dia = {"m": 400.0, "k": 30e3, "zeta": 0.05}
-    mono = couple_monolithic.run_monolithic(*fmus, t_in, ag_in, 10.0, wall, dia, rtol=1e-8)
-    cosim = couple.run_fmpy(*fmus, t_in, ag_in, 10.0, 50e-6, wall, dia, rtol=1e-8)
+    mono = monolithic.run_monolithic(*fmus, t_in, ag_in, 10.0, wall, dia, rtol=1e-8)
+    cosim = wall_diaphragm.run_fmpy(*fmus, t_in, ag_in, 10.0, 50e-6, wall, dia, rtol=1e-8)
     assert cosim["collapsed_at"] is not None
     assert mono["collapsed_at"] == pytest.approx(cosim["collapsed_at"], rel=0.02)
 
@@ -163,15 +163,15 @@ def test_monolithic_collapse_ends_the_run_like_the_co_simulation(fmus):
     (["--set=b=-0.2"], "b = -0.2 m: must be in"),
 ])
 def test_bad_safety_options_are_refused(tmp_path, capsys, args, message):
-    assert couple.main(["--t-end=0.5", f"--out={tmp_path / 'c.csv'}"] + args) == 2
+    assert couple_command.main(["--t-end=0.5", f"--out={tmp_path / 'c.csv'}"] + args) == 2
     assert message in capsys.readouterr().err
 
 
 def test_set_reads_units_as_every_other_command():
     """`couple --set` took bare numbers only (W=14.08kN/m was refused), unlike --set elsewhere."""
-    assert couple.parse_settings(["W=14.08kN/m", "b = 230mm", "psi=0.2"]) == pytest.approx(
+    assert wall_diaphragm.parse_settings(["W=14.08kN/m", "b = 230mm", "psi=0.2"]) == pytest.approx(
         {"W": 14080.0, "b": 0.23, "psi": 0.2})
-    assert couple.parse_settings(["W=14080"]) == {"W": 14080.0}
+    assert wall_diaphragm.parse_settings(["W=14080"]) == {"W": 14080.0}
 
 
 def test_energy_check_share():

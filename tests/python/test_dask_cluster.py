@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rockingwall.sweep import records
+from rockingwall.sweep import suites
 
 DASK = pathlib.Path(sys.executable).with_name("dask")
 CONFIG = """
@@ -76,7 +76,7 @@ def _suite(folder):
     folder.mkdir()
     for name, amp, period in [("p1", 0.25, 0.6), ("p2", 0.2, 0.9)]:
         t = np.arange(0.0, 3.0, 0.01)
-        records.write_at2(folder / f"{name}.AT2", np.where(t < 2.0, amp * np.sin(2 * np.pi * t / period), 0.0),
+        suites.write_at2(folder / f"{name}.AT2", np.where(t < 2.0, amp * np.sin(2 * np.pi * t / period), 0.0),
                           0.01, name)
     return folder
 

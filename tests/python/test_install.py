@@ -30,7 +30,7 @@ def fresh_env(tmp_path_factory):
 
 def test_pip_install_gives_a_working_command(fresh_env):
     root, python, env = fresh_env
-    where = subprocess.run([str(python), "-c", "from rockingwall import _paths; print(_paths.build_dir())"],
+    where = subprocess.run([str(python), "-c", "from rockingwall import paths; print(paths.build_dir())"],
                            capture_output=True, text=True, env=env, cwd=root, check=True).stdout.strip()
     assert "site-packages" in where and where.endswith("_bin")
     for part in ("RockingWall.fmu", "Diaphragm.fmu", "fmi2sim", "librwengine.so"):

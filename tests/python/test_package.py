@@ -11,7 +11,7 @@ import pytest
 
 import rockingwall as rw
 from rockingwall import fmi2sim
-from rockingwall.sweep import records as suite_records
+from rockingwall.sweep import suites as suite_records
 
 # An engineer's top-storey wall: b = 0.23 m, h = 3.2 m, W = 14.08 kN/m, psi = 0.2, K_d = 30 kN/m per m
 ENGINEER = dict(b=0.23, h=3.2, W=14080.0, psi=0.2, Kd=30e3)

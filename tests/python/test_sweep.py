@@ -8,19 +8,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from rockingwall.sweep import command as sweep
-from rockingwall.sweep import fragility, grid, records
+from rockingwall.commands import sweep
+from rockingwall.sweep import fragility, grid, suites
 from rockingwall.sweep.execute import execute
+from sweep_harness import pulse_record
 
 WALL_1 = dict(h=2.5, b=0.15, W=6622.0, psi=0.0)  # the paper's wall 1, written out independently
-
-
-def pulse_record(path, amp_g, period, n_cycles=3, dt=0.01, tail=1.0):
-    """A short sine burst in g as an AT2 file: rocks the wall in a fraction of a second of CPU."""
-    t = np.arange(0.0, n_cycles * period + tail, dt)
-    acc = np.where(t < n_cycles * period, amp_g * np.sin(2 * np.pi * t / period), 0.0)
-    records.write_at2(path, acc, dt, f"test pulse {amp_g} g, {period} s")
-    return acc
 
 
 @pytest.fixture()
@@ -34,7 +27,7 @@ def suite_dir(tmp_path):
 
 def small_grid(suite, **over):
     cfg = grid.merge({}, dict(dict(suite=str(suite), walls=[1], kd_kN=[5.0, 500.0], pga_g=[0.25, 0.5], tail=1.0), **over))
-    return cfg, grid.expand(cfg, records.at2_folder(suite))
+    return cfg, grid.expand(cfg, suites.at2_folder(suite))
 
 
 def at2_values(path):
@@ -149,13 +142,13 @@ def test_dry_run_prints_the_plan_and_runs_nothing(suite_dir, tmp_path, capsys):
 
 
 def test_fema_farfield_conversion(tmp_path):
-    suite = records.fema_farfield(tmp_path / "fema")
+    suite = suites.fema_farfield(tmp_path / "fema")
     assert len(suite) == 44 and len({r.name for r in suite}) == 44
     index = pd.read_csv(tmp_path / "fema" / "index.csv")
     # the larger component's PGA is the set's tabulated PGAmax (given to 2 decimals)
     per_record = index.groupby(index.name.str[:4]).agg(pga=("pga_g", "max"), table=("record_pga_max_g", "first"))
     np.testing.assert_allclose(per_record.pga, per_record.table, atol=0.0051)
-    first = records.read_at2(suite[0].path)  # the AT2 written reads back to the same record
+    first = suites.read_at2(suite[0].path)  # the AT2 written reads back to the same record
     assert (first.pga_g, first.duration) == pytest.approx((suite[0].pga_g, suite[0].duration))
 
 

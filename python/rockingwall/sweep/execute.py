@@ -13,13 +13,14 @@ import time
 import cloudpickle
 from tqdm import tqdm
 
-from . import exact_runner, provenance, runner
+from . import engine_task, fmi2sim_task, provenance, rows
 from .store import ResultsFile
 
-# Workers get the fmi2sim run function by value; they import the installed package, which the exact
-# engine needs anyway (its records travel with the tasks; fmi2sim runs need fmi2sim, the FMU and the
-# records at the same paths on every worker).
-cloudpickle.register_pickle_by_value(runner)
+# Workers get the fmi2sim run function and the rows it makes by value; they import the installed
+# package, which the exact engine needs anyway (its records travel with the tasks; fmi2sim runs
+# need fmi2sim, the FMU and the records at the same paths on every worker).
+cloudpickle.register_pickle_by_value(fmi2sim_task)
+cloudpickle.register_pickle_by_value(rows)
 
 
 @dataclasses.dataclass
@@ -113,16 +114,16 @@ def _signals_unwind():
 def _local_stream(todo, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
     for s in todo:
         if recs is None:
-            yield [runner.run(s, fmi2sim, fmu, rtol, tmp_root, timeout)]
+            yield [fmi2sim_task.run(s, fmi2sim, fmu, rtol, tmp_root, timeout)]
         else:
-            yield exact_runner.run_batch([s], recs)
+            yield engine_task.run_batch([s], recs)
 
 
 def _submit(client, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
     if recs is None:
-        return client.submit(runner.run_batch, batch, fmi2sim, fmu, rtol, tmp_root, timeout, pure=False)
+        return client.submit(fmi2sim_task.run_batch, batch, fmi2sim, fmu, rtol, tmp_root, timeout, pure=False)
     used = {s["record_sha256"]: recs[s["record_sha256"]] for s in batch if s["record_sha256"] in recs}
-    return client.submit(exact_runner.run_batch, batch, used, pure=False)
+    return client.submit(engine_task.run_batch, batch, used, pure=False)
 
 
 def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs):
@@ -135,7 +136,7 @@ def _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout, rec
         try:
             yield f.result()
         except Exception as exc:  # KilledWorker, a worker lost with its task, ...
-            yield [runner.killed_row(s, f"Dask task did not return: {type(exc).__name__}: {exc}") for s in futures[f]]
+            yield [rows.killed_row(s, f"Dask task did not return: {type(exc).__name__}: {exc}") for s in futures[f]]
 
 
 @contextlib.contextmanager
@@ -165,7 +166,7 @@ def stop_orphans(tmp_root):
     worker killed in the middle of a run leaves its fmi2sim behind). Only pids recorded in this
     sweep's own folder, and only while their command line still names that folder (a pid can be
     reused by an unrelated process)."""
-    for pid_file in pathlib.Path(tmp_root).glob(f"*/{runner.PID_FILE}"):
+    for pid_file in pathlib.Path(tmp_root).glob(f"*/{fmi2sim_task.PID_FILE}"):
         try:
             pid = int(pid_file.read_text())
             cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes()
@@ -194,12 +195,12 @@ def execute(specs, results_path, fmi2sim=None, fmu=None, rtol=None, scheduler=No
     check_options(workers if scheduler is None else 1, batch, timeout)
     planned = keyed(specs, fmi2sim, fmu, rtol, engine)
     with _signals_unwind(), ResultsFile(results_path) as store:
-        resume = store.resume({d["run_id"]: {c: d.get(c, "") for c in runner.PROVENANCE} for d in planned})
+        resume = store.resume({d["run_id"]: {c: d.get(c, "") for c in rows.PROVENANCE} for d in planned})
         todo = [d for d in planned if d["run_id"] not in resume.done]
         counts = dict(errors=0, unfinished=0)
         startup = seconds = 0.0
         if todo:
-            recs = exact_runner.load_records(todo) if engine == "exact" else None
+            recs = engine_task.load_records(todo) if engine == "exact" else None
             startup, seconds = _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
                                         progress, timeout, recs)
     return Outcome(len(specs), len(specs) - len(todo), len(todo), counts["errors"], counts["unfinished"],
@@ -220,12 +221,12 @@ def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
                 client = stack.enter_context(_client(scheduler, workers, tmp_root))
                 startup, t0 = time.perf_counter() - t_start, time.perf_counter()
                 stream = _dask_stream(client, todo, batch, fmi2sim, fmu, rtol, tmp_root, timeout, recs)
-            for rows in stream:
-                for row in rows:
+            for batch_rows in stream:
+                for row in batch_rows:
                     store.append(row)
-                    counts["errors"] += row["status"] == runner.ERROR
-                    counts["unfinished"] += row["status"] in runner.RETRIED
-                bar.update(len(rows))
+                    counts["errors"] += row["status"] == rows.ERROR
+                    counts["unfinished"] += row["status"] in rows.RETRIED
+                bar.update(len(batch_rows))
             return startup, time.perf_counter() - t0
     finally:
         bar.close()

@@ -8,6 +8,7 @@ import tomllib
 
 
 from ..names import HINGE_LAWS, PAPER_WALLS, SUPPORTS as MODELS, paper_wall
+from . import suites
 
 WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units, or strings with units)
 
@@ -171,3 +172,24 @@ def expand(grid, suite):
     if len(set(ids)) != len(ids):
         raise ValueError("the grid has duplicate runs (a value given twice, or two records with one name)")
     return specs
+
+
+def plan(config_path, flags):
+    """(merged grid, suite of records, RunSpecs) from a TOML file (or None) and the command's
+    flags ({key of DEFAULTS: value}; flags win)."""
+    cfg = merge(load_config(config_path), flags)
+    suite = suites.load(cfg["suite"], cfg["records"])
+    return cfg, suite, expand(cfg, suite)
+
+
+def describe(cfg, suite, specs):
+    """The plan in a few lines: the grid, the records and the number of runs."""
+    kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
+    levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
+    bad = [r.name for r in suite if r.error]
+    lines = [f"walls {cfg['walls']}; models {cfg['models']}; hinge laws {cfg['hinge_laws']}",
+             f"K_d [kN/m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
+             f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
+             levels,
+             f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]
+    return "\n".join(lines)

@@ -52,8 +52,8 @@ def engine(fmi2sim, fmu, rtol):
 def exact_engine():
     """The columns of a sweep on the exact engine: the engine library by content (in the
     fmu_sha256 column, which names the compiled model a row comes from)."""
-    from rockingwall import _paths
-    return dict(engine="exact", fmi2sim_sha256="", fmu_guid="", fmu_sha256=file_sha256(_paths.engine_library()),
+    from rockingwall import paths
+    return dict(engine="exact", fmi2sim_sha256="", fmu_guid="", fmu_sha256=file_sha256(paths.engine_library()),
                 rtol="exact")
 
 

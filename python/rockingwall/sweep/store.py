@@ -20,7 +20,7 @@ from collections import Counter
 
 from . import provenance
 from .lock import FileLock
-from .runner import COLUMNS, OK, RETRIED, STATUSES
+from .rows import COLUMNS, OK, RETRIED, STATUSES
 
 LEGACY_COLUMNS = COLUMNS[:COLUMNS.index("key")]  # files written before the key was recorded
 _FLOATS = ["kd_kN", "record_pga_g", "scale", "pga_g", "end_time", "cpu_s", "elapsed_s"]

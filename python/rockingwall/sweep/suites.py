@@ -138,6 +138,8 @@ def at2_folder(folder):
 def write_at2(path, acc_g, dt, title):
     """An NGA-style AT2 file: 4 header lines, then the acceleration in g, 5 values per line."""
     acc_g = np.asarray(acc_g, dtype=float)
+    # the module's old name, kept: the line is part of each file's content hash (provenance), and
+    # a new name would make every result computed from a converted record stale
     lines = [title, "converted by rockingwall.sweep.records", "ACCELERATION TIME SERIES IN UNITS OF G",
              f"NPTS= {len(acc_g)}, DT= {dt:.8g} SEC"]
     for i in range(0, len(acc_g), 5):
@@ -155,6 +157,25 @@ def fema_hdf5_path(record_set=FEMA_SET):
     if not path.exists():
         raise FileNotFoundError(path)
     return path
+
+
+def fema_cache():
+    """The folder of the converted FEMA P695 far-field set: $RW_RECORDS_CACHE/fema_farfield, by
+    default ~/.cache/rockingwall/fema_farfield."""
+    root = os.environ.get("RW_RECORDS_CACHE", pathlib.Path.home() / ".cache" / "rockingwall")
+    return pathlib.Path(root) / "fema_farfield"
+
+
+def load(suite, names=None):
+    """The records of a suite, 'fema' or a folder of .AT2 files; only those named in `names` if
+    given (ValueError naming the ones the suite lacks)."""
+    recs = fema_farfield(fema_cache()) if suite == "fema" else at2_folder(suite)
+    if names:
+        missing = set(names) - {r.name for r in recs}
+        if missing:
+            raise ValueError(f"records not in the suite '{suite}': {sorted(missing)}")
+        recs = [r for r in recs if r.name in set(names)]
+    return recs
 
 
 def fema_farfield(cache_dir):

@@ -1,21 +1,6 @@
-#!/usr/bin/env python3
-"""Reproduce the paper's Tables 5.1, 5.2, 5.4 and Figures 5.2-5.4 with the reference solver (rwref).
-
-    rockingwall paper --out results/ [--records DIR] [--quick] [--calibrate]
-
-Writes results/table_5_1.csv, table_5_2.csv, table_5_4.csv (columns
-table,wall,input,model,Kd_kN_per_m,quantity,ours,paper; paper's units m, kN/m) and fig_5_2.png,
-fig_5_3.png, fig_5_4.png, and prints the comparisons.  The 2DOF runs use both 2DOF semi-rigid
-laws that come from a potential, dohertyHinge (the default) and semiRigidHinge (hingeSat = 2),
-one row each ("model" column "2DOF <law>"); the 1DOF is Doherty's trilinear simply supported wall.
-Table 5.4: El Centro 1940 from quakeio; the other records are read as PEER NGA .AT2 files from
---records DIR (file names starting with the paper's id: tolm*, stur*, loma*, sylm*, kjmh*); a missing
-record gives rows with an empty "ours" and is reported as missing.
---calibrate: scan hingeSat on the cell (wall 1, Kd = 1000 kN/m, s1) and report every other cell of
-Table 5.2 at the value that matches it (results/calibration.csv).
---quick: Table 5.2 wall 1 and El Centro only, no figures.
-"""
-import argparse
+"""The paper's Tables 5.1, 5.2, 5.4 and Figures 5.2-5.4 reproduced with the reference solver (rwref),
+and the calibration scan of hingeSat (the logic of `rockingwall paper`, whose help says what is
+written)."""
 import csv
 import glob
 import os
@@ -275,26 +260,22 @@ def calibrate(out, bar_factory):
                 w.writerow([r[0], r[1], r[2], fmt(r[3]), fmt(r[4]), fmt(r[5])])
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(prog="rockingwall paper", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--out", default="results", help="output directory")
-    ap.add_argument("--records", help="directory of PEER .AT2 records for Table 5.4")
-    ap.add_argument("--quick", action="store_true")
-    ap.add_argument("--calibrate", action="store_true")
-    a = ap.parse_args(argv)
+def reproduce(out, records_dir=None, quick=False, calibrate_hinge_sat=False):
+    """Tables 5.1, 5.2, 5.4 (CSV and printed comparisons), the figures unless quick, and the
+    calibration scan with calibrate_hinge_sat, into the folder `out` (created if missing)."""
     from tqdm import tqdm
-    out = pathlib.Path(a.out)
+    out = pathlib.Path(out)
     out.mkdir(parents=True, exist_ok=True)
     bar_factory = lambda n: tqdm(total=n, desc="simulations", unit="run", file=sys.stderr)
 
-    walls = (1,) if a.quick else (1, 2, 3)
-    ids = ("elce",) if a.quick else tuple(PAPER_5_4)
+    walls = (1,) if quick else (1, 2, 3)
+    ids = ("elce",) if quick else tuple(PAPER_5_4)
     rows51 = table_5_1_rows()
     keep52, keep54 = {}, {}
     n2 = len(LAWS_2DOF)
     with bar_factory((1 + 4 * n2) * len(walls) + (1 + 3 * n2) * len(ids)) as bar:
         rows52 = run_5_2(walls, bar, keep=keep52)
-        rows54, missing = run_5_4(ids, a.records, bar, keep=keep54)
+        rows54, missing = run_5_4(ids, records_dir, bar, keep=keep54)
     write_csv(out / "table_5_1.csv", rows51)
     write_csv(out / "table_5_2.csv", rows52)
     write_csv(out / "table_5_4.csv", rows54)
@@ -303,13 +284,8 @@ def main(argv=None):
     print_table("Table 5.4 - recorded accelerograms, wall 1 (m)", rows54)
     if missing:
         print(f"\nmissing records (no .AT2 in --records): {', '.join(missing)}")
-    if not a.quick:
+    if not quick:
         figures(out, keep52, keep54)
         print(f"\nwrote {out}/table_5_1.csv, table_5_2.csv, table_5_4.csv, fig_5_2.png, fig_5_3.png, fig_5_4.png")
-    if a.calibrate:
+    if calibrate_hinge_sat:
         calibrate(out, bar_factory)
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,12 +1,11 @@
 """One run of a sweep on the exact engine, in the worker's own process (no subprocess): the
 record's samples travel with the task, so workers need the installed `rockingwall` package and
-nothing on a shared file system. Rows have the columns of runner.COLUMNS."""
-import math
+nothing on a shared file system. Rows have the columns of rockingwall.sweep.rows."""
 import time
 
 import numpy as np
 
-from .runner import ERROR, OK, _row
+from .rows import ERROR, OK, make_row, refusal
 
 
 def _params(spec):
@@ -17,18 +16,17 @@ def run(spec, record):
     """Simulate one RunSpec (a dict) on `record` = (t, ag [m/s^2] as given); always returns a row."""
     from rockingwall import engine  # imported on the worker: the installed package
     t0, c0 = time.perf_counter(), time.process_time()
-    if spec["error"]:
-        return _row(spec, ERROR, spec["error"])
-    if not (spec["scale"] > 0 and math.isfinite(spec["scale"])):
-        return _row(spec, ERROR, f"scale factor {spec['scale']} (record PGA {spec['record_pga_g']} g)")
+    refused = refusal(spec)
+    if refused:
+        return refused
     t, ag = record
     try:
         r = engine.run(t, np.asarray(ag) * float(spec["scale"]), t_end=float(spec["stop_time"]), **_params(spec))
     except (engine.EngineError, ValueError, KeyError) as exc:
-        return _row(spec, ERROR, str(exc))
+        return make_row(spec, ERROR, str(exc))
     params = _params(spec)
     peak_f_top = engine.peak_F_top(params, r.peak_s2) if "Kd" in params else 0.0  # u_top = 0 in a sweep
-    return _row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=peak_f_top, collapsed=bool(r.collapsed), impacts=int(r.impacts),
+    return make_row(spec, OK, peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=peak_f_top, collapsed=bool(r.collapsed), impacts=int(r.impacts),
                 end_time=r.t_reached, steps=r.steps, cpu_s=time.process_time() - c0,
                 elapsed_s=time.perf_counter() - t0)
 

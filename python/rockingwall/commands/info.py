@@ -1,29 +1,12 @@
 """rockingwall info: every parameter of the wall model with its unit, default and allowed range,
 read from the FMU's model description (generated from the one C parameter table)."""
-import zipfile
-import xml.etree.ElementTree as ET
-
-from . import _paths
+from ..fmu_parameters import parameters
 
 
 def parser(sub):
     p = sub.add_parser("info", help="list the parameters with units, defaults and ranges", description=__doc__)
     p.set_defaults(command=main)
     return p
-
-
-def parameters(fmu=None):
-    """[(name, unit, default, min, max, description)] of the FMU's parameters."""
-    with zipfile.ZipFile(fmu or _paths.wall_fmu()) as z:
-        root = ET.fromstring(z.read("modelDescription.xml"))
-    rows = []
-    for v in root.iter("ScalarVariable"):
-        if v.get("causality") != "parameter":
-            continue
-        kind = next(iter(v))
-        rows.append((v.get("name"), kind.get("unit", ""), kind.get("start"), kind.get("min"), kind.get("max"),
-                     v.get("description", "")))
-    return rows
 
 
 def main(args):

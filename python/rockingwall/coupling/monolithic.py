@@ -9,10 +9,11 @@ so the coupling adds no energy of its own (docs/coupling.md). The ground motion 
 linearly in the record (the Co-Simulation masters hold it over each macro step, which tends to the
 same as H -> 0). RockingWall's state events (hinges, impacts, collapse) stop CVODE at the root, go
 through the FMU's event iteration and restart CVODE; a collapse (the FMU's terminateSimulation)
-ends the run, as the wall's fmi2Discard does in couple.py.
+ends the run, as the wall's fmi2Discard does in the Co-Simulation masters.
 
-run_monolithic() returns couple.CoupledResult on the output grid (plus each event instant), with
-the same columns as the Co-Simulation masters, so couple.py's energy check and summary apply.
+run_monolithic() returns a CoupledResult (rockingwall.coupling.wall_diaphragm) on the output grid
+(plus each event instant), with the same columns as the Co-Simulation masters, so the same energy
+check and summary apply.
 """
 import ctypes
 import math
@@ -21,7 +22,8 @@ import tempfile
 
 import numpy as np
 
-from . import couple
+from .slaves import CouplingError, FmuLog, close_slaves, fmi_call, value_references
+from .wall_diaphragm import DIA_OUT, WALL_OUT, assemble, check_options, wall_start_values
 
 _DOUBLE = ctypes.sizeof(ctypes.c_double)
 
@@ -41,8 +43,8 @@ class _Model:
         md = read_model_description(str(path))
         self.fmu = FMU2Model(guid=md.guid, unzipDirectory=extract(str(path), os.path.join(unzip_root, name)),
                              modelIdentifier=md.modelExchange.modelIdentifier, instanceName=name)
-        self.vr, self.nx, self.nz = couple.vrs(md), md.numberOfContinuousStates, md.numberOfEventIndicators
-        # couple._fmi_call's names for the failure messages
+        self.vr, self.nx, self.nz = value_references(md), md.numberOfContinuousStates, md.numberOfEventIndicators
+        # what fmi_call's failure messages name
         self.fmu.vr, self.fmu.fmu_path, self.fmu.log = self.vr, str(path), log
         self.fmu.failed, self.fmu.instantiated = False, False
 
@@ -151,25 +153,25 @@ def _initialise(model, start, rtol):
 def _record(system, times, wall_rows, dia_rows, t):
     system.connect(t)
     times.append(t)
-    wall_rows.append(system.wall.fmu.getReal([system.wall.vr[x] for x in couple.WALL_OUT]))
-    dia_rows.append(system.dia.fmu.getReal([system.dia.vr[x] for x in couple.DIA_OUT]))
+    wall_rows.append(system.wall.fmu.getReal([system.wall.vr[x] for x in WALL_OUT]))
+    dia_rows.append(system.dia.fmu.getReal([system.dia.vr[x] for x in DIA_OUT]))
 
 
 def run_monolithic(wall_fmu, dia_fmu, t_in, ag_in, t_end, wall=None, dia=None, rtol=1e-6, output_interval=1e-3):
     """The coupled system under one CVODE (see the module's docstring); CouplingError with the
     FMU's message when an FMI call fails or CVODE gives up."""
-    couple.check_options(t_end, output_interval, rtol)
-    log, models = couple._FmuLog(), []
+    check_options(t_end, output_interval, rtol)
+    log, models = FmuLog(), []
     with tempfile.TemporaryDirectory(prefix="couple_me_") as unzip_root:
         try:
-            for path, name, start in [(wall_fmu, "wall", wall or couple.wall_start_values()),
+            for path, name, start in [(wall_fmu, "wall", wall or wall_start_values()),
                                       (dia_fmu, "diaphragm", (dia or {}, {}))]:
                 models.append(_Model(path, name, unzip_root, log))
-                couple._fmi_call(models[-1].fmu, "at initialisation", _initialise, models[-1], start, rtol)
+                fmi_call(models[-1].fmu, "at initialisation", _initialise, models[-1], start, rtol)
             return _integrate(CoupledSystem(*models, np.asarray(t_in, float), np.asarray(ag_in, float)),
                               t_end, rtol, output_interval)
         finally:
-            couple._close_slaves([m.fmu for m in models])
+            close_slaves([m.fmu for m in models])
 
 
 def _integrate(system, t_end, rtol, output_interval):
@@ -181,7 +183,7 @@ def _integrate(system, t_end, rtol, output_interval):
     for m in (system.wall, system.dia):
         stop, t_ev = _event_iteration(m)
         if stop:
-            raise couple.CouplingError(f"{m.fmu.instanceName}: terminated at initialisation")
+            raise CouplingError(f"{m.fmu.instanceName}: terminated at initialisation")
         next_time = min(next_time, t_ev)
         m.fmu.enterContinuousTimeMode()
     system.connect(0.0)
@@ -199,7 +201,7 @@ def _integrate(system, t_end, rtol, output_interval):
         try:
             state_event, _, t = solver.step(t, t_next)
         except RuntimeError as exc:
-            raise couple.CouplingError(f"monolithic: CVODE failed at t = {t:.6g} s: {exc}: "
+            raise CouplingError(f"monolithic: CVODE failed at t = {t:.6g} s: {exc}: "
                                        f"{system.wall.fmu.log.last('wall')}") from None
         system.set_time(t)
         system.set_x(solver.px, system.nx)  # the states CVODE reached (step() also sets them)
@@ -222,6 +224,6 @@ def _integrate(system, t_end, rtol, output_interval):
             if times[-1] != t:
                 _record(system, times, wall_rows, dia_rows, t)
             k += 1
-    r = couple._assemble(times, wall_rows, dia_rows)
+    r = assemble(times, wall_rows, dia_rows)
     r["collapsed_at"] = collapsed_at
     return r

@@ -1,17 +1,8 @@
 """An animated GIF of the two-body wall rocking under a record, restrained at the top by the
-diaphragm spring K_d, drawn from a run of the exact engine, with the ground acceleration below. The wall is
-drawn to scale but its rotations are exaggerated (--exaggerate, stated in the title): tens of
-millimetres on a 2.5 m wall are invisible otherwise.
-
-The bodies are placed from s1, s2 (q1 = 2 s1/h, q2 = 2 s2/h - q1): the lower body turns by q1 about
-the base corner it rocks on (side sign(q1)), the upper body by q2 about the mid-height corner on
-which the joint closes (side -sign(q2 - q1)), as in docs/model.md. The diaphragm is drawn fixed
-(u_top = 0, as in the run), the ground moves with the record.
-
-  rockingwall animate --wall paper1 --Kd 50kN/m/m --pga 0.2 RECORD.AT2 --out docs/img/rocking_wall.gif
+diaphragm spring K_d, drawn from a run of the exact engine, with the ground acceleration below
+(the logic of `rockingwall animate`, whose help says how the bodies are drawn).
 """
 import pathlib
-import sys
 
 import matplotlib
 matplotlib.use("Agg")
@@ -20,7 +11,6 @@ import numpy as np
 from matplotlib import animation
 from tqdm import tqdm
 
-from . import cli_common as cc
 from .api import simulate
 from .units import format_kd
 
@@ -53,25 +43,16 @@ def spring(x0, x1, y, coils=6, amp=0.04):
     return xs, ys
 
 
-def main(argv=None):
-    p = cc.Parser(prog="rockingwall animate", description=__doc__)
-    cc.add_wall_arguments(p)
-    cc.add_record_arguments(p)
-    p.add_argument("--t-end", type=float, default=20.0, help="seconds of the record shown")
-    p.add_argument("--speed", type=float, default=1.0, help="simulated seconds per second of GIF")
-    p.add_argument("--fps", type=int, default=12)
-    p.add_argument("--exaggerate", type=float, default=5.0, help="factor on the drawn rotations")
-    p.add_argument("--out", default="results/rocking_wall.gif")
-    args = p.parse_args(argv)
-
-    wall = cc.wall_from_args(args)
-    rec = cc.record_from_args(args.record, args)
+def animate(wall, rec, out, t_end=20.0, speed=1.0, fps=12, exaggerate=5.0):
+    """Write the GIF of `wall` under the record `rec` (its first t_end seconds) to `out` (its folder
+    must exist): `speed` simulated seconds per second of GIF, `fps` frames per second, rotations
+    drawn x`exaggerate`. Returns (frames, peak |s1|, peak |s2|) of the clip [m]."""
     b, h = wall.params["b"], wall.params["h"]
-    t_end = min(args.t_end, rec.duration)
-    run = simulate(wall, rec, stop_time=t_end, output_interval=args.speed / args.fps / 4).history
+    t_end = min(t_end, rec.duration)
+    run = simulate(wall, rec, stop_time=t_end, output_interval=speed / fps / 4).history
     t_acc, acc = rec.t, rec.ag / 9.81
 
-    frames = np.arange(0.0, t_end, args.speed / args.fps)
+    frames = np.arange(0.0, t_end, speed / fps)
     s1 = np.interp(frames, run.time, run.s1)
     s2 = np.interp(frames, run.time, run.s2)
     q1 = 2 * s1 / h
@@ -91,7 +72,7 @@ def main(argv=None):
     (spring_line,) = ax.plot([], [], color="tab:blue", lw=1.2)
     label = ax.text(-0.58, -0.08, "", fontsize=7, va="top")
     ax.set_title(f"b = {b:g} m, h = {h:g} m, K_d = {format_kd(wall.params['Kd'])}, {rec.name}\n"
-                 f"rotations drawn x{args.exaggerate:g}", fontsize=7)
+                 f"rotations drawn x{exaggerate:g}", fontsize=7)
     ax_ag.plot(t_acc[t_acc <= t_end], acc[t_acc <= t_end], color="0.4", lw=0.5)
     (marker,) = ax_ag.plot([], [], "o", color="tab:red", ms=3)
     ax_ag.set_xlim(0, t_end)
@@ -101,7 +82,7 @@ def main(argv=None):
     fig.tight_layout()
 
     def draw(i):
-        lower, upper = wall_outline(args.exaggerate * q1[i], args.exaggerate * q2[i], b, h)
+        lower, upper = wall_outline(exaggerate * q1[i], exaggerate * q2[i], b, h)
         lower_patch.set_xy(lower)
         upper_patch.set_xy(upper)
         top = upper[2:].mean(axis=0)
@@ -111,14 +92,7 @@ def main(argv=None):
         return lower_patch, upper_patch, spring_line, label, marker
 
     anim = animation.FuncAnimation(fig, draw, frames=len(frames), blit=True)
-    out = pathlib.Path(args.out)
-    cc.output_dir(out.parent)
+    out = pathlib.Path(out)
     with tqdm(total=len(frames), desc="frames") as bar:
-        anim.save(out, writer=animation.PillowWriter(fps=args.fps), progress_callback=lambda i, n: bar.update(1))
-    print(f"wrote {out} ({out.stat().st_size / 1e6:.2f} MB, {len(frames)} frames); peaks in the clip: "
-          f"s1 {1000 * np.abs(s1).max():.1f} mm, s2 {1000 * np.abs(s2).max():.1f} mm")
-    return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())
+        anim.save(out, writer=animation.PillowWriter(fps=fps), progress_callback=lambda i, n: bar.update(1))
+    return len(frames), np.abs(s1).max(), np.abs(s2).max()

@@ -13,21 +13,21 @@ import pathlib
 
 import numpy as np
 
-from . import building_scene as bs
-from . import engine, intensity, records
-from .names import HINGE_LAWS, SUPPORTS, paper_wall
+from .. import engine, intensity, records
+from ..names import HINGE_LAWS, SUPPORTS, paper_wall
+from . import scene as bs
 
 PGA_G = 0.15
 FEMA_NAMES = ("ff01a", "ff02a")
 TIE_KD = 1e7          # N/m per m: the wall-to-diaphragm tie, stiff next to the diaphragm
 H = 5e-4              # s, macro step
 PERIODS = np.geomspace(0.05, 2.0, 40)
-PNG = pathlib.Path(__file__).resolve().parents[2] / "docs" / "img" / "building_coupling.png"
+PNG = pathlib.Path(__file__).resolve().parents[3] / "docs" / "img" / "building_coupling.png"
 
 
 def example_records(cache_dir):
-    from .sweep import records as suite
-    fema = {r.name: r for r in suite.fema_farfield(cache_dir)}
+    from ..sweep import suites
+    fema = {r.name: r for r in suites.fema_farfield(cache_dir)}
     out = [records.el_centro()] + [records.read_at2(fema[n].path) for n in FEMA_NAMES]
     return [r.to_pga(PGA_G) for r in out]
 

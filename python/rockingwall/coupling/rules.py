@@ -1,10 +1,10 @@
-"""Safety rules of the wall-diaphragm coupling (rockingwall.couple): the largest macro step the
+"""Safety rules of the wall-diaphragm coupling (`rockingwall couple`): the largest macro step the
 tie K_d allows, and the check of the energy bookkeeping. Documented in docs/coupling.md.
 
 Macro-step rule
 ---------------
 The tie K_d joins the top of the wall (effective mass m_w at the top, from the wall's Eq. 3.2 mass
-matrix) to the diaphragm (mass m_d, stiffness k, damping c). couple.py's Jacobi scheme holds each
+matrix) to the diaphragm (mass m_d, stiffness k, damping c). The Jacobi scheme (coupling.jacobi) holds each
 slave's input over the step: the wall integrates its own end of the spring exactly with u_top held,
 the diaphragm receives the force F_top = K_d (s2(t+H) - u(t)) held over the next step. For the linear
 tie (wall and diaphragm as the two masses) the exact step map of that scheme, z_{n+1} = A(H) z_n with
@@ -58,7 +58,7 @@ def wall_top_mass(W, psi, h, g=9.81):
 
 
 def jacobi_step_map(m_w, m_d, Kd, k, c, H):
-    """The 5 x 5 map A(H) of one macro step of couple.py's scheme on the linear tie, state
+    """The 5 x 5 map A(H) of one macro step of the Jacobi scheme on the linear tie, state
     (s2, s2', u, u', F): the wall's top (mass m_w) on the spring Kd to u held at u_n, the diaphragm
     (m_d, k, c) under the force F held, then F_{n+1} = Kd (s2_{n+1} - u_n)."""
     from scipy.linalg import expm
@@ -113,6 +113,12 @@ def max_macro_step(m_w, m_d, Kd, k, zeta_num_max=ZETA_NUM_MAX):
                 lo, hi = (mid, hi) if ok(mid) else (lo, mid)
             return lo
     return H_SEARCH[1]
+
+
+def work(t, power):
+    """The work of a power history up to each time of t (trapezoidal rule, 0 at t[0]): the energy
+    terms of the coupled scenes' bookkeeping."""
+    return np.concatenate([[0.0], np.cumsum(0.5 * (power[1:] + power[:-1]) * np.diff(t))])
 
 
 def energy_check(residual, ground_work, share_max=ENERGY_SHARE_MAX):

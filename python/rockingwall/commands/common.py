@@ -6,8 +6,8 @@ import sys
 import tempfile
 import warnings
 
-from . import records
-from .wall import Wall
+from .. import records
+from ..wall import Wall
 
 WALL_FLAGS = {  # flag -> parameter; values may carry units ('30kN/m/m', '230mm')
     "--b": "b", "--h": "h", "--W": "W", "--psi": "psi", "--Kd": "Kd", "--er": "er",

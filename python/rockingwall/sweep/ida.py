@@ -1,17 +1,8 @@
-"""Incremental dynamic analysis, collapse fragility and the K_d x intensity map, from the results
-CSV of `rockingwall sweep` (one wall, model and hinge law at a time).
-
-Writes three PNGs to --out and prints the fragility fits:
-  ida_curves.png   peak s1 and s2 against PGA for every record, one column per K_d
-  fragility.png    collapse fraction against PGA per K_d, with its lognormal MLE fit
-  kd_map.png       median peak s1 and s2 over the records against K_d and PGA
-A run that collapsed has no meaningful peak (the run stops at the instability point): the IDA
-curves end there with a cross, and the medians count it as larger than any peak.
-
-  rockingwall ida results/sweep_fema.csv --out results/
-"""
-import argparse
-import pathlib
+"""Incremental dynamic analysis, collapse fragility and the K_d x intensity map from the results
+file of a sweep (one wall, model and hinge law at a time): the runs read back, and the three
+plots of `rockingwall ida`. A run that collapsed has no meaningful peak (the run stops at the
+instability point): the IDA curves end there with a cross, and the medians count it as larger
+than any peak."""
 import sys
 
 import matplotlib
@@ -19,8 +10,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .sweep import fragility, store
-from .sweep.runner import ERROR, OK, RETRIED
+from . import fragility, store
+from .rows import ERROR, OK, RETRIED
 
 def report_not_ok(d, path):
     """Killed or timed-out runs are the ones most likely near collapse: leaving them out biases the
@@ -139,42 +130,3 @@ def kd_map(d, path):
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
-
-
-def main(argv=None):
-    p = argparse.ArgumentParser(prog="rockingwall ida", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("results", help="results CSV of `rockingwall sweep`")
-    p.add_argument("--out", default="results")
-    p.add_argument("--wall", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name "
-                                  "(default: the file's only wall)")
-    p.add_argument("--model", default="flexibleTop")
-    p.add_argument("--hinge-law", default="dohertyHinge")
-    p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
-    args = p.parse_args(argv)
-    try:
-        d = load(args.results, args.wall, args.model, args.hinge_law)
-    except (OSError, ValueError) as exc:
-        print(f"rockingwall ida: error: {exc}", file=sys.stderr)
-        return 2
-    out = pathlib.Path(args.out)
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        print(f"rockingwall ida: error: --out {out}: {exc.strerror}", file=sys.stderr)
-        return 2
-    sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
-    ida_curves(sub, out / "ida_curves.png")
-    fits = fragility_plot(sub, out / "fragility.png")
-    kd_map(d, out / "kd_map.png")
-    print(f"{len(d)} runs, {d.record.nunique()} records; collapse fragility against PGA (lognormal MLE):")
-    print("K_d [kN/m]   median [g]   beta   runs")
-    for kd, f in fits.items():
-        print(f"{kd:10g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}")
-    print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")
-    # the plots are made from every good row, but a file with damaged lines or unfinished runs is
-    # not a complete result: say so in the exit status too
-    return 1 if d.attrs.get("damaged_lines") or d.attrs.get("unfinished") else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -28,14 +28,10 @@ import subprocess
 import sys
 import time
 
-from .. import _paths
-from . import grid, records, store
-from .execute import check_options, describe as describe_outcome, execute
-from .execute import Terminated
-from .lock import Busy
-
-FEMA_CACHE = pathlib.Path(os.environ.get("RW_RECORDS_CACHE", pathlib.Path.home() / ".cache" / "rockingwall")) / "fema_farfield"
-
+from .. import paths
+from ..sweep import grid, store
+from ..sweep.execute import Terminated, check_options, describe as describe_outcome, execute
+from ..sweep.lock import Busy
 
 def kd_in_kN(text):
     """K_d in kN/m per m from '30' (taken as kN/m per m) or a value with its unit ('3e4 N/m/m')."""
@@ -84,42 +80,12 @@ def parse_args(argv=None):
     return p.parse_args(argv)
 
 
-def load_suite(cfg):
-    suite = cfg["suite"]
-    recs = records.fema_farfield(FEMA_CACHE) if suite == "fema" else records.at2_folder(suite)
-    if cfg["records"]:
-        missing = set(cfg["records"]) - {r.name for r in recs}
-        if missing:
-            raise ValueError(f"records not in the suite '{suite}': {sorted(missing)}")
-        recs = [r for r in recs if r.name in set(cfg["records"])]
-    return recs
-
-
-def plan(args):
-    flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
-    cfg = grid.merge(grid.load_config(args.config), flags)
-    suite = load_suite(cfg)
-    return cfg, suite, grid.expand(cfg, suite)
-
-
-def describe(cfg, suite, specs):
-    kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
-    levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
-    bad = [r.name for r in suite if r.error]
-    lines = [f"walls {cfg['walls']}; models {cfg['models']}; hinge laws {cfg['hinge_laws']}",
-             f"K_d [kN/m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
-             f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
-             levels,
-             f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]
-    return "\n".join(lines)
-
-
 def check_artefacts(args):
     if args.engine == "exact":
-        _paths.engine_library()
+        paths.engine_library()
         return
-    args.fmi2sim = args.fmi2sim or str(_paths.fmi2sim())
-    args.fmu = args.fmu or str(_paths.wall_fmu())
+    args.fmi2sim = args.fmi2sim or str(paths.fmi2sim())
+    args.fmu = args.fmu or str(paths.wall_fmu())
     for path in (args.fmi2sim, args.fmu):
         if not pathlib.Path(path).is_file():
             raise FileNotFoundError(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
@@ -171,8 +137,9 @@ def main(argv=None):
 
 def run(args):
     check_command(args)
-    cfg, suite, specs = plan(args)
-    print(describe(cfg, suite, specs))
+    flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
+    cfg, suite, specs = grid.plan(args.config, flags)
+    print(grid.describe(cfg, suite, specs))
     if args.dry_run:
         return 0
     check_artefacts(args)
@@ -199,6 +166,3 @@ def run(args):
         print(f"speed-up {first} -> {n} workers: {times[first] / times[n]:.2f}x")
     return 0
 
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,31 +1,16 @@
-"""One run of a sweep: fmi2sim with --summary (peaks without the time history), turned into one
-row of the results file. Runs on a Dask worker, so it takes and returns plain dicts (a RunSpec as a dict:
-the sweep ships this module to its workers by value; they import the installed package for the
-fmi2sim command line); a failed run becomes a row instead of an exception, so one bad record
-cannot stop a sweep.
-
-Statuses: 'ok'; 'error' when fmi2sim (or the record) refused the run, which the same inputs would
-do again; 'killed' (a signal: the OOM killer, a dead Dask worker) and 'timeout', which say nothing
-about the inputs and are retried when the sweep is resumed."""
+"""One run of a sweep through fmi2sim with --summary (peaks without the time history), turned into
+one row of the results file (rockingwall.sweep.rows). Runs on a Dask worker, so it takes and
+returns plain dicts (a RunSpec as a dict: the sweep ships this module to its workers by value;
+they import the installed package for the fmi2sim command line); a failed run becomes a row
+instead of an exception, so one bad record cannot stop a sweep."""
 import json
-import math
 import os
 import shutil
 import subprocess
 import tempfile
 import time
 
-# The columns of the results file, in order. Peaks are max |value| over fmi2sim's output rows and
-# solver steps. The last columns say what the row was computed from (rockingwall.sweep.provenance).
-COLUMNS = ["run_id", "wall", "model", "hinge_law", "kd_kN", "record", "record_pga_g", "scale", "pga_g",
-           "status", "message", "peak_s1", "peak_s2", "peak_F_top", "collapsed", "impacts", "end_time",
-           "steps", "cpu_s", "elapsed_s",
-           "key", "record_sha256", "engine", "fmi2sim_sha256", "fmu_guid", "fmu_sha256", "rtol"]
-PROVENANCE = COLUMNS[COLUMNS.index("key"):]
-
-OK, ERROR, KILLED, TIMEOUT = "ok", "error", "killed", "timeout"
-STATUSES = (OK, ERROR, KILLED, TIMEOUT)
-RETRIED = (KILLED, TIMEOUT)   # not finished: run again on resume
+from .rows import ERROR, KILLED, OK, TIMEOUT, make_row, refusal
 
 TIMEOUT_S = 600.0
 
@@ -36,21 +21,6 @@ def command(spec, fmi2sim, fmu, rtol, summary_path):
     return fmi2sim_command(fmu, ag=spec["record_path"], ag_scale=float(spec["scale"]),
                            stop_time=float(spec["stop_time"]), rtol=float(rtol), summary=summary_path,
                            sets=spec["sets"], executable=fmi2sim)
-
-
-def _row(spec, status, message="", **values):
-    row = {c: "" for c in COLUMNS}
-    row.update(run_id=spec["run_id"], wall=spec["wall"], model=spec["model"], hinge_law=spec["hinge_law"],
-               kd_kN=spec["kd_kN"], record=spec["record"], record_pga_g=spec["record_pga_g"], scale=spec["scale"],
-               pga_g=spec["pga_g"], status=status, message=" ".join(message.split()))  # one line in the CSV
-    row.update({c: spec.get(c, "") for c in PROVENANCE})
-    row.update(values)
-    return row
-
-
-def killed_row(spec, message):
-    """The row of a run that never returned (its Dask worker died)."""
-    return _row(spec, KILLED, message)
 
 
 def _error_line(stderr):
@@ -94,15 +64,15 @@ def _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0):
     env = dict(os.environ, TMPDIR=tmp)
     proc = _run_recorded(command(spec, fmi2sim, fmu, rtol, summary), env, tmp, timeout)
     if proc.returncode < 0:  # a signal: the OOM killer, a timeout of the caller, ...
-        return _row(spec, KILLED, f"fmi2sim killed by signal {-proc.returncode}: {_error_line(proc.stderr)}",
+        return make_row(spec, KILLED, f"fmi2sim killed by signal {-proc.returncode}: {_error_line(proc.stderr)}",
                     elapsed_s=time.perf_counter() - t0)
     if proc.returncode != 0:
-        return _row(spec, ERROR, f"fmi2sim exit {proc.returncode}: {_error_line(proc.stderr)}",
+        return make_row(spec, ERROR, f"fmi2sim exit {proc.returncode}: {_error_line(proc.stderr)}",
                     elapsed_s=time.perf_counter() - t0)
     with open(summary) as f:
         res = json.load(f)
     out = res["outputs"]
-    return _row(spec, OK, peak_s1=out["s1"]["max_abs"], peak_s2=out["s2"]["max_abs"],
+    return make_row(spec, OK, peak_s1=out["s1"]["max_abs"], peak_s2=out["s2"]["max_abs"],
                 peak_F_top=out["F_top"]["max_abs"], collapsed=bool(out["collapsed"]["final"]),
                 impacts=int(out["impacts"]["final"]), end_time=res["end_time"], steps=res["steps"],
                 cpu_s=res["cpu_seconds"], elapsed_s=time.perf_counter() - t0)
@@ -112,17 +82,16 @@ def run(spec, fmi2sim, fmu, rtol, tmp_root=None, timeout=None):
     """Simulate one RunSpec; always returns a row."""
     t0 = time.perf_counter()
     timeout = TIMEOUT_S if timeout is None else timeout
-    if spec["error"]:
-        return _row(spec, ERROR, spec["error"])
-    if not (spec["scale"] > 0 and math.isfinite(spec["scale"])):
-        return _row(spec, ERROR, f"scale factor {spec['scale']} (record PGA {spec['record_pga_g']} g)")
+    refused = refusal(spec)
+    if refused:
+        return refused
     tmp = _run_dir(tmp_root)
     try:
         return _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0)
     except subprocess.TimeoutExpired:
-        return _row(spec, TIMEOUT, f"fmi2sim did not finish in {timeout:g} s", elapsed_s=time.perf_counter() - t0)
+        return make_row(spec, TIMEOUT, f"fmi2sim did not finish in {timeout:g} s", elapsed_s=time.perf_counter() - t0)
     except (OSError, ValueError, KeyError, TypeError) as exc:  # e.g. an FMU without s1, s2, ...
-        return _row(spec, ERROR, f"{type(exc).__name__}: {exc}")
+        return make_row(spec, ERROR, f"{type(exc).__name__}: {exc}")
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

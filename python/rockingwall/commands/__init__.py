@@ -1,0 +1,1 @@
+"""The subcommands of `rockingwall`, one module each: their arguments and `main`, over the API."""

@@ -1,0 +1,36 @@
+"""Runs of one wall for people: the peaks of simulate()'s results as a table, one result's time
+histories as a plot (what `rockingwall run` prints and writes)."""
+
+
+def table(wall, results):
+    lines = [f"wall: {wall.describe()}", f"Delta_u = {wall.delta_u * 1e3:.1f} mm",
+             f"{'record':<28}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}  collapse"]
+    for r in results:
+        collapse = f"yes, at {r.t_collapse:.2f} s" if r.collapsed else "no"
+        lines.append(f"{r.record[:27]:<28}{r.peak_s1 * 1e3:>13.1f}{r.peak_s2 * 1e3:>13.1f}"
+                     f"{r.s1_over_delta_u:>11.2f}{r.impacts:>9}  {collapse}")
+    return "\n".join(lines)
+
+
+def plot(result, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    h = result.history
+    fig, (ax_ag, ax_s) = plt.subplots(2, 1, figsize=(9, 4.5), sharex=True, height_ratios=[1, 2])
+    ax_ag.plot(h["time"], h["ag"] / 9.81, lw=0.6, color="0.3")
+    ax_ag.set_ylabel("ag [g]")
+    ax_s.plot(h["time"], h["s1"] * 1e3, lw=0.8, label="s1, mid-height [mm]")
+    ax_s.plot(h["time"], h["s2"] * 1e3, lw=0.8, label="s2, top [mm]")
+    du = result.wall.delta_u * 1e3
+    ax_s.axhline(du, color="r", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
+    ax_s.axhline(-du, color="r", lw=0.6, ls="--")
+    ax_s.set_ylabel("displacement [mm]")
+    ax_s.set_xlabel("time [s]")
+    ax_s.legend(fontsize=8, loc="upper right")
+    for ax in (ax_ag, ax_s):
+        ax.grid(alpha=0.3)
+    fig.suptitle(f"{result.record}: {result.wall.describe()}", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110, format="png")
+    plt.close(fig)

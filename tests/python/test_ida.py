@@ -1,0 +1,67 @@
+"""The analysis of a sweep's results file (rockingwall ida): every good row kept past a damaged
+line, a run written twice counted once, garbage in an 'ok' row named with its line, a single K_d
+plotted, not a traceback. Each test named after a finding failed on the code before the fix."""
+import pandas as pd
+
+from rockingwall.commands import ida as ida_command
+from rockingwall.sweep import ida
+from rockingwall.sweep import rows as result_rows
+
+
+def synthetic_results(tmp_path):
+    """A results file written as sweep.py writes it, without running fmi2sim: 2 records x 2 K_d x
+    4 PGAs of wall 1, collapse above 0.3 g."""
+    out = []
+    for rec in ("r1", "r2"):
+        for kd in (5.0, 50.0):
+            for pga in (0.1, 0.2, 0.3, 0.4):
+                spec = dict(run_id=f"w1|flexibleTop|dohertyHinge|kd{kd:g}|{rec}|pga{pga:g}", wall=1,
+                            model="flexibleTop", hinge_law="dohertyHinge", kd_kN=kd, record=rec, record_pga_g=0.3,
+                            scale=pga / 0.3, pga_g=pga, key="0" * 16)
+                out.append(result_rows.make_row(spec, "ok", peak_s1=0.1 * pga + (kd == 5.0) * 0.01, peak_s2=0.05 * pga,
+                                       peak_F_top=10.0, collapsed=pga > 0.3 + 0.05 * (rec == "r2"), impacts=3,
+                                       end_time=4.0, steps=100, cpu_s=0.01, elapsed_s=0.02))
+    path = tmp_path / "synthetic.csv"
+    pd.DataFrame(out, columns=result_rows.COLUMNS).to_csv(path, index=False, lineterminator="\n")
+    return path
+
+
+def test_finding04_analysis_keeps_every_good_row(tmp_path, capsys):
+    path = synthetic_results(tmp_path)
+    lines = path.read_text().splitlines(keepends=True)
+    lines[5] = lines[5].replace(",ok,", ',"ok,', 1)
+    path.write_text("".join(lines))
+    rows_read = ida.load(path, 1, "flexibleTop", "dohertyHinge")
+    assert len(rows_read) == len(lines) - 2
+    assert f"{path}:6: " in capsys.readouterr().err
+
+
+def test_finding16_ida_counts_a_run_once(tmp_path):
+    path = synthetic_results(tmp_path)
+    lines = path.read_text().splitlines(keepends=True)
+    path.write_text("".join(lines + lines[1:4]))  # two sweeps wrote three runs twice
+    assert len(ida.load(path, 1, "flexibleTop", "dohertyHinge")) == len(lines) - 1
+
+
+def test_finding16_garbage_in_an_ok_row_is_named_by_ida(tmp_path, capsys):
+    path = synthetic_results(tmp_path)
+    lines = path.read_text().splitlines(keepends=True)
+    fields = lines[4].split(",")
+    fields[result_rows.COLUMNS.index("peak_s1")] = "banana"
+    lines[4] = ",".join(fields)
+    path.write_text("".join(lines))
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 1  # plots made, damage reported
+    err = capsys.readouterr().err
+    assert f"{path}:5: peak_s1 = 'banana' is not a number" in err
+    assert (tmp_path / "plots" / "kd_map.png").exists()
+    (tmp_path / "empty.csv").write_text("a,b\n1,2\n")
+    assert ida_command.main([str(tmp_path / "empty.csv"), "--out", str(tmp_path / "plots")]) == 2
+    assert "not a results file" in capsys.readouterr().err
+
+
+def test_ida_on_a_single_kd_gives_plots_not_a_traceback(tmp_path):
+    path = synthetic_results(tmp_path)
+    d = pd.read_csv(path)
+    d[d.kd_kN == 5.0].to_csv(path, index=False, lineterminator="\n")
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    assert (tmp_path / "plots" / "kd_map.png").exists()
