@@ -21,7 +21,7 @@ T_E = {"A": 4.5, "B": 5.0, "C": 6.0, "D": 6.0, "E": 6.0}
 REFS = {
     "Se": Ref("Se(T)", "NTC 2018 Par. 3.2.3.2.1, Eq. 3.2.2 with Tab. 3.2.IV (S_S, C_C) and 3.2.V (S_T): "
               "T_C = C_C T*_C, T_B = T_C/3, T_D = 4 a_g/g + 1.6, eta = sqrt(10/(5 + xi)) >= 0.55", "secondary"),
-    "SDe": Ref("S_De(T)", "NTC 2018 Par. 3.2.3.2.2: S_De = Se (T/2 pi)^2 for T <= T_E", "secondary"),
+    "SDe": Ref("S_De(T)", "NTC 2018 Par. 3.2.3.2.3: S_De = Se (T/2 pi)^2 for T <= T_E", "secondary"),
     "floor": Ref("floor spectrum", "Circolare 2019 Par. C7.2.3: Sa = alpha S (1 + z/H) a_p / "
                  "(1 + (a_p - 1)(1 - Ta/(a T1))^2) below a T1, alpha S (1 + z/H) a_p up to b T1, the same "
                  "form with b T1 above; (a, b, a_p) = (0.8, 1.4, 5.0), (0.3, 1.2, 4.0), (0.3, 1.0, 2.5) for "
