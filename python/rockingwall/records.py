@@ -155,7 +155,8 @@ def gaussian(D=0.04, T=1.0, dt=1e-3, t_end=None):
 
 def load(spec, units="g"):
     """A record from what a user types: 'elcentro', 'gaussian' or 'gaussian:D,T' (m, s), or a path
-    to an .AT2 or a .csv file (CSV in `units`)."""
+    to an .AT2 or a .csv file (CSV in `units`), or to an ESM, GeoNet, K-NET or COSMOS file
+    ('FILE:COMPONENT' picks a component; rockingwall.record_formats)."""
     text = os.fspath(spec)
     if text.lower() in ("elcentro", "el-centro", "el_centro"):
         return el_centro()
@@ -163,9 +164,13 @@ def load(spec, units="g"):
         _, _, args = text.partition(":")
         values = [float(v) for v in args.split(",") if v.strip()] if args else []
         return gaussian(*values)
+    from . import record_formats  # imported here: record_formats imports this module
+    found = record_formats.read_record(text)  # an ESM, GeoNet, K-NET or COSMOS file, whatever its name
+    if found is not None:
+        return found
     suffix = pathlib.Path(text).suffix.lower()
     if suffix == ".at2":
         return read_at2(text)
     if suffix in (".csv", ".txt", ".dat"):
         return read_csv(text, units=units)
-    raise RecordError(f"{text}: not a record: give an .AT2 or .csv file, 'elcentro' or 'gaussian[:D,T]'")
+    return record_formats.read_by_content(text, units)  # else the error that lists the formats read

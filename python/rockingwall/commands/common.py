@@ -51,7 +51,8 @@ def wall_from_args(args):
 def add_record_arguments(parser, many=False):
     parser.add_argument("records" if many else "record", nargs="*" if many else "?",
                         default=["elcentro"] if many else "elcentro",
-                        help="an .AT2 or .csv file, 'elcentro' (default) or 'gaussian[:D,T]'")
+                        help="an .AT2 or .csv file, an ESM, GeoNet, K-NET or COSMOS file (FILE:COMPONENT picks a "
+                             "component), 'elcentro' (default) or 'gaussian[:D,T]'")
     parser.add_argument("--csv-units", default="g", choices=["g", "m/s2"], help="units of a CSV record (default g)")
     level = parser.add_mutually_exclusive_group()
     level.add_argument("--scale", type=float, help="factor on the record as given")

@@ -5,7 +5,8 @@ The grid is walls x models x hinge laws x K_d x records x intensities, from a TO
 table (--config) and/or the flags below (flags win). Intensities are scale factors on the records
 as given (--scales) or target PGAs (--pga, in g: each record is scaled to each). Records are the
 FEMA P695 far-field set (--suite fema, 44 components, converted once to AT2 files under
-~/.cache/rockingwall/) or a folder of PEER .AT2 files (--suite DIR).
+~/.cache/rockingwall/) or a folder of PEER .AT2 files (--suite DIR; ESM, GeoNet, K-NET and COSMOS
+files in it are taken too, their first component, docs/records.md).
 
 Runs go to a LocalCluster on this machine (--workers) or to a running Dask scheduler
 (--scheduler ADDRESS; its workers need the rockingwall package installed: the records travel
@@ -55,7 +56,7 @@ def parse_args(argv=None):
                         "(the unit of the results' kd_kN column)")
     p.add_argument("--scales", type=float, nargs="+", help="scale factors on the records as given")
     p.add_argument("--pga", dest="pga_g", type=float, nargs="+", help="target PGAs [g] (replaces --scales)")
-    p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 files")
+    p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 (or ESM, GeoNet, K-NET, COSMOS) files")
     p.add_argument("--records", nargs="+", help="only these records of the suite (by name)")
     p.add_argument("--er", type=float, help="coefficient of restitution (default 0.86)")
     p.add_argument("--tail", type=float, help="seconds simulated after the record ends (default 5)")

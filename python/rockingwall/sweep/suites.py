@@ -12,7 +12,7 @@ import stat
 import numpy as np
 import pandas as pd
 
-from . import provenance
+from . import converted, provenance
 
 FEMA_SET = "farfield"
 
@@ -122,17 +122,35 @@ def read_at2(path):
 
 
 def at2_folder(folder):
-    """Every *.AT2 file in a folder (case-insensitive suffix), sorted by name. Anything named
+    """Every *.AT2 file in a folder (case-insensitive suffix), sorted by name, then every file in
+    another format read by content (ESM, GeoNet, K-NET, COSMOS: sweep.converted). Anything named
     *.AT2 that is not a regular file is refused before any file is read."""
     folder = pathlib.Path(folder)
     if not folder.is_dir():
         raise FileNotFoundError(f"{folder}: not a folder of .AT2 files")
     files = sorted(p for p in folder.iterdir() if p.suffix.lower() == ".at2")
-    if not files:
-        raise FileNotFoundError(f"{folder}: no .AT2 files")
     for p in files:
         check_regular(p)
-    return [read_at2(p) for p in files]
+    others = converted.recognised(folder)
+    files = [p for p in files if p not in others]
+    if not files and not others:
+        raise FileNotFoundError(f"{folder}: no .AT2 files (nor ESM, GeoNet, K-NET or COSMOS files)")
+    return [read_at2(p) for p in files] + [converted_record(p) for p in others]
+
+
+def converted_record(path):
+    """A Record of a file in another format, read from the AT2 file it is converted to (so fmi2sim
+    reads it too); named as its reader names it (the file and the component)."""
+    check_regular(path)
+    try:
+        if path.stat().st_size > MAX_RECORD_BYTES:
+            raise ValueError(f"{path.stat().st_size / 2**20:.0f} MiB, more than the {MAX_RECORD_BYTES // 2**20} MiB "
+                             "a record may have")
+        name, at2 = converted.to_at2(path)
+    except (OSError, ValueError) as exc:  # RecordError is a ValueError; its message names the file and line
+        text = str(exc) if str(exc).startswith(str(path)) else f"{path.name}: {exc}"
+        return Record(path.stem, str(path.absolute()), float("nan"), float("nan"), error=text)
+    return dataclasses.replace(read_at2(at2), name=name)
 
 
 def write_at2(path, acc_g, dt, title):
