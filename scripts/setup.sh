@@ -50,10 +50,14 @@ fi
 # The package rockingwall (python/rockingwall) and the reference solver rwref (reference/), both
 # editable: the package finds the compiled parts in build/ (rockingwall/paths.py). `pip install .`
 # (without -e) is what a user elsewhere runs: it builds with CMake and installs the binaries too.
-if ! .venv/bin/python -c "import rockingwall, rwref" 2>/dev/null; then
+# The editable install maps the package's modules as they were when it was made: it is made again
+# when a module is added, moved or removed (the stamp is the list of the packages' files).
+layout=$(find python/rockingwall reference/rwref -name '*.py' | LC_ALL=C sort | sha256sum | cut -d' ' -f1)
+if ! .venv/bin/python -c "import rockingwall, rwref" 2>/dev/null || [ "$(cat .venv/.layout.sha256 2>/dev/null)" != "$layout" ]; then
   echo "setup: installing the packages rockingwall and rwref into .venv (editable)"
   .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e . -Cwheel.cmake=false
   .venv/bin/python -m pip install -q --no-build-isolation --no-deps -e reference
+  echo "$layout" > .venv/.layout.sha256
 fi
 
 # The CMake build (Debian's cmake, not the one fmpy pulls into the venv).

@@ -1,4 +1,4 @@
-"""Small record files in the formats engineers download, for the tests of rockingwall.record_formats:
+"""Small record files in the formats engineers download, for the tests of rockingwall.records:
 each writer lays its file out as the format's documentation and the agencies' published files do
 (header fields, units, fixed-width columns) from known accelerations, and returns the samples in
 m/s^2 that a reader must give back (the values as the file prints them)."""

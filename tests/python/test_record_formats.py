@@ -1,4 +1,4 @@
-"""The downloaded record formats (rockingwall.record_formats): ESM, GeoNet V2A, K-NET and COSMOS V2
+"""The downloaded record formats (rockingwall.records): ESM, GeoNet V2A, K-NET and COSMOS V2
 files written here from known samples read back to the samples of their two-column source (in
 m/s^2, to 1e-12); a wrong sample count, a wrong time step and a header the reader cannot interpret
 are refused naming the file, the line and the problem; the format is found from the content,
@@ -10,7 +10,7 @@ import pytest
 
 import record_files as rf
 from record_files import FORMATS, write
-from rockingwall import record_formats, records
+from rockingwall import records
 
 
 def same_samples(record, t, ag):
@@ -24,11 +24,11 @@ def test_each_format_reads_to_the_samples_of_its_two_column_source(fmt, tmp_path
     expected = write(fmt, path)
     rf.two_columns(tmp_path / "source.csv", expected)
     source = records.read_csv(tmp_path / "source.csv", units="m/s2")
-    assert record_formats.detect_format(path) == fmt
+    assert records.detect_format(path) == fmt
     record = records.load(path)
     same_samples(record, source.t, source.ag)
     assert record.t[0] == 0.0 and record.t.size == rf.N
-    t, ag, name, meta = record_formats.read(path)
+    t, ag, name, meta = records.read_format(path)
     same_samples(records.Record(name, t, ag), source.t, source.ag)
     assert meta["npts"] == rf.N and meta["dt"] == pytest.approx(rf.DT, rel=1e-12)
     assert name.startswith("r") and meta["component"] in name
@@ -143,7 +143,7 @@ def test_an_unknown_format_is_refused_listing_the_formats_read(tmp_path):
 def test_the_content_decides_whatever_the_name(fmt, name, tmp_path):
     path = tmp_path / name
     expected = write(fmt, path)
-    assert record_formats.detect_format(path) == fmt
+    assert records.detect_format(path) == fmt
     same_samples(records.load(path), np.arange(rf.N) * rf.DT, expected)
 
 
@@ -152,7 +152,7 @@ def test_at2_and_csv_are_recognised_by_content_too(tmp_path):
     at2.write_text("PEER NGA STRONG MOTION DATABASE RECORD\nTEST\nACCELERATION TIME SERIES IN UNITS OF G\n"
                    "NPTS=    3, DT=   .0100 SEC\n .1 .2 -.1\n")
     csv.write_text("time,acc\n0,0.1\n0.01,0.2\n")
-    assert record_formats.detect_format(at2) == "at2" and record_formats.detect_format(csv) == "csv"
+    assert records.detect_format(at2) == "at2" and records.detect_format(csv) == "csv"
     assert records.load(at2).ag[1] == pytest.approx(0.2 * 9.81)
     assert records.load(csv, units="m/s2").ag[1] == pytest.approx(0.2)
 

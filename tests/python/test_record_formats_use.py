@@ -12,7 +12,8 @@ import pytest
 import record_files as rf
 from record_files import FORMATS, write
 from rockingwall import cli, records
-from rockingwall.sweep import command, records as suite
+from rockingwall.commands import sweep as command
+from rockingwall.sweep import suites as suite
 
 NAMES = {"esm": "r HNE", "knet": "r EW", "geonet": "r N28W", "cosmos": "r chan 1"}  # the records' names
 

@@ -1,4 +1,4 @@
-"""A sweep's records in the formats of rockingwall.record_formats (ESM, GeoNet, K-NET, COSMOS):
+"""A sweep's records in the formats of rockingwall.records (ESM, GeoNet, K-NET, COSMOS):
 found in a suite folder by their content, each (its first component) converted once into an AT2
 file of the cache, named by the hash of its text, which fmi2sim and the exact engine then read
 like any AT2 record (values in g with every digit, so the samples are those `rockingwall run`
@@ -8,7 +8,7 @@ import os
 import pathlib
 import tempfile
 
-from .. import record_formats
+from .. import records
 from ..records import G_STD
 
 
@@ -19,9 +19,9 @@ def cache_dir():
 
 
 def recognised(folder):
-    """The files of a folder in a format of rockingwall.record_formats, sorted by name (only
+    """The files of a folder in a format of rockingwall.records, sorted by name (only
     regular files are looked into)."""
-    return sorted(p for p in pathlib.Path(folder).iterdir() if record_formats.recognise(p))
+    return sorted(p for p in pathlib.Path(folder).iterdir() if records.recognise(p))
 
 
 def at2_text(ag, name, meta, path):
@@ -40,7 +40,7 @@ def to_at2(path):
     """(the record's name, the cached AT2 file) of a record file in one of the other formats;
     a RecordError names the file, line and problem. The file is written beside its final name
     and renamed into place, so a reader never sees half of it."""
-    _, ag, name, meta = record_formats.read(path)
+    _, ag, name, meta = records.read_format(path)
     text = at2_text(ag, name, meta, path)
     cache = cache_dir()
     target = cache / f"{hashlib.sha256(text.encode()).hexdigest()[:16]}.AT2"

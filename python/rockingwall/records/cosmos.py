@@ -9,8 +9,8 @@ import re
 
 import numpy as np
 
-from ..records import RecordError
-from .common import NUMBER, check_numbers_only, choose, count, fixed_block, lines_of, positive, unit_factor
+from .types import RecordError
+from .format_common import NUMBER, check_numbers_only, choose, count, fixed_block, lines_of, positive, unit_factor
 
 NAME = "COSMOS V1/V2"
 FIRST_LINE = re.compile(r"\(Format\s+v\s*[\d.]+\s+with\s+(\d+)\s+text\s+lines\)", re.I)

@@ -5,8 +5,8 @@ import pathlib
 
 import numpy as np
 
-from ..records import RecordError
-from .common import agrees, check_count, choose, count, free_values, lines_of, number, positive, unit_factor
+from .types import RecordError
+from .format_common import agrees, check_count, choose, count, free_values, lines_of, number, positive, unit_factor
 
 NAME = "ESM ASCII"
 

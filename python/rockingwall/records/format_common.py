@@ -8,7 +8,7 @@ import stat
 
 import numpy as np
 
-from ..records import G_STD, RecordError
+from .types import G_STD, RecordError
 
 NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[EeDd][-+]?\d+)?"
 

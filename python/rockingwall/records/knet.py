@@ -7,8 +7,8 @@ import re
 
 import numpy as np
 
-from ..records import RecordError
-from .common import NUMBER, agrees, choose, free_values, lines_of, number, positive
+from .types import RecordError
+from .format_common import NUMBER, agrees, choose, free_values, lines_of, number, positive
 
 NAME = "K-NET/KiK-net ASCII"
 LABELS = ["Origin Time", "Lat.", "Long.", "Depth. (km)", "Mag.", "Station Code", "Station Lat.", "Station Long.",

@@ -5,8 +5,11 @@ checked against the file's header; `detect_format` names a file's format or says
 import os
 import re
 
-from ..records import Record, RecordError, read_at2, read_csv
-from . import common, cosmos, esm, geonet, knet
+from . import cosmos, esm, geonet, knet
+from . import format_common as common
+from .csv_table import read_csv
+from .peer import read_at2
+from .types import Record, RecordError
 
 READERS = {"esm": esm, "geonet": geonet, "knet": knet, "cosmos": cosmos}
 READ = ("PEER NGA AT2, two-column CSV, ESM ASCII, GeoNet V1A/V2A, K-NET/KiK-net ASCII and COSMOS V1/V2 "

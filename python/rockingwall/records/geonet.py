@@ -7,8 +7,8 @@ import re
 
 import numpy as np
 
-from ..records import RecordError
-from .common import NUMBER, agrees, check_numbers_only, choose, fixed_block, lines_of, positive
+from .types import RecordError
+from .format_common import NUMBER, agrees, check_numbers_only, choose, fixed_block, lines_of, positive
 
 NAME = "GeoNet V1A/V2A"
 TEXT_LINES, INT_LINES, REAL_LINES, PER_LINE, WIDTH = 16, 4, 6, 10, 8

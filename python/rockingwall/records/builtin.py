@@ -1,0 +1,24 @@
+"""The records that need no file: El Centro 1940 (from the quakeio package) and the paper's
+Gaussian displacement impulse."""
+import numpy as np
+
+from .types import G_STD, Record
+
+def el_centro(g=G_STD):
+    """El Centro 1940 (Imperial Valley, 180 component) as shipped by quakeio, dt = 0.02 s."""
+    import quakeio.elcentro as ec
+    data = np.asarray(ec.accel.data, dtype=float)
+    return Record("El Centro 1940", np.arange(data.size) * float(ec.accel.time_step), data * g, source="quakeio")
+
+
+def gaussian(D=0.04, T=1.0, dt=1e-3, t_end=None):
+    """The paper's Gaussian displacement impulse u_g = D exp(-(t - T/2)^2 / (2 (T/8)^2)),
+    sampled every dt up to t_end (default 10 T): ground acceleration u_g'' [m/s^2]."""
+    t_end = 10 * T if t_end is None else t_end
+    t = np.arange(0.0, t_end + dt / 2, dt)
+    s2 = (T / 8) ** 2
+    z = t - T / 2
+    return Record(f"Gaussian D={D:g} m T={T:g} s", t, D * np.exp(-z * z / (2 * s2)) * (z * z / (s2 * s2) - 1 / s2),
+                  source="gaussian")
+
+

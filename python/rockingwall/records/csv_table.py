@@ -1,0 +1,40 @@
+"""Two-column CSV records: time [s] and acceleration (in g or m/s^2)."""
+import os
+import pathlib
+import re
+
+import numpy as np
+
+from .types import FLOAT, G_STD, Record, RecordError, number
+
+def read_csv(path, units="g", g=G_STD):
+    """Two columns, time [s] and acceleration (comma, semicolon, tab or blank separated); '#'
+    lines and one header line are skipped. units: 'g' or 'm/s2'."""
+    if units not in ("g", "m/s2"):
+        raise ValueError(f"units must be 'g' or 'm/s2', got {units!r}")
+    path = os.fspath(path)
+    times, accs = [], []
+    try:
+        fh = open(path, encoding="utf-8-sig")
+    except OSError as exc:
+        raise RecordError(f"{path}: {exc.strerror or exc}") from None
+    with fh:
+        for lineno, line in enumerate(fh, 1):
+            tokens = [x for x in re.split(r"[,;\s]+", line.strip()) if x]
+            if not tokens or tokens[0].startswith("#"):
+                continue
+            if not times and not re.fullmatch(FLOAT, tokens[0]):
+                continue  # the header line
+            if len(tokens) != 2:
+                raise RecordError(f"{path}:{lineno}: expected 2 columns (time, acceleration), found {len(tokens)}")
+            t, a = number(tokens[0], path, lineno), number(tokens[1], path, lineno)
+            if times and t <= times[-1]:
+                raise RecordError(f"{path}:{lineno}: time {t} is not after the previous one ({times[-1]})")
+            times.append(t)
+            accs.append(a)
+    if len(times) < 2:
+        raise RecordError(f"{path}: need at least 2 rows of numbers, found {len(times)}")
+    factor = g if units == "g" else 1.0
+    return Record(pathlib.Path(path).stem, np.array(times), np.array(accs) * factor, source=path)
+
+
