@@ -48,7 +48,8 @@ class _Record(ctypes.Structure):
 
 
 class _Options(ctypes.Structure):
-    _fields_ = [("t_end", _D), ("rtol", _D), ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(_D))]
+    _fields_ = [("t_end", _D), ("rtol", _D), ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(_D)),
+                ("x0", ctypes.POINTER(_D))]
 
 
 class _Result(ctypes.Structure):
@@ -194,7 +195,7 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None):
     hist = _histories(n_out)
     res = _Result()
     res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out = (_ptr(h) for h in hist)
-    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out))
+    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), None)
     c = c_spec(spec)
     code = _function()(ctypes.byref(c), ctypes.byref(_Record(t.size, _ptr(t), _ptr(ag))), ctypes.byref(opt),
                        ctypes.byref(res))
