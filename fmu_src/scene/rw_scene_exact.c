@@ -1,0 +1,327 @@
+/* The exact scene engine's run (rw_scene_exact.h): the record's intervals (and the output times)
+ * in substeps of the current region, each cleared by the quiet test on its step table or examined
+ * on its exact series; at each root the scene's own event update (rw_scene_event_update, the walls'
+ * event rules and collapse), then the region the motion goes into. */
+#include "rw_scene_exact_internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_ROUNDS_PER_EVENT 100
+#define MAX_EVENTS_PER_INSTANT 100
+
+int rw_scene_exact_covers(const rw_scene_spec *spec, char *msg, size_t n)
+{
+    int i;
+    if (spec->building.diaphragm_law != BD_ELASTIC)
+        return snprintf(msg, n, "the exact engine takes linear diaphragms only (diaphragm law %d is hysteretic)",
+                        spec->building.diaphragm_law), RW_SCENE_UNSUPPORTED;
+    if (!spec->rigid_in_plane && spec->building.storey_law != BD_ELASTIC)
+        return snprintf(msg, n, "the exact engine takes linear in-plane walls only (storey law %d is hysteretic)",
+                        spec->building.storey_law), RW_SCENE_UNSUPPORTED;
+    for (i = 0; i < spec->n_storeys; i++) {
+        const rw_hinge_law *law;
+        if (!spec->has_wall[i]) continue;
+        law = rw_hinge_law_of(spec->wall[i].hingeLaw);
+        if (!law || !law->q_only)
+            return snprintf(msg, n, "storey %d: the exact engine takes hinge laws whose moments are affine on a region "
+                            "(semiRigidHinge, dohertyHinge), not %s", i + 1, law ? law->name : "this one"),
+                   RW_SCENE_UNSUPPORTED;
+    }
+    return RW_SCENE_OK;
+}
+
+/* the record at t: linear between samples, the ends held */
+static double ground(sx_run *R, double t)
+{
+    const rw_scene_record *rec = R->rec;
+    size_t k = R->hint;
+    if (t <= rec->t[0]) return rec->ag[0];
+    if (t >= rec->t[rec->n - 1]) return rec->ag[rec->n - 1];
+    while (k > 0 && rec->t[k] > t) k--;
+    while (k + 2 < rec->n && rec->t[k + 1] <= t) k++;
+    R->hint = k;
+    return rec->ag[k] + (rec->ag[k + 1] - rec->ag[k]) * (t - rec->t[k]) / (rec->t[k + 1] - rec->t[k]);
+}
+
+static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
+
+/* the region the motion at R->t goes into: kept, found among the cached ones, or built */
+static int enter_region(sx_run *R)
+{
+    sx_key key;
+    int k, slot = -1;
+    sx_region_key(&R->sc, ground(R, R->t), R->x, &key);
+    R->stamp++;
+    if (R->cur >= 0 && sx_key_equal(&key, &current(R)->key)) return (current(R)->used = R->stamp), RW_SCENE_OK;
+    for (k = 0; k < R->nregions; k++)
+        if (sx_key_equal(&key, &R->regions[k].key)) {
+            R->cur = k;
+            R->regions[k].used = R->stamp;
+            return RW_SCENE_OK;
+        }
+    if (R->nregions < SX_REGIONS) slot = R->nregions++;
+    else
+        for (k = 0; k < SX_REGIONS; k++)
+            if (slot < 0 || R->regions[k].used < R->regions[slot].used) slot = k;
+    R->cur = slot;
+    R->regions[slot].used = R->stamp;
+    k = sx_region_build(&R->sc, &key, &R->regions[slot]);
+    if (k == RW_SCENE_SOLVER) snprintf(R->res->message, sizeof R->res->message, "singular mass matrix at t = %.9g s", R->t);
+    if (k == RW_SCENE_NO_MEMORY) snprintf(R->res->message, sizeof R->res->message, "out of memory");
+    if (k) R->regions[slot].key.standing[0] = -1; /* never matches */
+    return k;
+}
+
+static double energy(sx_run *R, double t) { return rw_scene_energy(&R->sc, ground(R, t), R->x); }
+
+/* the walls' event rules at t until nothing changes, then the new indicator lines and region */
+static int handle_events(sx_run *R)
+{
+    const double ag = ground(R, R->t);
+    int rounds = 0, flags;
+    if (R->t == R->last_event_t && ++R->same_instant > MAX_EVENTS_PER_INSTANT) {
+        snprintf(R->res->message, sizeof R->res->message, "more than %d events at t = %.9g s", MAX_EVENTS_PER_INSTANT, R->t);
+        return RW_SCENE_ZENO;
+    }
+    if (R->t != R->last_event_t) R->same_instant = 0;
+    R->last_event_t = R->t;
+    do {
+        const double before = energy(R, R->t);
+        flags = rw_scene_event_update(&R->sc, R->t, ag, R->x);
+        R->losses += before - energy(R, R->t);
+        R->res->events++;
+        if (++rounds > MAX_ROUNDS_PER_EVENT) {
+            snprintf(R->res->message, sizeof R->res->message,
+                     "the walls' event iteration at t = %.9g s did not settle in %d rounds", R->t, MAX_ROUNDS_PER_EVENT);
+            return RW_SCENE_ZENO;
+        }
+    } while (flags & 3);
+    sx_watch_lines(R);
+    return enter_region(R);
+}
+
+/* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
+ * at an event (handled here) */
+static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slope)
+{
+    while (R->t < t1) {
+        sx_region *r = current(R);
+        const int parts = (int)ceil((t1 - R->t) / sx_hmax(r) * (1.0 - 1e-12));
+        const double L = (t1 - R->t) / (parts > 1 ? parts : 1);
+        double xa[SX_MAX_NA], wg, wd, u;
+        sx_series s;
+        int k;
+        sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa);
+        sx_series_of(r, xa, L, &s);
+        u = sx_watch_step(R, r, &s);
+        sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
+        R->work_ground += wg;
+        R->work_damping += wd;
+        for (k = 0; k < r->na; k++) xa[k] = 0.0;
+        for (k = 0; k < r->n; k++) {
+            double v = 0.0;
+            int j;
+            for (j = s.deg; j >= 0; j--) v = v * fmin(u, 1.0) + s.X[(size_t)j * (size_t)r->na + (size_t)k];
+            xa[k] = v;
+        }
+        sx_scatter(r, xa, R->x);
+        R->res->steps++;
+        if (u > 1.0) {
+            R->t = parts > 1 ? R->t + L : t1;
+            continue;
+        }
+        R->t = (u == 1.0 && parts <= 1) ? t1 : R->t + u * L;
+        R->error = handle_events(R);
+        return R->error ? -1 : 1;
+    }
+    return 0;
+}
+
+/* one step of the grid on its table: 1 if the quiet test cleared it (then taken), 0 if not */
+static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
+{
+    sx_region *r = current(R);
+    const int na = r->na;
+    double xa0[SX_MAX_NA], xa1[SX_MAX_NA], Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
+    sx_step *st;
+    int k;
+    if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
+    st = sx_step_of(r, h, R->stamp);
+    sx_gather(r, R->x, ag0, slope, xa0);
+    sx_matvec(na, na, st->E, xa0, xa1);
+    if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
+    sx_matvec(na, na, st->Wd, xa0, Wx);
+    for (k = 0; k < na; k++) {
+        wd += xa0[k] * Wx[k];
+        m0 += st->wg[k] * xa0[k];
+        m1 += st->wg[na + k] * xa0[k];
+    }
+    R->work_ground -= ag0 * m0 + slope * m1;
+    R->work_damping += wd;
+    sx_scatter(r, xa1, R->x);
+    R->t = t1;
+    R->res->steps++;
+    return 1;
+}
+
+/* the interval [ta, tb] (the record linear over it): a grid of equal steps of the region there;
+ * after an event the exact series takes the motion to the next grid point */
+static int advance(sx_run *R, double tb)
+{
+    const double ta = R->t, ag_a = ground(R, ta), slope = (ground(R, tb) - ag_a) / (tb - ta);
+    const int n = (int)ceil((tb - ta) / sx_hmax(current(R)) * (1.0 - 1e-12));
+    const int steps = n > 1 ? n : 1;
+    const double h = (tb - ta) / steps;
+    int k = 0;
+    while (R->t < tb) {
+        const double t1 = k + 1 >= steps ? tb : ta + (k + 1) * h;
+        int code;
+        if (R->t == (k == 0 ? ta : ta + k * h) && quiet_step(R, h, t1, ag_a + slope * (R->t - ta), slope)) {
+            k++;
+            continue;
+        }
+        code = exact_piece(R, t1, ta, ag_a, slope);
+        if (code < 0) return 1;
+        if (R->t >= t1) k++;
+    }
+    return 0;
+}
+
+static void track(double *peak, double v)
+{
+    if (fabs(v) > *peak) *peak = fabs(v);
+}
+
+/* the output row due at t and the energy balance */
+static void observe(sx_run *R, double t)
+{
+    rw_scene_result *res = R->res;
+    const double residual = energy(R, t) - res->energy_start - R->work_ground + R->work_damping + R->losses;
+    track(&res->max_residual, residual);
+    track(&res->max_work, R->work_ground);
+    if (R->next_out < R->opt->n_out && t >= R->opt->t_out[R->next_out]) {
+        double dx[RW_SCENE_NX];
+        rw_scene_aux aux;
+        int i;
+        rw_scene_derivatives(&R->sc, ground(R, t), R->x, dx, &aux);
+        for (i = 0; i < R->sc.S.n_storeys; i++) {
+            const size_t row = R->next_out * RW_SCENE_MAX_STOREYS + (size_t)i;
+            if (res->s1_out) res->s1_out[row] = rw_scene_s1(&R->sc, R->x, i);
+            if (res->s2_out) res->s2_out[row] = rw_scene_s2(&R->sc, R->x, i);
+            if (res->diaphragm_out) res->diaphragm_out[row] = rw_scene_diaphragm_deformation(&R->sc, R->x, i);
+            if (res->base_acc_out) res->base_acc_out[row] = aux.a_base[i];
+        }
+        R->next_out++;
+    }
+}
+
+/* where the next interval ends: the next record sample, output time or the end */
+static double next_stop(sx_run *R)
+{
+    const rw_scene_record *rec = R->rec;
+    double stop = R->opt->t_end;
+    size_t k = R->hint;
+    while (k < rec->n && rec->t[k] <= R->t) k++;
+    if (k < rec->n && rec->t[k] < stop) stop = rec->t[k];
+    if (R->next_out < R->opt->n_out && R->opt->t_out[R->next_out] < stop) stop = R->opt->t_out[R->next_out];
+    return stop;
+}
+
+static int integrate(sx_run *R)
+{
+    while (R->t < R->opt->t_end) {
+        if (advance(R, next_stop(R))) return R->error;
+        observe(R, R->t);
+        R->res->t_reached = R->t;
+    }
+    return RW_SCENE_OK;
+}
+
+static void collect(sx_run *R)
+{
+    rw_scene_result *res = R->res;
+    int i;
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        res->collapsed[i] = R->sc.collapsed[i];
+        res->collapse_reason[i] = R->sc.reason[i];
+        res->t_collapse[i] = R->sc.t_collapse[i];
+        res->impacts[i] = R->sc.impacts[i];
+    }
+    res->work_ground = R->work_ground;
+    res->work_damping = R->work_damping;
+    res->event_losses = R->losses;
+    res->energy_end = energy(R, res->t_reached);
+}
+
+static void free_run(sx_run *R)
+{
+    int k;
+    for (k = 0; k < R->nregions; k++) sx_region_free(&R->regions[k]);
+    free(R->regions);
+    free(R);
+}
+
+static sx_run *new_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,
+                       rw_scene_result *res)
+{
+    sx_run *R = (sx_run *)calloc(1, sizeof *R);
+    if (!R) return NULL;
+    R->regions = (sx_region *)calloc(SX_REGIONS, sizeof(sx_region));
+    if (!R->regions) return free(R), NULL;
+    R->rec = rec, R->opt = opt, R->res = res;
+    R->cur = -1;
+    R->t = rec->t[0];
+    R->last_event_t = NAN;
+    rw_scene_start_state(spec, opt->x0, R->x);
+    rw_scene_init(&R->sc, spec, rec->ag[0], R->x);
+    return R;
+}
+
+int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,
+                       rw_scene_result *res)
+{
+    sx_run *R;
+    int code;
+    if (!spec || !rec || !opt || !res) return RW_SCENE_BAD_ARGUMENT;
+    res->message[0] = '\0';
+    res->steps = res->events = 0;
+    if (rw_scene_check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
+    if (rw_scene_validate(spec, res->message, sizeof res->message)) return RW_SCENE_BAD_SPEC;
+    if (rw_scene_exact_covers(spec, res->message, sizeof res->message)) return RW_SCENE_UNSUPPORTED;
+    R = new_run(spec, rec, opt, res);
+    if (!R) return snprintf(res->message, sizeof res->message, "out of memory"), RW_SCENE_NO_MEMORY;
+    res->energy_start = energy(R, R->t);
+    res->t_reached = R->t;
+    code = handle_events(R);
+    if (code == RW_SCENE_OK) {
+        observe(R, R->t);
+        code = integrate(R);
+    }
+    collect(R);
+    free_run(R);
+    return code;
+}
+
+int rw_scene_exact_rates(const rw_scene *sc, double ag, const double x[], double dx[])
+{
+    sx_region r;
+    sx_key key;
+    double xa[SX_MAX_NA], d[SX_MAX_NA];
+    int k, code;
+    memset(&r, 0, sizeof r);
+    sx_region_key(sc, ag, x, &key);
+    code = sx_region_build(sc, &key, &r);
+    if (code) return sx_region_free(&r), code;
+    sx_gather(&r, x, ag, 0.0, xa);
+    sx_matvec(r.na, r.na, r.Aa, xa, d);
+    memset(dx, 0, sizeof(double) * RW_SCENE_NX);
+    for (k = 0; k < r.ndof; k++) {
+        dx[r.pos[k]] = d[k];
+        dx[r.vel[k]] = d[r.ndof + k];
+    }
+    sx_region_free(&r);
+    return RW_SCENE_OK;
+}
