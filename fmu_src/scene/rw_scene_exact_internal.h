@@ -28,6 +28,7 @@ enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC };
 typedef struct {
     int standing[RW_SCENE_MAX_STOREYS];
     double c[RW_SCENE_MAX_STOREYS][2], J[RW_SCENE_MAX_STOREYS][2][2];
+    double cap[RW_SCENE_MAX_STOREYS]; /* the wall's hinge capacities cap_b + cap_m: the scale of c */
 } sx_key;
 
 /* a standing wall's collapse indicator on the region: G(q) = q.A q - c.q (rw_collapse_form) */

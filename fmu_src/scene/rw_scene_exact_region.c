@@ -34,11 +34,12 @@ void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key)
         memcpy(key->J[i], J, sizeof J);
         key->c[i][0] = Q[0] - J[0][0] * xi[0] - J[0][1] * xi[1];
         key->c[i][1] = Q[1] - J[1][0] * xi[0] - J[1][1] * xi[1];
+        key->cap[i] = sc->D[i].cap_b + sc->D[i].cap_m;
     }
 }
 
-/* J selects the region exactly; c = Q - J q carries the rounding of the state it was taken at, and
- * differs between regions by a hinge's capacity */
+/* J selects the region exactly; c = Q - J q carries the rounding of the state it was taken at (of
+ * J q, which may dwarf c), and differs between regions by a good part of a hinge's capacity */
 int sx_key_equal(const sx_key *a, const sx_key *b)
 {
     int i, k;
@@ -47,7 +48,7 @@ int sx_key_equal(const sx_key *a, const sx_key *b)
         if (!a->standing[i]) continue;
         if (memcmp(a->J[i], b->J[i], sizeof a->J[i]) != 0) return 0;
         for (k = 0; k < 2; k++)
-            if (fabs(a->c[i][k] - b->c[i][k]) > 1e-9 * (fabs(a->c[i][k]) + fabs(b->c[i][k]) + 1e-300)) return 0;
+            if (fabs(a->c[i][k] - b->c[i][k]) > 1e-9 * a->cap[i]) return 0;
     }
     return 1;
 }
