@@ -28,6 +28,9 @@ void sx_watch_lines(sx_run *R)
         rw_indicator_lines(&sc->S.wall[i], &sc->D[i], &sc->mode[i], L);
         for (k = 0; k < RW_NZ; k++) {
             if (L[k].none || (L[k].a[0] == 0.0 && L[k].a[1] == 0.0)) continue;
+            /* the mid-height switch under a law of q alone changes nothing but the side, which the
+             * event update's own rule brings up to date at the next event */
+            if (k == RW_Z_MID && rw_mid_switch_is_bookkeeping(&sc->S.wall[i])) continue;
             out[n].a0 = L[k].a[0], out[n].a1 = L[k].a[1], out[n].s = L[k].s, out[n].t = L[k].t, out[n].c = L[k].c;
             n++;
         }
