@@ -149,7 +149,8 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     sx_step *st;
     int k;
     if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
-    st = sx_step_of(r, h, R->stamp);
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    if (st->is_long) return 0; /* a length at the limit, doubled: no polynomial rows */
     sx_gather(r, R->x, ag0, slope, xa0);
     sx_matvec(na, na, st->E, xa0, xa1);
     if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
@@ -167,27 +168,76 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     return 1;
 }
 
-/* the interval [ta, tb] (the record linear over it): a grid of equal steps of the region there;
- * after an event the exact series takes the motion to the next grid point */
-static int advance(sx_run *R, double tb)
+/* [R->t, t1] in the grid of equal steps no longer than the region allows (the steps the exact
+ * series converge over): each cleared by the quiet test on its table, or examined on its series
+ * (after an event the series takes the motion to the next grid point) */
+static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slope)
 {
-    const double ta = R->t, ag_a = ground(R, ta), slope = (ground(R, tb) - ag_a) / (tb - ta);
-    const int n = (int)ceil((tb - ta) / sx_hmax(current(R)) * (1.0 - 1e-12));
+    const double t0 = R->t;
+    const int n = (int)ceil((t1 - t0) / sx_hmax(current(R)) * (1.0 - 1e-12));
     const int steps = n > 1 ? n : 1;
-    const double h = (tb - ta) / steps;
+    const double h = (t1 - t0) / steps;
     int k = 0;
-    while (R->t < tb) {
-        const double t1 = k + 1 >= steps ? tb : ta + (k + 1) * h;
-        int code;
-        if (R->t == (k == 0 ? ta : ta + k * h) && quiet_step(R, h, t1, ag_a + slope * (R->t - ta), slope)) {
+    while (R->t < t1) {
+        const double end = k + 1 >= steps ? t1 : t0 + (k + 1) * h;
+        if (R->t == (k == 0 ? t0 : t0 + k * h) && quiet_step(R, h, end, ag_a + slope * (R->t - ta), slope)) {
             k++;
             continue;
         }
-        code = exact_piece(R, t1, ta, ag_a, slope);
-        if (code < 0) return 1;
-        if (R->t >= t1) k++;
+        if (exact_piece(R, end, ta, ag_a, slope) < 0) return 1;
+        if (R->t >= end) k++;
     }
     return 0;
+}
+
+/* a slow step [R->t, t1] cleared by the modes' quiet test on its (long) table: 0 if taken, else
+ * why not (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes) */
+static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
+{
+    sx_region *r = current(R);
+    const double h = t1 - R->t;
+    double xa0[SX_MAX_NA], xa1[SX_MAX_NA], Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
+    sx_lopoly P[SX_MAX_F];
+    sx_step *st;
+    int k, why;
+    sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
+    if (!sx_modes_polys(r, h, xa0, P)) return -1;
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    if ((why = sx_watch_quiet_polys(R, r, P, xa1)) != 0) return why;
+    sx_matvec(r->na, r->na, st->Wd, xa0, Wx);
+    for (k = 0; k < r->na; k++) {
+        wd += xa0[k] * Wx[k];
+        m0 += st->wg[k] * xa0[k];
+        m1 += st->wg[r->na + k] * xa0[k];
+    }
+    R->work_ground -= xa0[r->n] * m0 + slope * m1;
+    R->work_damping += wd;
+    sx_scatter(r, xa1, R->x);
+    R->t = t1;
+    R->res->steps++;
+    return 0;
+}
+
+/* The dyadic piece `index` of `level` of the interval [ta, ta + L]: one slow step if the modes'
+ * test clears it, else its two halves, down to the exact steps (docs/scenes.md) */
+static int dyadic(sx_run *R, double ta, double L, int level, double index, double ag_a, double slope)
+{
+    const double h = ldexp(L, -level), t1 = index + 1.0 >= ldexp(1.0, level) ? ta + L : ta + (index + 1.0) * h;
+    const sx_region *r = current(R);
+    if (R->t >= t1) return 0;
+    if (R->t > ta + index * h || h <= 2.0 * sx_hmax(r) || !r->modes.valid || level >= 30)
+        return exact_steps(R, t1, ta, ag_a, slope);
+    if (slow_step(R, t1, ta, ag_a, slope) == 0) return 0;
+    if (dyadic(R, ta, L, level + 1, 2.0 * index, ag_a, slope)) return 1;
+    return dyadic(R, ta, L, level + 1, 2.0 * index + 1.0, ag_a, slope);
+}
+
+/* the interval [R->t, tb], the record linear over it */
+static int advance(sx_run *R, double tb)
+{
+    const double ta = R->t, ag_a = ground(R, ta), slope = (ground(R, tb) - ag_a) / (tb - ta);
+    return dyadic(R, ta, tb - ta, 0, 0.0, ag_a, slope);
 }
 
 static void track(double *peak, double v)

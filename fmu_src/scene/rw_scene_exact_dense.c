@@ -100,6 +100,16 @@ void sx_matvec(int rows, int cols, const double *A, const double *x, double *y)
     }
 }
 
+void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2])
+{
+    const double a = A[0][0], d = A[1][1], b = 0.5 * (A[0][1] + A[1][0]);
+    const double theta = 0.5 * atan2(2.0 * b, a - d), c = cos(theta), s = sin(theta);
+    e[0][0] = c, e[0][1] = s;   /* the rotation that diagonalises [[a, b], [b, d]] */
+    e[1][0] = -s, e[1][1] = c;
+    mu[0] = a * c * c + 2.0 * b * c * s + d * s * s;
+    mu[1] = a * s * s - 2.0 * b * c * s + d * c * c;
+}
+
 double sx_sym2_min_eig(const double A[2][2])
 {
     const double a = A[0][0], d = A[1][1], b = 0.5 * (A[0][1] + A[1][0]);

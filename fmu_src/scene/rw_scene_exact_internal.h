@@ -7,6 +7,10 @@
 #ifndef RW_SCENE_EXACT_INTERNAL_H
 #define RW_SCENE_EXACT_INTERNAL_H
 
+#include <complex.h>
+#include <float.h>
+#include <math.h>
+
 #include "rw_scene_exact.h"
 
 #define SX_MAX_DOF (4 * RW_SCENE_MAX_STOREYS) /* per storey: a wall's q1, q2, the floor, the diaphragm */
@@ -17,8 +21,9 @@
 #define SX_LO 6          /* degree of the quiet test's polynomials */
 #define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
 #define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
-#define SX_STEPS 4       /* step lengths cached per region */
-#define SX_REGIONS 48    /* regions cached per run */
+#define SX_STEPS 8       /* step lengths cached per region */
+#define SX_FAST 3.0      /* a mode turning more than this (|lambda| h) over a step is a band there */
+#define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
 
 /* kinds of functionals */
@@ -36,12 +41,38 @@ typedef struct {
     int active;          /* outside the law's elastic range: the collapse test can fire */
     double A[2][2], c[2];
     double lam_min;      /* least eigenvalue of A's symmetric part */
+    double mu[2], e[2][2]; /* A's symmetric part = sum_k mu_k e_k e_k^T (G without the rounding of a
+                              stiff tie's large entries: q.A q = sum_k mu_k (e_k.q)^2) */
 } sx_collapse;
+
+/* A region's modes (the eigen-decomposition of A, LAPACK's dgeev), for the slow steps' quiet test:
+ * x = Vr y, y = Winv x; a mode is a real eigenvalue (coordinate y_j) or a complex pair lambda =
+ * sigma + i omega (zeta = y_j - i y_{j+1}), with zeta' = lambda zeta + g0 + g1 ag, and functional
+ * f's share of it Re(a[f] zeta). The motion stays exp(Aa h)'s: the modes only bound it. */
+typedef struct {
+    int valid;       /* decomposed, and well enough conditioned to bound with */
+    int count;
+    int first[SX_MAX_N], pair[SX_MAX_N];
+    double complex lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
+    double complex a[SX_MAX_F][SX_MAX_N];
+    double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
+    double lam_max;  /* the largest |lambda| */
+    double cond;     /* the product of Vr's and Winv's balanced norms */
+    double Winv[SX_MAX_N * SX_MAX_N];
+} sx_modes;
+
+/* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
+ * coefficients' and `tail`, its derivative's within theirs and `dtail`; `end`: its exact value at
+ * the step's end */
+typedef struct {
+    double coef[SX_LO + 1], tail, dtail, end;
+} sx_lopoly;
 
 /* the exact propagators of a region over one step length h */
 typedef struct {
     double h;
     long used;
+    int is_long;  /* longer than the series converges over: E, Wd and wg by squaring, no T or rows */
     int deg;      /* degree of the matrix series */
     double rho;   /* ||A_s|| h */
     double *E;    /* na x na: exp(Aa h) */
@@ -67,6 +98,7 @@ typedef struct {
     int nterms;                /* viscous dissipation rate = sum_t dcoef_t (dvec_t . xa)^2 */
     double dcoef[SX_MAX_TERMS], dvec[SX_MAX_TERMS][SX_MAX_NA];
     sx_collapse col[RW_SCENE_MAX_STOREYS];
+    sx_modes modes;
     sx_step step[SX_STEPS];
     double *blob;              /* every array above that is allocated */
 } sx_region;
@@ -110,6 +142,7 @@ int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
 void sx_matvec(int rows, int cols, const double *A, const double *x, double *y);
 double sx_sym2_min_eig(const double A[2][2]);
+void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
 
 /* ---- the region (rw_scene_exact_region.c) ---- */
 /* the key of the region the motion at x goes into; 0, or an error code */
@@ -123,8 +156,11 @@ void sx_gather(const sx_region *r, const double x[], double ag, double slope, do
 void sx_scatter(const sx_region *r, const double xa[], double x[]);
 
 /* ---- propagators (rw_scene_exact_series.c) ---- */
-/* the step table of length h (cached, built if missing): NULL if no memory */
-sx_step *sx_step_of(sx_region *r, double h, long stamp);
+/* the step table of length h (cached, built if missing; lengths within tol share one: the
+ * rounding of the record's times) */
+sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
+/* that rounding at time t */
+#define SX_TIME_TOL(t) (16.0 * DBL_EPSILON * fmax(fabs(t), 1.0))
 /* the Taylor series of the augmented state over a step of length L <= the region's limit */
 void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s);
 /* the longest step the series is built for */
@@ -144,7 +180,18 @@ double sx_poly_integral(const double *p, int deg, double b);
 void sx_poly_square(const double *p, int deg, double *sq);
 void sx_poly_product(const double *p, const double *q, int deg, double *pq);
 
+/* ---- modes and slow steps (rw_scene_exact_modes.c) ---- */
+void sx_modes_build(sx_region *r);
+/* each functional's polynomial over a step of length h from xa0 (the trend of the slow modes and the
+ * fast modes' quasi-static part, with the slow modes' remainder and the fast modes' free motion as
+ * the tail); 0 if the region has no usable modes */
+int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
+
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
+/* the quiet test on given polynomials of the functionals (xa1: the exact end state): 0 (quiet: the
+ * peaks taken from the ends), or why not */
+enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[]);
 /* the walls' indicator lines under the current modes (after every event) */
 void sx_watch_lines(sx_run *R);
 /* the quiet test of a step from its start state with its table: 1 when no indicator can change

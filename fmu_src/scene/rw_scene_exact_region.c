@@ -182,6 +182,14 @@ static void functional(sx_region *r, int kind, int storey)
     r->f_storey[k] = storey;
 }
 
+/* q1, q2 of each standing wall; each storey's diaphragm deformation and base acceleration */
+static int functional_count(const rw_scene *sc, const sx_key *key)
+{
+    int i, n = 0;
+    for (i = 0; i < sc->S.n_storeys; i++) n += 2 + (key->standing[i] ? 2 : 0);
+    return n;
+}
+
 static void functionals(const rw_scene *sc, sx_region *r)
 {
     const int nd = r->ndof, na = r->na;
@@ -256,15 +264,16 @@ static void collapse_forms(const rw_scene *sc, const sx_key *key, sx_region *r)
             for (q = 0; q < 2; q++) c->A[p][q] = d->K[p][q] - key->J[i][p][q];
         }
         c->lam_min = sx_sym2_min_eig((const double(*)[2])c->A);
+        sx_sym2_eig((const double(*)[2])c->A, c->mu, c->e);
         /* the laws' elastic range is the region where Q = J q (c = 0): no collapse there */
         c->active = fabs(c->c[0]) + fabs(c->c[1]) > 1e-9 * (d->cap_b + d->cap_m);
     }
 }
 
-/* one step table: E, Wd (na x na), T (n x na), wg (2 x na), rows (SX_MAX_F x (SX_LO+1) x na) */
+/* one step table: E, Wd (na x na), T (n x na), wg (2 x na), rows (nf x (SX_LO+1) x na) */
 static size_t step_doubles(const sx_region *r)
 {
-    return (size_t)(2 * r->na * r->na + r->n * r->na + 2 * r->na + SX_MAX_F * (SX_LO + 1) * r->na);
+    return (size_t)(2 * r->na * r->na + r->n * r->na + 2 * r->na + r->nf * (SX_LO + 1) * r->na);
 }
 
 static int allocate(sx_region *r)
@@ -294,6 +303,7 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
     if (!s) return RW_SCENE_NO_MEMORY;
     r->key = *key;
     layout(sc, key, r);
+    r->nf = functional_count(sc, key); /* the tables' size; functionals() fills them */
     if (allocate(r)) {
         free(s);
         return RW_SCENE_NO_MEMORY;
@@ -318,6 +328,7 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
     functionals(sc, r);
     energy_rows(sc, r);
     collapse_forms(sc, key, r);
+    sx_modes_build(r);
     return RW_SCENE_OK;
 }
 

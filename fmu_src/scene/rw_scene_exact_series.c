@@ -145,23 +145,94 @@ static void dissipation(const sx_region *r, sx_step *st)
     }
 }
 
-sx_step *sx_step_of(sx_region *r, double h, long stamp)
+/* C = A B (na x na) */
+static void matmul(int na, const double *A, const double *B, double *C)
 {
-    sx_step *st = NULL;
+    int i, j, l;
+    for (i = 0; i < na; i++)
+        for (j = 0; j < na; j++) {
+            double v = 0.0;
+            for (l = 0; l < na; l++) v += A[i * na + l] * B[l * na + j];
+            C[i * na + j] = v;
+        }
+}
+
+/* the table of 2h from that of h: E(2h) = E E, Wd(2h) = Wd + E^T Wd E, and the momentum's
+ * integrals w0(2h) = w0 + w0 E, w1(2h) = w1 + (w1 + h w0) E (the semigroup E(tau + h) = E(tau) E(h)) */
+static void doubled(const sx_region *r, sx_step *st)
+{
+    const int na = r->na;
+    double T1[SX_MAX_NA * SX_MAX_NA], T2[SX_MAX_NA * SX_MAX_NA], w[SX_MAX_NA];
+    int i, j;
+    matmul(na, st->Wd, st->E, T1);
+    for (i = 0; i < na; i++)
+        for (j = 0; j < na; j++) {
+            double v = 0.0;
+            int l;
+            for (l = 0; l < na; l++) v += st->E[l * na + i] * T1[l * na + j];
+            st->Wd[i * na + j] += v;
+        }
+    for (j = 0; j < na; j++) w[j] = st->wg[na + j] + st->h * st->wg[j];
+    for (j = 0; j < na; j++) {
+        double v0 = 0.0, v1 = 0.0;
+        for (i = 0; i < na; i++) v0 += st->wg[i] * st->E[i * na + j], v1 += w[i] * st->E[i * na + j];
+        T1[j] = v0, T2[j] = v1;
+    }
+    for (j = 0; j < na; j++) st->wg[j] += T1[j], st->wg[na + j] += T2[j];
+    matmul(na, st->E, st->E, T1);
+    memcpy(st->E, T1, sizeof(double) * (size_t)(na * na));
+    st->h *= 2.0;
+}
+
+static sx_step *cached(sx_region *r, double h, double tol)
+{
     int k;
     for (k = 0; k < SX_STEPS; k++)
-        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= 1e-12 * h) {
-            r->step[k].used = stamp;
-            return &r->step[k];
-        }
+        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= fmax(1e-12 * h, tol)) return &r->step[k];
+    return NULL;
+}
+
+/* a copy of the table of h/2 doubled (E, Wd, wg: what a long table holds) */
+static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
+{
+    const size_t nn = (size_t)(r->na * r->na);
+    memcpy(st->E, half->E, sizeof(double) * nn);
+    memcpy(st->Wd, half->Wd, sizeof(double) * nn);
+    memcpy(st->wg, half->wg, sizeof(double) * (size_t)(2 * r->na));
+    st->h = half->h;
+    st->rho = half->rho;
+    st->deg = half->deg;
+    st->is_long = 1;
+    doubled(r, st);
+}
+
+/* The table of length h: cached (a length within tol, the rounding of the record's times, is the
+ * same), or built. A step longer than the series converge over is the table of h/2 doubled (itself
+ * cached, so that the halves of a slow step find theirs ready). */
+sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
+{
+    sx_step *st = cached(r, h, tol), *half = NULL;
+    int k;
+    if (st) return (st->used = stamp), st;
+    if (r->norm * h > SX_RHO * (1.0 + 1e-12)) {
+        half = sx_step_of(r, 0.5 * h, 0.5 * tol, stamp);
+        half->used = stamp + 1; /* not the slot this one takes */
+    }
     for (k = 0; k < SX_STEPS; k++)
         if (!st || r->step[k].used < st->used) st = &r->step[k];
-    st->h = h;
+    if (half) {
+        half->used = stamp;
+        from_half(r, half, st);
+    } else {
+        st->h = h;
+        st->is_long = 0;
+        st->rho = r->norm * h;
+        st->deg = matrix_degree(st->rho);
+        exponential(r, st);
+        rows(r, st);
+        dissipation(r, st);
+    }
     st->used = stamp;
-    st->rho = r->norm * h;
-    st->deg = matrix_degree(st->rho);
-    exponential(r, st);
-    rows(r, st);
-    dissipation(r, st);
+    st->h = h;
     return st;
 }

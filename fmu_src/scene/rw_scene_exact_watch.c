@@ -72,15 +72,6 @@ static span square_span(span a)
     return s;
 }
 
-static span product_span(span a, span b)
-{
-    const double p[4] = {a.lo * b.lo, a.lo * b.hi, a.hi * b.lo, a.hi * b.hi};
-    span s = {p[0], p[0]};
-    int k;
-    for (k = 1; k < 4; k++) s.lo = fmin(s.lo, p[k]), s.hi = fmax(s.hi, p[k]);
-    return s;
-}
-
 static span scaled(span a, double c) { return c >= 0 ? (span){c * a.lo, c * a.hi} : (span){c * a.hi, c * a.lo}; }
 static span sum(span a, span b) { return (span){a.lo + b.lo, a.hi + b.hi}; }
 
@@ -90,24 +81,31 @@ static double collapse_tol(const sx_collapse *c, double q1, double q2)
                      fabs(c->c[0] * q1) + fabs(c->c[1] * q2)) + DBL_MIN;
 }
 
-/* G(q) = q.A q - c.q over the box of q: clear of zero, or beyond the radius where it cannot vanish */
-static int collapse_quiet(const sx_collapse *c, span q1, span q2, double q10, double q20)
+static span poly_span(const double *coef, double tail);
+static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
+
+/* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
+ * sum_k mu_k (e_k.q)^2 - c.q with each combination's own range (a stiff tie's entries of A are
+ * large and nearly cancel along the motion: the ranges of q1 and q2 alone would lose that) */
+static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lopoly *q2)
 {
-    span G;
+    const span s1 = poly_span(q1->coef, q1->tail), s2 = poly_span(q2->coef, q2->tail);
+    sx_lopoly p;
+    span G = {0.0, 0.0};
+    int k;
     if (!c->active) return 1;
     if (c->lam_min > 0.0) {
-        const double d1 = q1.lo > 0 ? q1.lo : (q1.hi < 0 ? -q1.hi : 0.0), d2 = q2.lo > 0 ? q2.lo : (q2.hi < 0 ? -q2.hi : 0.0);
+        const double d1 = s1.lo > 0 ? s1.lo : (s1.hi < 0 ? -s1.hi : 0.0), d2 = s2.lo > 0 ? s2.lo : (s2.hi < 0 ? -s2.hi : 0.0);
         if (sqrt(d1 * d1 + d2 * d2) * c->lam_min > 1.000001 * hypot(c->c[0], c->c[1])) return 1;
     }
-    G = sum(sum(scaled(square_span(q1), c->A[0][0]), scaled(product_span(q1, q2), c->A[0][1] + c->A[1][0])),
-            sum(scaled(square_span(q2), c->A[1][1]), sum(scaled(q1, -c->c[0]), scaled(q2, -c->c[1]))));
-    return clear_of_zero(G, collapse_tol(c, q10, q20));
+    for (k = 0; k < 2; k++) {
+        combine(&p, q1, c->e[k][0], q2, c->e[k][1]);
+        G = sum(G, scaled(square_span(poly_span(p.coef, p.tail)), c->mu[k]));
+    }
+    combine(&p, q1, -c->c[0], q2, -c->c[1]);
+    G = sum(G, poly_span(p.coef, p.tail));
+    return clear_of_zero(G, collapse_tol(c, q1->coef[0], q2->coef[0]));
 }
-
-/* a functional's polynomial on the step: value range, and whether it is monotone */
-typedef struct {
-    double coef[SX_LO + 1], tail, dtail, end;
-} lo_poly;
 
 static span poly_span(const double *coef, double tail)
 {
@@ -132,14 +130,14 @@ static int monotone(const double *coef, double dtail)
 }
 
 /* a peak quantity (a combination of functionals) can rise over its peak inside the step */
-static int peak_may_rise(const lo_poly *P, double peak)
+static int peak_may_rise(const sx_lopoly *P, double peak)
 {
     const span s = poly_span(P->coef, P->tail);
     if (fmax(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
     return !monotone(P->coef, P->dtail);
 }
 
-static void combine(lo_poly *out, const lo_poly *a, double ca, const lo_poly *b, double cb)
+static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb)
 {
     int k;
     for (k = 0; k <= SX_LO; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
@@ -150,7 +148,7 @@ static void combine(lo_poly *out, const lo_poly *a, double ca, const lo_poly *b,
 
 /* the peak quantities of storey i from its functionals; a slot is NULL when the storey has none */
 typedef struct {
-    lo_poly q1, q2, s1, s2, deform, acc;
+    sx_lopoly q1, q2, s1, s2, deform, acc;
     int wall;
 } storey_polys;
 
@@ -164,8 +162,8 @@ static void peaks_of_ends(rw_scene_result *res, int i, const storey_polys *P)
     res->peak_base_acc[i] = fmax(res->peak_base_acc[i], fmax(fabs(P->acc.coef[0]), fabs(P->acc.end)));
 }
 
-static void low_polys(const sx_region *r, const sx_step *st, const double xa0[], const double xa1[],
-                      storey_polys P[RW_SCENE_MAX_STOREYS])
+/* each functional's polynomial over a step from its table (rows and tail), with the exact end */
+static void low_polys(const sx_region *r, const sx_step *st, const double xa0[], sx_lopoly P[SX_MAX_F])
 {
     double Xt[SX_MAX_N], tn = 0.0;
     const double q = st->rho / (SX_LO + 2);
@@ -173,8 +171,7 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
     sx_matvec(r->n, r->na, st->T, xa0, Xt);
     for (k = 0; k < r->n; k++) tn = fmax(tn, fabs(Xt[k]) / r->scale[k]);
     for (f = 0; f < r->nf; f++) {
-        storey_polys *S = &P[r->f_storey[f]];
-        lo_poly *p = r->f_kind[f] == SX_Q1 ? &S->q1 : r->f_kind[f] == SX_Q2 ? &S->q2 : r->f_kind[f] == SX_DEFORM ? &S->deform : &S->acc;
+        sx_lopoly *p = &P[f];
         const double *row = st->rows + (size_t)f * (size_t)((SX_LO + 1) * r->na);
         for (k = 0; k <= SX_LO; k++) {
             double v = 0.0;
@@ -184,45 +181,66 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
         }
         p->tail = r->f_scale[f] * tn / (1.0 - q);
         p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
-        p->end = 0.0;
-        for (k = 0; k < r->na; k++) p->end += r->F[f][k] * xa1[k];
-        if (r->f_kind[f] == SX_Q1) S->wall = 1;
+    }
+}
+
+/* the storeys' polynomials from the functionals', with their exact ends */
+static void storey_view(const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[], storey_polys S[RW_SCENE_MAX_STOREYS])
+{
+    int f, k;
+    for (f = 0; f < r->nf; f++) {
+        storey_polys *s = &S[r->f_storey[f]];
+        P[f].end = 0.0;
+        for (k = 0; k < r->na; k++) P[f].end += r->F[f][k] * xa1[k];
+        switch (r->f_kind[f]) {
+        case SX_Q1: s->q1 = P[f], s->wall = 1; break;
+        case SX_Q2: s->q2 = P[f]; break;
+        case SX_DEFORM: s->deform = P[f]; break;
+        default: s->acc = P[f]; break;
+        }
     }
 }
 
 static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_polys *P)
 {
-    const span q1 = poly_span(P->q1.coef, P->q1.tail), q2 = poly_span(P->q2.coef, P->q2.tail);
     int k;
     for (k = 0; k < R->nlines[i]; k++) {
         const sx_line *L = &R->lines[i][k];
-        lo_poly w;
+        sx_lopoly w;
         combine(&w, &P->q1, L->a0, &P->q2, L->a1);
         if (!clear_of_zero(line_span(L, poly_span(w.coef, w.tail)), line_tol(L, P->q1.coef[0], P->q2.coef[0])))
             return 0;
     }
-    return collapse_quiet(&r->col[i], q1, q2, P->q1.coef[0], P->q2.coef[0]);
+    return collapse_quiet(&r->col[i], &P->q1, &P->q2);
+}
+
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[])
+{
+    storey_polys S[RW_SCENE_MAX_STOREYS];
+    rw_scene_result *res = R->res;
+    int i, why = 0;
+    memset(S, 0, sizeof S);
+    storey_view(r, P, xa1, S);
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        storey_polys *s = &S[i];
+        const double h2 = 0.5 * R->sc.S.wall[i].h;
+        if (s->wall) {
+            combine(&s->s1, &s->q1, h2, NULL, 0.0);
+            combine(&s->s2, &s->q1, h2, &s->q2, h2);
+            if (!wall_quiet(R, r, i, s)) return SX_MAY_CROSS;
+            if (peak_may_rise(&s->s1, res->peak_s1[i]) || peak_may_rise(&s->s2, res->peak_s2[i])) why = SX_MAY_PEAK;
+        }
+        if (peak_may_rise(&s->deform, res->peak_diaphragm[i]) || peak_may_rise(&s->acc, res->peak_base_acc[i]))
+            why = SX_MAY_PEAK;
+    }
+    if (why) return why;
+    for (i = 0; i < R->sc.S.n_storeys; i++) peaks_of_ends(res, i, &S[i]);
+    return 0;
 }
 
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[])
 {
-    storey_polys P[RW_SCENE_MAX_STOREYS];
-    rw_scene_result *res = R->res;
-    int i;
-    memset(P, 0, sizeof P);
-    low_polys(r, st, xa0, xa1, P);
-    for (i = 0; i < R->sc.S.n_storeys; i++) {
-        storey_polys *S = &P[i];
-        const double h2 = 0.5 * R->sc.S.wall[i].h;
-        if (S->wall) {
-            combine(&S->s1, &S->q1, h2, NULL, 0.0);
-            combine(&S->s2, &S->q1, h2, &S->q2, h2);
-            if (!wall_quiet(R, r, i, S) || peak_may_rise(&S->s1, res->peak_s1[i]) ||
-                peak_may_rise(&S->s2, res->peak_s2[i]))
-                return 0;
-        }
-        if (peak_may_rise(&S->deform, res->peak_diaphragm[i]) || peak_may_rise(&S->acc, res->peak_base_acc[i])) return 0;
-    }
-    for (i = 0; i < R->sc.S.n_storeys; i++) peaks_of_ends(res, i, &P[i]);
-    return 1;
+    sx_lopoly P[SX_MAX_F];
+    low_polys(r, st, xa0, P);
+    return sx_watch_quiet_polys(R, r, P, xa1) == 0;
 }
