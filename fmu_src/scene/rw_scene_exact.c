@@ -48,6 +48,16 @@ static double ground(sx_run *R, double t)
 
 static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
 
+static double energy(sx_run *R, double t);
+
+/* the region's energy constant from the scene's own energy at the state it is entered at */
+static int entered(sx_run *R)
+{
+    sx_region *r = current(R);
+    r->e_const = energy(R, R->t) - sx_region_energy(r, R->x);
+    return RW_SCENE_OK;
+}
+
 /* the region the motion at R->t goes into: kept, found among the cached ones, or built */
 static int enter_region(sx_run *R)
 {
@@ -55,12 +65,12 @@ static int enter_region(sx_run *R)
     int k, slot = -1;
     sx_region_key(&R->sc, ground(R, R->t), R->x, &key);
     R->stamp++;
-    if (R->cur >= 0 && sx_key_equal(&key, &current(R)->key)) return (current(R)->used = R->stamp), RW_SCENE_OK;
+    if (R->cur >= 0 && sx_key_equal(&key, &current(R)->key)) return (current(R)->used = R->stamp), entered(R);
     for (k = 0; k < R->nregions; k++)
         if (sx_key_equal(&key, &R->regions[k].key)) {
             R->cur = k;
             R->regions[k].used = R->stamp;
-            return RW_SCENE_OK;
+            return entered(R);
         }
     if (R->nregions < SX_REGIONS) slot = R->nregions++;
     else
@@ -72,7 +82,7 @@ static int enter_region(sx_run *R)
     if (k == RW_SCENE_SOLVER) snprintf(R->res->message, sizeof R->res->message, "singular mass matrix at t = %.9g s", R->t);
     if (k == RW_SCENE_NO_MEMORY) snprintf(R->res->message, sizeof R->res->message, "out of memory");
     if (k) R->regions[slot].key.standing[0] = -1; /* never matches */
-    return k;
+    return k ? k : entered(R);
 }
 
 static double energy(sx_run *R, double t) { return rw_scene_energy(&R->sc, ground(R, t), R->x); }
@@ -245,11 +255,13 @@ static void track(double *peak, double v)
     if (fabs(v) > *peak) *peak = fabs(v);
 }
 
-/* the output row due at t and the energy balance */
+/* the output row due at t and the energy balance (the energy from the region's quadratic form) */
 static void observe(sx_run *R, double t)
 {
     rw_scene_result *res = R->res;
-    const double residual = energy(R, t) - res->energy_start - R->work_ground + R->work_damping + R->losses;
+    const sx_region *r = current(R);
+    const double e = sx_region_energy(r, R->x) + r->e_const;
+    const double residual = e - res->energy_start - R->work_ground + R->work_damping + R->losses;
     track(&res->max_residual, residual);
     track(&res->max_work, R->work_ground);
     if (R->next_out < R->opt->n_out && t >= R->opt->t_out[R->next_out]) {

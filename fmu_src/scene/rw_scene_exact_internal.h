@@ -62,10 +62,9 @@ typedef struct {
 } sx_modes;
 
 /* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
- * coefficients' and `tail`, its derivative's within theirs and `dtail`; `end`: its exact value at
- * the step's end */
+ * coefficients' and `tail`, its derivative's within theirs and `dtail` */
 typedef struct {
-    double coef[SX_LO + 1], tail, dtail, end;
+    double coef[SX_LO + 1], tail, dtail;
 } sx_lopoly;
 
 /* the exact propagators of a region over one step length h */
@@ -95,6 +94,9 @@ typedef struct {
     int f_kind[SX_MAX_F], f_storey[SX_MAX_F];
     double f_scale[SX_MAX_F];  /* sum_i |l_i| S_i over x: a functional's share of a tail in the S norm */
     double mom[SX_MAX_NA];     /* the horizontal momentum relative to the ground, a row over xa */
+    /* the scene's energy on the region, (1/2) V.M V + (1/2) X.K X - f.X + e_const (M, K: its
+     * Hessians; e_const: from rw_scene_energy at a state of the region) */
+    double Mq[SX_MAX_DOF * SX_MAX_DOF], Kq[SX_MAX_DOF * SX_MAX_DOF], fq[SX_MAX_DOF], e_const;
     int nterms;                /* viscous dissipation rate = sum_t dcoef_t (dvec_t . xa)^2 */
     double dcoef[SX_MAX_TERMS], dvec[SX_MAX_TERMS][SX_MAX_NA];
     sx_collapse col[RW_SCENE_MAX_STOREYS];
@@ -154,6 +156,8 @@ void sx_region_free(sx_region *r);
 /* the scene state's (x, ag, slope) as the region's augmented state, and back */
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[]);
 void sx_scatter(const sx_region *r, const double xa[], double x[]);
+/* the region's quadratic energy at the scene state x, without e_const */
+double sx_region_energy(const sx_region *r, const double x[]);
 
 /* ---- propagators (rw_scene_exact_series.c) ---- */
 /* the step table of length h (cached, built if missing; lengths within tol share one: the

@@ -315,6 +315,9 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
         for (i = 0; i < sc->S.n_storeys; i++)
             if (key->standing[i]) wall(sc, r, key, i, s);
     }
+    memcpy(r->Mq, s->M, sizeof r->Mq);
+    memcpy(r->Kq, s->K, sizeof r->Kq);
+    memcpy(r->fq, s->f, sizeof r->fq);
     fail = augmented(s, r);
     free(s);
     if (fail) return RW_SCENE_SOLVER;
@@ -349,6 +352,20 @@ void sx_gather(const sx_region *r, const double x[], double ag, double slope, do
     xa[r->n] = ag;
     xa[r->n + 1] = slope;
     xa[r->n + 2] = 1.0;
+}
+
+double sx_region_energy(const sx_region *r, const double x[])
+{
+    const int nd = r->ndof;
+    double X[SX_MAX_DOF], V[SX_MAX_DOF], e = 0.0;
+    int i, j;
+    for (i = 0; i < nd; i++) X[i] = x[r->pos[i]], V[i] = x[r->vel[i]];
+    for (i = 0; i < nd; i++) {
+        double mv = 0.0, kx = 0.0;
+        for (j = 0; j < nd; j++) mv += r->Mq[i * nd + j] * V[j], kx += r->Kq[i * nd + j] * X[j];
+        e += 0.5 * (V[i] * mv + X[i] * kx) - r->fq[i] * X[i];
+    }
+    return e;
 }
 
 void sx_scatter(const sx_region *r, const double xa[], double x[])

@@ -143,7 +143,6 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
     for (k = 0; k <= SX_LO; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
     out->tail = fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
     out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
-    out->end = ca * a->end + (b ? cb * b->end : 0.0);
 }
 
 /* the peak quantities of storey i from its functionals; a slot is NULL when the storey has none */
@@ -152,17 +151,35 @@ typedef struct {
     int wall;
 } storey_polys;
 
-static void peaks_of_ends(rw_scene_result *res, int i, const storey_polys *P)
+/* the peaks at a cleared step's ends: its start (coef[0]) and its exact end (xa1) */
+static void peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
 {
-    if (P->wall) {
-        res->peak_s1[i] = fmax(res->peak_s1[i], fmax(fabs(P->s1.coef[0]), fabs(P->s1.end)));
-        res->peak_s2[i] = fmax(res->peak_s2[i], fmax(fabs(P->s2.coef[0]), fabs(P->s2.end)));
+    rw_scene_result *res = R->res;
+    double q1[2] = {0.0, 0.0}, q2[2] = {0.0, 0.0};
+    int f, k;
+    for (f = 0; f < r->nf; f++) {
+        const int i = r->f_storey[f];
+        double end = 0.0, *peak;
+        for (k = 0; k < r->na; k++) end += r->F[f][k] * xa1[k];
+        switch (r->f_kind[f]) {
+        case SX_Q1: q1[0] = P[f].coef[0], q1[1] = end; continue;
+        case SX_Q2: { /* q1 comes first: the wall's peaks */
+            const double h2 = 0.5 * R->sc.S.wall[i].h;
+            q2[0] = P[f].coef[0], q2[1] = end;
+            for (k = 0; k < 2; k++) {
+                res->peak_s1[i] = fmax(res->peak_s1[i], fabs(h2 * q1[k]));
+                res->peak_s2[i] = fmax(res->peak_s2[i], fabs(h2 * (q1[k] + q2[k])));
+            }
+            continue;
+        }
+        case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
+        default: peak = &res->peak_base_acc[i]; break;
+        }
+        *peak = fmax(*peak, fmax(fabs(P[f].coef[0]), fabs(end)));
     }
-    res->peak_diaphragm[i] = fmax(res->peak_diaphragm[i], fmax(fabs(P->deform.coef[0]), fabs(P->deform.end)));
-    res->peak_base_acc[i] = fmax(res->peak_base_acc[i], fmax(fabs(P->acc.coef[0]), fabs(P->acc.end)));
 }
 
-/* each functional's polynomial over a step from its table (rows and tail), with the exact end */
+/* each functional's polynomial over a step from its table (rows and tail) */
 static void low_polys(const sx_region *r, const sx_step *st, const double xa0[], sx_lopoly P[SX_MAX_F])
 {
     double Xt[SX_MAX_N], tn = 0.0;
@@ -184,14 +201,12 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
     }
 }
 
-/* the storeys' polynomials from the functionals', with their exact ends */
-static void storey_view(const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[], storey_polys S[RW_SCENE_MAX_STOREYS])
+/* the storeys' polynomials from the functionals' */
+static void storey_view(const sx_region *r, const sx_lopoly P[SX_MAX_F], storey_polys S[RW_SCENE_MAX_STOREYS])
 {
-    int f, k;
+    int f;
     for (f = 0; f < r->nf; f++) {
         storey_polys *s = &S[r->f_storey[f]];
-        P[f].end = 0.0;
-        for (k = 0; k < r->na; k++) P[f].end += r->F[f][k] * xa1[k];
         switch (r->f_kind[f]) {
         case SX_Q1: s->q1 = P[f], s->wall = 1; break;
         case SX_Q2: s->q2 = P[f]; break;
@@ -219,8 +234,8 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], c
     storey_polys S[RW_SCENE_MAX_STOREYS];
     rw_scene_result *res = R->res;
     int i, why = 0;
-    memset(S, 0, sizeof S);
-    storey_view(r, P, xa1, S);
+    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].wall = 0;
+    storey_view(r, P, S);
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         storey_polys *s = &S[i];
         const double h2 = 0.5 * R->sc.S.wall[i].h;
@@ -234,7 +249,7 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], c
             why = SX_MAY_PEAK;
     }
     if (why) return why;
-    for (i = 0; i < R->sc.S.n_storeys; i++) peaks_of_ends(res, i, &S[i]);
+    peaks_at_ends(R, r, P, xa1);
     return 0;
 }
 
