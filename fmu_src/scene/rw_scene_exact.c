@@ -236,9 +236,9 @@ static int dyadic(sx_run *R, double ta, double L, int level, double index, doubl
     const double h = ldexp(L, -level), t1 = index + 1.0 >= ldexp(1.0, level) ? ta + L : ta + (index + 1.0) * h;
     const sx_region *r = current(R);
     if (R->t >= t1) return 0;
-    if (R->t > ta + index * h || h <= 2.0 * sx_hmax(r) || !r->modes.valid || level >= 30)
-        return exact_steps(R, t1, ta, ag_a, slope);
+    if (R->t > ta + index * h || !r->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope);
     if (slow_step(R, t1, ta, ag_a, slope) == 0) return 0;
+    if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope);
     if (dyadic(R, ta, L, level + 1, 2.0 * index, ag_a, slope)) return 1;
     return dyadic(R, ta, L, level + 1, 2.0 * index + 1.0, ag_a, slope);
 }

@@ -157,7 +157,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
     const sx_modes *m = &r->modes;
     const double ag0 = xa0[r->n], slope = xa0[r->n + 1];
     double y[SX_MAX_N], size[SX_MAX_F];
-    int f, k;
+    int f, k, j;
     if (!m->valid) return 0;
     sx_matvec(r->n, r->n, m->Winv, xa0, y);
     for (f = 0; f < r->nf; f++) { /* the functionals' own terms in ag and the constant */
@@ -169,15 +169,15 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
     for (k = 0; k < m->count; k++) {
         const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
         const mode_step s = mode_over(m, k, z0, ag0, slope, h);
-        for (f = 0; f < r->nf; f++) {
-            const double complex a = m->a[f][k];
-            const double abs_a = m->abs_a[f][k];
-            int j;
-            if (abs_a == 0.0) continue;
-            for (j = 0; j < 3; j++) P[f].coef[j] += creal(a * s.c[j]);
+        const double cr[3] = {creal(s.c[0]), creal(s.c[1]), creal(s.c[2])};
+        const double ci[3] = {cimag(s.c[0]), cimag(s.c[1]), cimag(s.c[2])};
+        const double mode_size = mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound;
+        for (f = 0; f < r->nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
+            const double ar = creal(m->a[f][k]), ai = cimag(m->a[f][k]), abs_a = m->abs_a[f][k];
+            for (j = 0; j < 3; j++) P[f].coef[j] += ar * cr[j] - ai * ci[j];
             P[f].tail += abs_a * s.bound;
             P[f].dtail += abs_a * s.dbound;
-            size[f] += abs_a * (mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound);
+            size[f] += abs_a * mode_size;
         }
     }
     for (f = 0; f < r->nf; f++) {

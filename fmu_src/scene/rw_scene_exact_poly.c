@@ -31,12 +31,14 @@ static void restrict_to(const double *p, int deg, double a, double w, double *q)
     double s = 1.0;
     int i, k;
     memcpy(q, p, sizeof(double) * (size_t)(deg + 1));
-    for (i = 0; i < deg; i++)
-        for (k = deg - 1; k >= i; k--) q[k] += a * q[k + 1];
-    for (k = 1; k <= deg; k++) {
-        s *= w;
-        q[k] *= s;
-    }
+    if (a != 0.0)
+        for (i = 0; i < deg; i++)
+            for (k = deg - 1; k >= i; k--) q[k] += a * q[k + 1];
+    if (w != 1.0)
+        for (k = 1; k <= deg; k++) {
+            s *= w;
+            q[k] *= s;
+        }
 }
 
 /* bounds of q over [0, 1] and of q' over [0, 1] */
