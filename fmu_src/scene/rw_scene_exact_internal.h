@@ -53,7 +53,7 @@ typedef struct {
     int valid;       /* decomposed, and well enough conditioned to bound with */
     int count;
     int first[SX_MAX_N], pair[SX_MAX_N];
-    double complex lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
+    double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
     double complex a[SX_MAX_F][SX_MAX_N];
     double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
     double lam_max;  /* the largest |lambda| */
@@ -65,6 +65,7 @@ typedef struct {
  * coefficients' and `tail`, its derivative's within theirs and `dtail` */
 typedef struct {
     double coef[SX_LO + 1], tail, dtail;
+    int deg; /* the coefficients in use (the modes' polynomials are quadratics) */
 } sx_lopoly;
 
 /* the exact propagators of a region over one step length h */

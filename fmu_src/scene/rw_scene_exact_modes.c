@@ -103,6 +103,7 @@ void sx_modes_build(sx_region *r)
         m->first[k] = i;
         m->pair[k] = wi[i] != 0.0;
         m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
+        m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
         m->lam_max = fmax(m->lam_max, hypot(wr[i], wi[i]));
         if (m->pair[k]) i++;
     }
@@ -139,11 +140,11 @@ static mode_step mode_over(const sx_modes *m, int k, double complex z0, double a
     s.bound = r3 / 6.0;
     s.dbound = r3 / 2.0;
     if (wh > 0.5) {
-        const double complex qs = -b0 / lam - b1 / (lam * lam);
+        const double complex il = m->inv_lam[k], qs = -(b0 + b1 * il) * il;
         const double band = mag(z0 - qs) * grow;
         if (band < s.bound) {
             s.c[0] = qs;
-            s.c[1] = -b1 / lam * h;
+            s.c[1] = -b1 * il * h;
             s.c[2] = 0.0;
             s.bound = band;
             s.dbound = band * wh;
@@ -164,6 +165,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
         memset(&P[f], 0, sizeof P[f]);
         P[f].coef[0] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
         P[f].coef[1] = r->F[f][r->n] * slope * h;
+        P[f].deg = 2;
         size[f] = fabs(P[f].coef[0]) + fabs(P[f].coef[1]);
     }
     for (k = 0; k < m->count; k++) {

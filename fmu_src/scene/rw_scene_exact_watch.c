@@ -81,7 +81,7 @@ static double collapse_tol(const sx_collapse *c, double q1, double q2)
                      fabs(c->c[0] * q1) + fabs(c->c[1] * q2)) + DBL_MIN;
 }
 
-static span poly_span(const double *coef, double tail);
+static span poly_span(const sx_lopoly *p);
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
 
 /* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
@@ -89,7 +89,7 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
  * large and nearly cancel along the motion: the ranges of q1 and q2 alone would lose that) */
 static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lopoly *q2)
 {
-    const span s1 = poly_span(q1->coef, q1->tail), s2 = poly_span(q2->coef, q2->tail);
+    const span s1 = poly_span(q1), s2 = poly_span(q2);
     sx_lopoly p;
     span G = {0.0, 0.0};
     int k;
@@ -100,31 +100,31 @@ static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lo
     }
     for (k = 0; k < 2; k++) {
         combine(&p, q1, c->e[k][0], q2, c->e[k][1]);
-        G = sum(G, scaled(square_span(poly_span(p.coef, p.tail)), c->mu[k]));
+        G = sum(G, scaled(square_span(poly_span(&p)), c->mu[k]));
     }
     combine(&p, q1, -c->c[0], q2, -c->c[1]);
-    G = sum(G, poly_span(p.coef, p.tail));
+    G = sum(G, poly_span(&p));
     return clear_of_zero(G, collapse_tol(c, q1->coef[0], q2->coef[0]));
 }
 
-static span poly_span(const double *coef, double tail)
+static span poly_span(const sx_lopoly *p)
 {
-    span s = {coef[0] - tail, coef[0] + tail};
+    span s = {p->coef[0] - p->tail, p->coef[0] + p->tail};
     int k;
-    for (k = 1; k <= SX_LO; k++) {
-        if (coef[k] < 0.0) s.lo += coef[k];
-        else s.hi += coef[k];
+    for (k = 1; k <= p->deg; k++) {
+        if (p->coef[k] < 0.0) s.lo += p->coef[k];
+        else s.hi += p->coef[k];
     }
     return s;
 }
 
-static int monotone(const double *coef, double dtail)
+static int monotone(const sx_lopoly *p)
 {
-    span d = {coef[1] - dtail, coef[1] + dtail};
+    span d = {p->coef[1] - p->dtail, p->coef[1] + p->dtail};
     int k;
-    for (k = 2; k <= SX_LO; k++) {
-        if (coef[k] < 0.0) d.lo += k * coef[k];
-        else d.hi += k * coef[k];
+    for (k = 2; k <= p->deg; k++) {
+        if (p->coef[k] < 0.0) d.lo += k * p->coef[k];
+        else d.hi += k * p->coef[k];
     }
     return d.lo > 0.0 || d.hi < 0.0;
 }
@@ -132,15 +132,16 @@ static int monotone(const double *coef, double dtail)
 /* a peak quantity (a combination of functionals) can rise over its peak inside the step */
 static int peak_may_rise(const sx_lopoly *P, double peak)
 {
-    const span s = poly_span(P->coef, P->tail);
+    const span s = poly_span(P);
     if (fmax(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
-    return !monotone(P->coef, P->dtail);
+    return !monotone(P);
 }
 
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb)
 {
     int k;
-    for (k = 0; k <= SX_LO; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
+    out->deg = b && b->deg > a->deg ? b->deg : a->deg;
+    for (k = 0; k <= out->deg; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
     out->tail = fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
     out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
 }
@@ -198,6 +199,7 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
         }
         p->tail = r->f_scale[f] * tn / (1.0 - q);
         p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
+        p->deg = SX_LO;
     }
 }
 
@@ -223,7 +225,7 @@ static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_p
         const sx_line *L = &R->lines[i][k];
         sx_lopoly w;
         combine(&w, &P->q1, L->a0, &P->q2, L->a1);
-        if (!clear_of_zero(line_span(L, poly_span(w.coef, w.tail)), line_tol(L, P->q1.coef[0], P->q2.coef[0])))
+        if (!clear_of_zero(line_span(L, poly_span(&w)), line_tol(L, P->q1.coef[0], P->q2.coef[0])))
             return 0;
     }
     return collapse_quiet(&r->col[i], &P->q1, &P->q2);
