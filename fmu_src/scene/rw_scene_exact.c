@@ -1,7 +1,7 @@
-/* The exact scene engine's run (rw_scene_exact.h): the record's intervals (and the output times)
- * in substeps of the current region, each cleared by the quiet test on its step table or examined
- * on its exact series; at each root the scene's own event update (rw_scene_event_update, the walls'
- * event rules and collapse), then the region the motion goes into. */
+/* The exact scene engine's run (rw_scene_exact.h): what it covers, the record's intervals (and the
+ * output times) one after the other (rw_scene_exact_steps.c takes each), the scene's own event
+ * update at each root (rw_scene_event_update: the walls' event rules and collapse) and the region
+ * the motion goes into, the energy balance and the result. */
 #include "rw_scene_exact_internal.h"
 
 #include <math.h>
@@ -34,7 +34,7 @@ int rw_scene_exact_covers(const rw_scene_spec *spec, char *msg, size_t n)
 }
 
 /* the record at t: linear between samples, the ends held */
-static double ground(sx_run *R, double t)
+double sx_ground(sx_run *R, double t)
 {
     const rw_scene_record *rec = R->rec;
     size_t k = R->hint;
@@ -63,7 +63,7 @@ static int enter_region(sx_run *R)
 {
     sx_key key;
     int k, slot = -1;
-    sx_region_key(&R->sc, ground(R, R->t), R->x, &key);
+    sx_region_key(&R->sc, sx_ground(R, R->t), R->x, &key);
     R->stamp++;
     if (R->cur >= 0 && sx_key_equal(&key, &current(R)->key)) return (current(R)->used = R->stamp), entered(R);
     for (k = 0; k < R->nregions; k++)
@@ -85,12 +85,12 @@ static int enter_region(sx_run *R)
     return k ? k : entered(R);
 }
 
-static double energy(sx_run *R, double t) { return rw_scene_energy(&R->sc, ground(R, t), R->x); }
+static double energy(sx_run *R, double t) { return rw_scene_energy(&R->sc, sx_ground(R, t), R->x); }
 
 /* the walls' event rules at t until nothing changes, then the new indicator lines and region */
-static int handle_events(sx_run *R)
+int sx_handle_events(sx_run *R)
 {
-    const double ag = ground(R, R->t);
+    const double ag = sx_ground(R, R->t);
     int rounds = 0, flags;
     if (R->t == R->last_event_t && ++R->same_instant > MAX_EVENTS_PER_INSTANT) {
         snprintf(R->res->message, sizeof R->res->message, "more than %d events at t = %.9g s", MAX_EVENTS_PER_INSTANT, R->t);
@@ -113,143 +113,6 @@ static int handle_events(sx_run *R)
     return enter_region(R);
 }
 
-/* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
- * at an event (handled here) */
-static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slope)
-{
-    while (R->t < t1) {
-        sx_region *r = current(R);
-        const int parts = (int)ceil((t1 - R->t) / sx_hmax(r) * (1.0 - 1e-12));
-        const double L = (t1 - R->t) / (parts > 1 ? parts : 1);
-        double xa[SX_MAX_NA], wg, wd, u;
-        sx_series s;
-        int k;
-        sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa);
-        sx_series_of(r, xa, L, &s);
-        u = sx_watch_step(R, r, &s);
-        sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
-        R->work_ground += wg;
-        R->work_damping += wd;
-        for (k = 0; k < r->na; k++) xa[k] = 0.0;
-        for (k = 0; k < r->n; k++) {
-            double v = 0.0;
-            int j;
-            for (j = s.deg; j >= 0; j--) v = v * fmin(u, 1.0) + s.X[(size_t)j * (size_t)r->na + (size_t)k];
-            xa[k] = v;
-        }
-        sx_scatter(r, xa, R->x);
-        R->res->steps++;
-        if (u > 1.0) {
-            R->t = parts > 1 ? R->t + L : t1;
-            continue;
-        }
-        R->t = (u == 1.0 && parts <= 1) ? t1 : R->t + u * L;
-        R->error = handle_events(R);
-        return R->error ? -1 : 1;
-    }
-    return 0;
-}
-
-/* one step of the grid on its table: 1 if the quiet test cleared it (then taken), 0 if not */
-static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
-{
-    sx_region *r = current(R);
-    const int na = r->na;
-    double xa0[SX_MAX_NA], xa1[SX_MAX_NA], Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
-    sx_step *st;
-    int k;
-    if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
-    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
-    if (st->is_long) return 0; /* a length at the limit, doubled: no polynomial rows */
-    sx_gather(r, R->x, ag0, slope, xa0);
-    sx_matvec(na, na, st->E, xa0, xa1);
-    if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
-    sx_matvec(na, na, st->Wd, xa0, Wx);
-    for (k = 0; k < na; k++) {
-        wd += xa0[k] * Wx[k];
-        m0 += st->wg[k] * xa0[k];
-        m1 += st->wg[na + k] * xa0[k];
-    }
-    R->work_ground -= ag0 * m0 + slope * m1;
-    R->work_damping += wd;
-    sx_scatter(r, xa1, R->x);
-    R->t = t1;
-    R->res->steps++;
-    return 1;
-}
-
-/* [R->t, t1] in the grid of equal steps no longer than the region allows (the steps the exact
- * series converge over): each cleared by the quiet test on its table, or examined on its series
- * (after an event the series takes the motion to the next grid point) */
-static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slope)
-{
-    const double t0 = R->t;
-    const int n = (int)ceil((t1 - t0) / sx_hmax(current(R)) * (1.0 - 1e-12));
-    const int steps = n > 1 ? n : 1;
-    const double h = (t1 - t0) / steps;
-    int k = 0;
-    while (R->t < t1) {
-        const double end = k + 1 >= steps ? t1 : t0 + (k + 1) * h;
-        if (R->t == (k == 0 ? t0 : t0 + k * h) && quiet_step(R, h, end, ag_a + slope * (R->t - ta), slope)) {
-            k++;
-            continue;
-        }
-        if (exact_piece(R, end, ta, ag_a, slope) < 0) return 1;
-        if (R->t >= end) k++;
-    }
-    return 0;
-}
-
-/* a slow step [R->t, t1] cleared by the modes' quiet test on its (long) table: 0 if taken, else
- * why not (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes) */
-static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
-{
-    sx_region *r = current(R);
-    const double h = t1 - R->t;
-    double xa0[SX_MAX_NA], xa1[SX_MAX_NA], Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
-    sx_lopoly P[SX_MAX_F];
-    sx_step *st;
-    int k, why;
-    sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
-    if (!sx_modes_polys(r, h, xa0, P)) return -1;
-    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
-    sx_matvec(r->na, r->na, st->E, xa0, xa1);
-    if ((why = sx_watch_quiet_polys(R, r, P, xa1)) != 0) return why;
-    sx_matvec(r->na, r->na, st->Wd, xa0, Wx);
-    for (k = 0; k < r->na; k++) {
-        wd += xa0[k] * Wx[k];
-        m0 += st->wg[k] * xa0[k];
-        m1 += st->wg[r->na + k] * xa0[k];
-    }
-    R->work_ground -= xa0[r->n] * m0 + slope * m1;
-    R->work_damping += wd;
-    sx_scatter(r, xa1, R->x);
-    R->t = t1;
-    R->res->steps++;
-    return 0;
-}
-
-/* The dyadic piece `index` of `level` of the interval [ta, ta + L]: one slow step if the modes'
- * test clears it, else its two halves, down to the exact steps (docs/scenes.md) */
-static int dyadic(sx_run *R, double ta, double L, int level, double index, double ag_a, double slope)
-{
-    const double h = ldexp(L, -level), t1 = index + 1.0 >= ldexp(1.0, level) ? ta + L : ta + (index + 1.0) * h;
-    const sx_region *r = current(R);
-    if (R->t >= t1) return 0;
-    if (R->t > ta + index * h || !r->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope);
-    if (slow_step(R, t1, ta, ag_a, slope) == 0) return 0;
-    if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope);
-    if (dyadic(R, ta, L, level + 1, 2.0 * index, ag_a, slope)) return 1;
-    return dyadic(R, ta, L, level + 1, 2.0 * index + 1.0, ag_a, slope);
-}
-
-/* the interval [R->t, tb], the record linear over it */
-static int advance(sx_run *R, double tb)
-{
-    const double ta = R->t, ag_a = ground(R, ta), slope = (ground(R, tb) - ag_a) / (tb - ta);
-    return dyadic(R, ta, tb - ta, 0, 0.0, ag_a, slope);
-}
-
 static void track(double *peak, double v)
 {
     if (fabs(v) > *peak) *peak = fabs(v);
@@ -268,7 +131,7 @@ static void observe(sx_run *R, double t)
         double dx[RW_SCENE_NX];
         rw_scene_aux aux;
         int i;
-        rw_scene_derivatives(&R->sc, ground(R, t), R->x, dx, &aux);
+        rw_scene_derivatives(&R->sc, sx_ground(R, t), R->x, dx, &aux);
         for (i = 0; i < R->sc.S.n_storeys; i++) {
             const size_t row = R->next_out * RW_SCENE_MAX_STOREYS + (size_t)i;
             if (res->s1_out) res->s1_out[row] = rw_scene_s1(&R->sc, R->x, i);
@@ -295,7 +158,7 @@ static double next_stop(sx_run *R)
 static int integrate(sx_run *R)
 {
     while (R->t < R->opt->t_end) {
-        if (advance(R, next_stop(R))) return R->error;
+        if (sx_advance(R, next_stop(R))) return R->error;
         observe(R, R->t);
         R->res->t_reached = R->t;
     }
@@ -357,7 +220,7 @@ int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, co
     if (!R) return snprintf(res->message, sizeof res->message, "out of memory"), RW_SCENE_NO_MEMORY;
     res->energy_start = energy(R, R->t);
     res->t_reached = R->t;
-    code = handle_events(R);
+    code = sx_handle_events(R);
     if (code == RW_SCENE_OK) {
         observe(R, R->t);
         code = integrate(R);

@@ -140,6 +140,11 @@ typedef struct {
     double peak_f[SX_MAX_F]; /* scratch: the current region's peaks by functional */
 } sx_run;
 
+/* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */
+double sx_ground(sx_run *R, double t);  /* the record at t */
+int sx_handle_events(sx_run *R);        /* the event update at R->t, then the region: 0 or an error code */
+int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
+
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
