@@ -72,9 +72,9 @@ static int enter_region(sx_run *R)
             R->regions[k].used = R->stamp;
             return entered(R);
         }
-    if (R->nregions < SX_REGIONS) slot = R->nregions++;
+    if (R->nregions < R->capacity) slot = R->nregions++;
     else
-        for (k = 0; k < SX_REGIONS; k++)
+        for (k = 0; k < R->capacity; k++)
             if (slot < 0 || R->regions[k].used < R->regions[slot].used) slot = k;
     R->cur = slot;
     R->regions[slot].used = R->stamp;
@@ -189,12 +189,24 @@ static void free_run(sx_run *R)
     free(R);
 }
 
+/* how many regions the cache holds: SX_REGIONS, fewer where the largest region's tables would
+ * take more than SX_CACHE_BYTES (every storey with a wall and a floor) */
+static int region_capacity(const rw_scene_spec *spec)
+{
+    const double na = 2.0 * 4.0 * spec->n_storeys + 3.0, n = na - 3.0;
+    const double per = (double)sizeof(sx_region) +
+                       8.0 * (na * na + SX_STEPS * (2.0 * na * na + n * na + 2.0 * na + 4.0 * spec->n_storeys * (SX_LO + 1) * na));
+    const double fit = SX_CACHE_BYTES / per;
+    return fit >= SX_REGIONS ? SX_REGIONS : (fit < 8.0 ? 8 : (int)fit);
+}
+
 static sx_run *new_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,
                        rw_scene_result *res)
 {
     sx_run *R = (sx_run *)calloc(1, sizeof *R);
     if (!R) return NULL;
-    R->regions = (sx_region *)calloc(SX_REGIONS, sizeof(sx_region));
+    R->capacity = region_capacity(spec);
+    R->regions = (sx_region *)calloc((size_t)R->capacity, sizeof(sx_region));
     if (!R->regions) return free(R), NULL;
     R->rec = rec, R->opt = opt, R->res = res;
     R->cur = -1;

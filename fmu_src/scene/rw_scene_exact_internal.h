@@ -23,7 +23,8 @@
 #define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
 #define SX_STEPS 8       /* step lengths cached per region */
 #define SX_FAST 3.0      /* a mode turning more than this (|lambda| h) over a step is a band there */
-#define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) */
+#define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) ... */
+#define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
 
 /* kinds of functionals */
@@ -128,7 +129,7 @@ typedef struct {
     double x[RW_SCENE_NX];
     double t;
     sx_region *regions;
-    int nregions, cur;
+    int nregions, cur, capacity;
     long stamp;
     int nlines[RW_SCENE_MAX_STOREYS];
     sx_line lines[RW_SCENE_MAX_STOREYS][SX_MAX_LINES];
