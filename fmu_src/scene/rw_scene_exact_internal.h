@@ -22,7 +22,6 @@
 #define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
 #define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
 #define SX_STEPS 8       /* step lengths cached per region */
-#define SX_FAST 3.0      /* a mode turning more than this (|lambda| h) over a step is a band there */
 #define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) ... */
 #define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
@@ -57,7 +56,6 @@ typedef struct {
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
     double complex a[SX_MAX_F][SX_MAX_N];
     double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
-    double lam_max;  /* the largest |lambda| */
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N];
 } sx_modes;
@@ -138,7 +136,6 @@ typedef struct {
     double last_event_t;
     int same_instant;
     int error;               /* an event's error code (Zeno, no memory, a singular mass matrix) */
-    double peak_f[SX_MAX_F]; /* scratch: the current region's peaks by functional */
 } sx_run;
 
 /* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */

@@ -104,7 +104,6 @@ void sx_modes_build(sx_region *r)
         m->pair[k] = wi[i] != 0.0;
         m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
         m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
-        m->lam_max = fmax(m->lam_max, hypot(wr[i], wi[i]));
         if (m->pair[k]) i++;
     }
     modal_forcing(r, m, r->n + 2, m->g0);
