@@ -96,6 +96,19 @@ int rw_scene_validate(const rw_scene_spec *spec, char *msg, size_t n)
     return 0;
 }
 
+void rw_scene_start_state(const rw_scene_spec *spec, const double *x0, double x[RW_SCENE_NX])
+{
+    int i;
+    memset(x, 0, sizeof(double) * RW_SCENE_NX);
+    if (!x0) return;
+    memcpy(x, x0, sizeof(double) * (size_t)((RW_NX + BD_STATES_PER_FLOOR) * spec->n_storeys));
+    if (!spec->rigid_in_plane) return;
+    for (i = 0; i < spec->n_storeys; i++) {
+        double *f = x + RW_NX * spec->n_storeys + BD_STATES_PER_FLOOR * i;
+        f[BD_U] = f[BD_V] = 0.0;
+    }
+}
+
 void rw_scene_init(rw_scene *sc, const rw_scene_spec *spec, double ag0, double x[RW_SCENE_NX])
 {
     int i;

@@ -58,6 +58,9 @@ typedef struct {
 
 /* Checks the spec (storey count, every wall's parameters, masses and springs): 0, or 1 with msg. */
 int rw_scene_validate(const rw_scene_spec *spec, char *msg, size_t n);
+/* The start state: x0 (NULL = rest) with the floors' displacements and velocities zero when the
+ * in-plane walls are rigid (the floors move with the ground) */
+void rw_scene_start_state(const rw_scene_spec *spec, const double *x0, double x[RW_SCENE_NX]);
 /* Sets up the scene from a validated spec with the walls' start states in x (the rest zero):
  * derived data, the walls' initial regimes (from the start accelerations, at ag0). */
 void rw_scene_init(rw_scene *sc, const rw_scene_spec *spec, double ag0, double x[RW_SCENE_NX]);

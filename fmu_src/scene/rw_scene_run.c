@@ -232,7 +232,7 @@ static int integrate(run *r, double t)
     return RW_SCENE_OK;
 }
 
-static int check_arguments(const rw_scene_record *rec, const rw_scene_options *opt, char *msg, size_t n)
+int rw_scene_check_arguments(const rw_scene_record *rec, const rw_scene_options *opt, char *msg, size_t n)
 {
     size_t k;
     if (rec->n < 2 || !rec->t || !rec->ag) return snprintf(msg, n, "the record needs 2 or more samples"), 1;
@@ -240,6 +240,9 @@ static int check_arguments(const rw_scene_record *rec, const rw_scene_options *o
         if (!isfinite(rec->t[k]) || !isfinite(rec->ag[k]) || (k > 0 && !(rec->t[k] > rec->t[k - 1])))
             return snprintf(msg, n, "record sample %zu: times must increase and values be finite", k), 1;
     }
+    if (opt->x0)
+        for (k = 0; k < RW_SCENE_NX; k++)
+            if (!isfinite(opt->x0[k])) return snprintf(msg, n, "start state %zu is not finite", k), 1;
     if (!(opt->t_end > rec->t[0]) || !isfinite(opt->t_end))
         return snprintf(msg, n, "t_end = %g must be finite and after the record's start %g", opt->t_end, rec->t[0]), 1;
     for (k = 0; k < opt->n_out; k++) {
@@ -273,14 +276,14 @@ int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw
     if (!spec || !rec || !opt || !res) return RW_SCENE_BAD_ARGUMENT;
     res->message[0] = '\0';
     res->steps = res->events = 0;
-    if (check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
+    if (rw_scene_check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
     if (rw_scene_validate(spec, res->message, sizeof res->message)) return RW_SCENE_BAD_SPEC;
     r = (run *)calloc(1, sizeof *r);
     if (!r) return snprintf(res->message, sizeof res->message, "out of memory"), RW_SCENE_NO_MEMORY;
     r->rec = rec;
     r->opt = opt;
     r->res = res;
-    memset(x, 0, sizeof x);
+    rw_scene_start_state(spec, opt->x0, x);
     rw_scene_init(&r->sc, spec, rec->ag[0], x);
     if (!allocate(r)) {
         free_run(r);

@@ -15,7 +15,8 @@ enum {
     RW_SCENE_BAD_SPEC = 2,     /* rw_scene_validate refused the scene */
     RW_SCENE_SOLVER = 3,       /* CVODE failed (message names the call and time) */
     RW_SCENE_ZENO = 4,         /* too many events at one instant */
-    RW_SCENE_NO_MEMORY = 5
+    RW_SCENE_NO_MEMORY = 5,
+    RW_SCENE_UNSUPPORTED = 6   /* the exact engine does not cover the scene (rw_scene_exact.h) */
 };
 
 /* the ground motion: n >= 2 samples at increasing times, linear between them, the ends held */
@@ -29,6 +30,9 @@ typedef struct {
     double rtol;        /* CVODE's relative tolerance; <= 0: 1e-8 */
     size_t n_out;       /* optional output grid, increasing times in [t[0], t_end] */
     const double *t_out;
+    /* optional start state (RW_SCENE_NX values in the scene's layout, rw_scene.h), NULL = rest; the
+     * floors' states are taken as zero when the in-plane walls are rigid */
+    const double *x0;
 } rw_scene_options;
 
 typedef struct {
@@ -51,9 +55,12 @@ typedef struct {
     char message[256];
 } rw_scene_result;
 
-/* Runs the scene from rest. Returns an error code (0 = ok) and fills res->message when not 0. */
+/* Runs the scene from rest (or opt->x0). Returns an error code (0 = ok) and fills res->message when not 0. */
 int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,
                  rw_scene_result *res);
+
+/* The record, options and output grid checked (both runners): 0, or 1 with msg filled. */
+int rw_scene_check_arguments(const rw_scene_record *rec, const rw_scene_options *opt, char *msg, size_t n);
 
 /* sizeof rw_scene_spec, rw_scene_result and bd_params, for bindings that mirror them */
 extern const size_t RW_SCENE_STRUCT_SIZES[3];

@@ -1,10 +1,12 @@
-"""Python binding of the scene solver (fmu_src/scene/rw_scene_run.h, in librwengine.so): the walls,
-diaphragms and floors of a building in one CVODES integration, with each wall's own event rules.
+"""Python binding of the scene solvers (in librwengine.so): the walls, diaphragms and floors of a
+building as one model, with each wall's own event rules, run by the exact engine
+(fmu_src/scene/rw_scene_exact.h: linear springs and the hinge laws of q alone) or by CVODES
+(fmu_src/scene/rw_scene_run.h: every scene).
 
     from rockingwall import scene_engine
     spec = scene_engine.Spec(storeys=[scene_engine.StoreySpec(wall=params, md=200.0, kd=2e5, cd=632.0)])
-    r = scene_engine.run(spec, t, ag)
-    r.peak_s1[0], r.collapsed[0], r.max_residual
+    r = scene_engine.run(spec, t, ag)          # the exact engine where it covers the scene
+    r.peak_s1[0], r.collapsed[0], r.max_residual, r.engine
 
 Everything is SI and per metre of out-of-plane wall. The C structs are mirrored here; their sizes
 are checked against the library's own (RW_SCENE_STRUCT_SIZES)."""
@@ -18,7 +20,8 @@ from . import engine
 
 MAX_STOREYS = 5
 SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
-ERRORS = {1: "bad argument", 2: "bad scene", 3: "solver", 4: "Zeno", 5: "no memory"}
+ERRORS = {1: "bad argument", 2: "bad scene", 3: "solver", 4: "Zeno", 5: "no memory", 6: "unsupported"}
+ENGINES = ("exact", "cvode")
 
 _D = ctypes.c_double
 _D5 = _D * MAX_STOREYS
@@ -48,7 +51,8 @@ class _Record(ctypes.Structure):
 
 
 class _Options(ctypes.Structure):
-    _fields_ = [("t_end", _D), ("rtol", _D), ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(_D))]
+    _fields_ = [("t_end", _D), ("rtol", _D), ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(_D)),
+                ("x0", ctypes.POINTER(_D))]
 
 
 class _Result(ctypes.Structure):
@@ -112,13 +116,16 @@ class Spec:
 class Result:
     """Per storey (index 0 = ground storey): peaks of the wall's s1, s2 relative to its own base
     [m], of the diaphragm relative to its floor [m] and of the wall base's absolute acceleration
-    [m/s2]; collapse and its time (NaN if standing); impacts. Energy balance terms [J/m] and the
-    largest residual over the run; histories on the grid if one was asked for."""
+    [m/s2]; collapse, its reason (1 past instability, 2 past the toppling limit) and time (NaN if
+    standing); impacts. Energy balance terms [J/m] and the
+    largest residual over the run; histories on the grid if one was asked for; which engine ran
+    ("exact" or "cvode")."""
     peak_s1: np.ndarray
     peak_s2: np.ndarray
     peak_diaphragm: np.ndarray
     peak_base_acc: np.ndarray
     collapsed: np.ndarray
+    collapse_reason: np.ndarray
     t_collapse: np.ndarray
     impacts: np.ndarray
     steps: int
@@ -127,8 +134,11 @@ class Result:
     work_ground: float
     work_damping: float
     event_losses: float
+    energy_start: float
+    energy_end: float
     max_residual: float
     max_work: float
+    engine: str = "cvode"
     t: np.ndarray = None
     s1: np.ndarray = None
     s2: np.ndarray = None
@@ -137,9 +147,9 @@ class Result:
 
 
 @functools.cache
-def _function():
+def _function(name="rw_scene_run"):
     lib = engine.library()
-    fn = lib.rw_scene_run
+    fn = getattr(lib, name)
     fn.argtypes = [ctypes.POINTER(_spec_struct()), ctypes.POINTER(_Record), ctypes.POINTER(_Options),
                    ctypes.POINTER(_Result)]
     fn.restype = ctypes.c_int
@@ -183,27 +193,61 @@ def _histories(n_out):
     return [np.full((n_out, MAX_STOREYS), np.nan) if n_out else None for _ in range(4)]
 
 
-def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None):
-    """One run of the scene from rest under the record (t [s], ag [m/s2], linear between samples,
-    the ends held), to t_end (default: the record's end). Raises SceneError."""
+@functools.cache
+def _covers_function():
+    fn = engine.library().rw_scene_exact_covers
+    fn.argtypes = [ctypes.POINTER(_spec_struct()), ctypes.c_char_p, ctypes.c_size_t]
+    fn.restype = ctypes.c_int
+    return fn
+
+
+def exact_covers(spec):
+    """(True, "") if the exact engine covers the scene, else (False, why)."""
+    msg = ctypes.create_string_buffer(256)
+    code = _covers_function()(ctypes.byref(c_spec(spec)), msg, 256)
+    return code == 0, msg.value.decode(errors="replace")
+
+
+def state_size(spec):
+    """The length of a scene's state vector: 4 wall states per storey, then 8 per floor."""
+    return 12 * len(spec.storeys)
+
+
+def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None):
+    """One run of the scene from rest (or the start state x0, state_size(spec) values) under the
+    record (t [s], ag [m/s2], linear between samples, the ends held), to t_end (default: the
+    record's end). engine: "exact", "cvode", or None for the exact engine where it covers the
+    scene and CVODES (at rtol) elsewhere; the result says which ran. Raises SceneError, or
+    ValueError for an engine name it does not know."""
+    if engine is None:
+        engine = "exact" if exact_covers(spec)[0] else "cvode"
+    if engine not in ENGINES:
+        raise ValueError(f"engine must be one of {ENGINES}, not {engine!r}")
     t = np.ascontiguousarray(t, dtype=np.float64)
     ag = np.ascontiguousarray(ag, dtype=np.float64)
     t_out = None if t_out is None else np.ascontiguousarray(t_out, dtype=np.float64)
     n_out = 0 if t_out is None else t_out.size
     n = len(spec.storeys)
+    start = None
+    if x0 is not None:
+        x0 = np.asarray(x0, dtype=np.float64).ravel()
+        if x0.size != state_size(spec):
+            raise ValueError(f"x0 has {x0.size} values; this scene has {state_size(spec)} states")
+        start = np.zeros(MAX_STOREYS * 12)
+        start[:x0.size] = x0
     hist = _histories(n_out)
     res = _Result()
     res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out = (_ptr(h) for h in hist)
-    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out))
+    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), _ptr(start))
     c = c_spec(spec)
-    code = _function()(ctypes.byref(c), ctypes.byref(_Record(t.size, _ptr(t), _ptr(ag))), ctypes.byref(opt),
-                       ctypes.byref(res))
+    fn = _function("rw_scene_run_exact" if engine == "exact" else "rw_scene_run")
+    code = fn(ctypes.byref(c), ctypes.byref(_Record(t.size, _ptr(t), _ptr(ag))), ctypes.byref(opt), ctypes.byref(res))
     if code:
         raise SceneError(code, res.message.decode(errors="replace"))
     per = {k: np.array(getattr(res, k)[:n]) for k in
-           ("peak_s1", "peak_s2", "peak_diaphragm", "peak_base_acc", "t_collapse", "impacts")}
+           ("peak_s1", "peak_s2", "peak_diaphragm", "peak_base_acc", "t_collapse", "impacts", "collapse_reason")}
     s1, s2, dia, acc = (h[:, :n] if h is not None else None for h in hist)
     return Result(**per, collapsed=np.array(res.collapsed[:n], dtype=bool), steps=res.steps, events=res.events,
                   t_reached=res.t_reached, work_ground=res.work_ground, work_damping=res.work_damping,
-                  event_losses=res.event_losses, max_residual=res.max_residual, max_work=res.max_work,
-                  t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc)
+                  event_losses=res.event_losses, energy_start=res.energy_start, energy_end=res.energy_end,
+                  max_residual=res.max_residual, max_work=res.max_work, engine=engine, t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc)
