@@ -23,8 +23,7 @@ import time
 import numpy as np
 
 from rockingwall import engine, records, scene_engine as se
-from rockingwall.sweep import records as suite
-from rockingwall.sweep.command import FEMA_CACHE
+from rockingwall.sweep import suites as suite
 
 WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
 TIES = (1e8, 1e6)
@@ -32,7 +31,7 @@ FLOPS_PER_NS = 2.0
 
 
 def record(pga_g, t_end=80.0):
-    by_name = {r.name: r for r in suite.fema_farfield(FEMA_CACHE)}
+    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
     rec = records.read_at2(by_name["ff19a"].path).to_pga(pga_g)
     keep = rec.t <= t_end
     return rec.t[keep], rec.ag[keep]

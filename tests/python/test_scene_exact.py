@@ -8,8 +8,7 @@ import numpy as np
 import pytest
 
 from rockingwall import records, scene_engine as se
-from rockingwall.sweep import records as suite
-from rockingwall.sweep.command import FEMA_CACHE
+from rockingwall.sweep import suites as suite
 
 WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, Kd=1e8, support=3)
 # record, k_d [N/m per m], peak s1 [mm], peak s2 [mm] of the independent solver
@@ -23,7 +22,7 @@ def scene(kd, md=200.0, zeta=0.05, wall=WALL):
 
 @pytest.fixture(scope="module")
 def fema():
-    by_name = {r.name: r for r in suite.fema_farfield(FEMA_CACHE)}
+    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
     return {name: records.read_at2(by_name[name].path).to_pga(0.5) for name in ("ff07a", "ff03a")}
 
 

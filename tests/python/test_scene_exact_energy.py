@@ -9,8 +9,7 @@ import numpy as np
 import pytest
 
 from rockingwall import engine, records, scene_engine as se
-from rockingwall.sweep import records as suite
-from rockingwall.sweep.command import FEMA_CACHE
+from rockingwall.sweep import suites as suite
 
 WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
 
@@ -46,7 +45,7 @@ def test_energy_is_kept_without_damping(storeys, rigid, law):
 def test_energy_balance_with_damping_under_kobe():
     """Two storeys on flexible in-plane walls, dashpots beside every spring and Rayleigh damping,
     under Kobe (NIS000) at 0.5 g: the balance closes to 1e-8 of the ground's work."""
-    by_name = {r.name: r for r in suite.fema_farfield(FEMA_CACHE)}
+    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
     rec = records.read_at2(by_name["ff07a"].path).to_pga(0.5)
     storey = se.StoreySpec(wall=dict(WALL, Kd=1e7), md=200.0, kd=1e5, cd=2 * 0.05 * np.sqrt(1e5 * 200.0),
                            m=3000.0, k=3e7, cs=2 * 0.05 * np.sqrt(3e7 * 3000.0))

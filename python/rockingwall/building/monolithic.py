@@ -107,9 +107,10 @@ def check_energy(r, where):
     return share
 
 
-def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None):
-    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories)."""
-    r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out)
+def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None):
+    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
+    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene."""
+    r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
     share = check_energy(r, record.name)
     storeys = []
     for i, params in enumerate(wall_params_list):
@@ -120,17 +121,17 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None):
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
             diaphragm_peak_m=float(r.peak_diaphragm[i]), base_peak_acc_m_s2=float(r.peak_base_acc[i]),
             impacts=int(r.impacts[i])))
-    result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=getattr(r, "engine", "cvode"),
+    result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events)
     return result, r
 
 
-def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None):
-    """The response of every storey of a description.Building under a Record."""
+def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None):
+    """The response of every storey of a description.Building under a Record (solver: as respond's)."""
     t_out = None
     if output_interval:
         end = float(record.t[-1]) if t_end is None else float(t_end)
         t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
     params = [building.wall_parameters(i) for i in range(len(building.storeys))]
-    return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out)
+    return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver)

@@ -20,6 +20,8 @@ def parser(sub=None):
         description=__doc__)
     p.add_argument("file", help="the building file (TOML)")
     cc.add_record_arguments(p, many=True)
+    p.add_argument("--solver", choices=["exact", "cvode"], help="exact (linear diaphragms and storeys: the default "
+                   "where it covers the building) or cvode (CVODES, every spring law)")
     p.add_argument("--rtol", type=float, default=1e-8, help="relative tolerance where CVODES runs (default 1e-8)")
     p.add_argument("--out", help="folder for <record>.csv (time histories per storey) and <record>.png")
     p.add_argument("--json", action="store_true", help="print the results as JSON (strict: null, never NaN)")
@@ -38,7 +40,7 @@ def run_building(path, args):
     runs = []
     for spec in args.records:
         record = cc.record_from_args(spec, args)
-        runs.append(monolithic.simulate_building(building, record, rtol=args.rtol,
+        runs.append(monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
                                                  output_interval=0.01 if args.out else None))
     if args.out:
         out = cc.output_dir(args.out)
