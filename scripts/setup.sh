@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Sets up everything RockingWall needs on a Debian machine, idempotently:
-#   1. Debian packages (compiler, CMake, SUNDIALS CVODE, libxml2, libzip, valgrind, Python venv),
+#   1. Debian packages (compiler, CMake, SUNDIALS CVODE, LAPACK, libxml2, libzip, valgrind, Python venv),
 #   2. the Python virtual environment .venv/ with the pinned requirements,
 #   3. the CMake build in build/ (the FMUs and fmi2sim).
 # Each step is skipped when already done, so running it again is cheap.
@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 APT_PACKAGES=(build-essential cmake pkg-config python3 python3-venv python3-pip
-              libsundials-dev libxml2-dev libzip-dev valgrind zip unzip)
+              libsundials-dev liblapack-dev libxml2-dev libzip-dev valgrind zip unzip)
 case "${1:-}" in
   --with-windows) APT_PACKAGES+=(mingw-w64 wine64) ;;
   "") ;;

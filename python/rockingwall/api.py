@@ -1,5 +1,7 @@
 """simulate(wall, record): one wall under one record, by the exact engine (default), fmi2sim
-(CVODE) or fmpy, with the peaks, the collapse and the time history in SI units."""
+(CVODE) or fmpy, with the peaks, the collapse and the time history in SI units; with a diaphragm
+that has mass (`diaphragm=`), the wall under it by the scene solver. Every result names its scene
+(rockingwall.scenes) and what that scene leaves out."""
 import dataclasses
 import os
 import tempfile
@@ -7,9 +9,10 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from . import fmi2sim, names, paths
+from . import fmi2sim, names, paths, scenes
 from . import engine as engine_module  # `engine` is simulate()'s argument
-from .records import Record
+from .building import monolithic
+from .building.description import TIE_DEFAULT
 from .wall import Wall
 
 ENGINES = ("exact", "fmi2sim", "fmpy")
@@ -30,6 +33,7 @@ class Result:
     t_collapse: float
     impacts: int
     history: pd.DataFrame
+    scene: scenes.Scene = None
 
     @property
     def s1_over_delta_u(self):
@@ -40,22 +44,41 @@ class Result:
         """The numbers users print: a dict with units in the keys."""
         return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "peak_F_top_N_per_m": self.peak_F_top,
                 "s1_over_Delta_u": self.s1_over_delta_u,
-                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
+                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts,
+                "scene": self.scene.to_dict() if self.scene else None}
 
 
-def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8):
+def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8,
+             diaphragm=None, tie=TIE_DEFAULT):
     """Simulate `wall` (a Wall) under `record` (a Record, accelerations in m/s^2).
     stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
-    process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode)."""
+    process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode).
+    diaphragm: a building.description.Diaphragm (its stiffness, mass, damping): the wall tied to it
+    by `tie` [N/m per m] (the scene solver; engine is then ignored); None: the paper's scene, the
+    wall's top spring K_d ending at a fixed point."""
     if engine not in ENGINES:
         raise ValueError(f"engine {engine!r}: choose one of {', '.join(ENGINES)}")
     t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)
     grid = np.arange(float(record.t[0]), t_end + output_interval / 2, output_interval)
+    if diaphragm is not None:
+        return _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie)
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
     return Result(wall, record.name, engine, peak_s1, peak_s2, engine_module.peak_F_top(wall.params, peak_s2),
-                  collapsed, t_collapse, impacts, history)
+                  collapsed, t_collapse, impacts, history, scenes.paper(wall.params))
+
+
+def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
+    spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
+    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid)
+    (s,) = result.storeys
+    history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
+                            "s2": h.s2[:, 0]})
+    t_collapse = s.t_collapse_s if s.collapsed else float("nan")
+    peak_F_top = float(tie * np.nanmax(np.abs(h.s2[:, 0] - h.diaphragm[:, 0]))) if len(grid) else 0.0
+    return Result(wall, record.name, f"scene ({result.solver})", s.peak_s1_m, s.peak_s2_m, peak_F_top, s.collapsed,
+                  t_collapse, s.impacts, history, scenes.diaphragm(diaphragm, tie))
 
 
 def _exact(wall, record, t_end, grid, rtol, output_interval):

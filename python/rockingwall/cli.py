@@ -6,7 +6,9 @@ import sys
 
 from . import __version__
 from .commands import common as cc
+from .building.monolithic import BuildingError
 from .records import RecordError
+from .scene_engine import SceneError
 
 # commands with their own argument parser: name -> (module, one-line help)
 DELEGATED = {
@@ -21,14 +23,15 @@ DELEGATED = {
 
 
 def build_parser():
-    from .commands import assess, info, run
+    from .commands import assess, building, info, run
     p = argparse.ArgumentParser(prog="rockingwall", description=__doc__ + "\n\n" + "\n".join(
         f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"rockingwall {__version__}")
-    sub = p.add_subparsers(title="commands", metavar="{run,assess,info," + ",".join(DELEGATED) + "}")
+    sub = p.add_subparsers(title="commands", metavar="{run,assess,building,info," + ",".join(DELEGATED) + "}")
     run.parser(sub)
     assess.parser(sub)
+    building.parser(sub)
     info.parser(sub)
     return p
 
@@ -43,7 +46,7 @@ def main(argv=None):
             build_parser().print_help()
             return 2
         return args.command(args)
-    except (ValueError, RecordError, FileNotFoundError) as exc:
+    except (ValueError, RecordError, FileNotFoundError, BuildingError, SceneError) as exc:
         return cc.fail(str(exc))
     except KeyboardInterrupt:
         return cc.fail("interrupted", 130)

@@ -60,7 +60,7 @@ def parameter_table():
 
 
 @functools.cache
-def _params_struct():
+def params_struct():
     """The ctypes twin of struct rw_params, checked field by field against the C offsets."""
     table = parameter_table()
     cls = type("Params", (ctypes.Structure,), {"_fields_": [
@@ -133,7 +133,7 @@ def library():
 
 def params(**values):
     """The C parameter struct: the table's defaults, then `values` by name."""
-    p = _params_struct()()
+    p = params_struct()()
     library().rw_params_default(ctypes.byref(p))
     names = {name for name, _ in p._fields_}
     for k, v in values.items():

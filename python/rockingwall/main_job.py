@@ -35,6 +35,8 @@ def table(runs, scale):
     """The lines of the peaks beside the paper's (the paper's only at scale 0.5)."""
     lines = [f"Wall 1 (b = 0.15 m, h = 2.5 m, W = 6.622 kN/m), El Centro 1940 x {scale}, e_r = 0.86, "
              "hinge law dohertyHinge",
+             "scene: the paper's (the top spring K_d ends at a fixed point; the 1DOF: a pinned top); left out: "
+             "the diaphragm's mass and damping, the floor's motion",
              f"{'case':<24}{'peak s1 [m]':>12}{'paper':>8}{'peak s2 [m]':>13}{'paper':>8}{'impacts':>9}  collapsed"]
     for label, _, _, paper_s1, paper_s2 in CASES:
         run = runs[label]

@@ -3,7 +3,7 @@ histories as a plot (what `rockingwall run` prints and writes)."""
 
 
 def table(wall, results):
-    lines = [f"wall: {wall.describe()}", f"Delta_u = {wall.delta_u * 1e3:.1f} mm",
+    lines = [f"wall: {wall.describe()}", results[0].scene.text(), f"Delta_u = {wall.delta_u * 1e3:.1f} mm",
              f"{'record':<28}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}  collapse"]
     for r in results:
         collapse = f"yes, at {r.t_collapse:.2f} s" if r.collapsed else "no"

@@ -13,6 +13,8 @@ _SPELLINGS = {
     "N/m2": {"n/m/m": 1.0, "kn/m/m": 1e3, "mn/m/m": 1e6, "n/mm/m": 1e3},
     "m/s2": {"m/s/s": 1.0},
     "rad/s": {"rad/s": 1.0},
+    "kg/m": {"kg/m": 1.0, "t/m": 1e3},
+    "N/m3": {"n/m3": 1.0, "kn/m3": 1e3},
 }
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 

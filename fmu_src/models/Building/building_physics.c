@@ -54,8 +54,8 @@ double bd_hysteretic_rate(const bd_params *p, int law, const bd_spring *s, doubl
     return law == BD_BOUC_WEN_PINCHED ? pinching(p, z, du) * rate : rate;
 }
 
-/* Rayleigh damping force on floor i and on diaphragm i: a0 M v + a1 K0 v, K0 the initial
- * (elastic) stiffness matrix, v the velocities relative to the ground */
+/* Damping force on floor i and on diaphragm i: Rayleigh a0 M v + a1 K0 v (K0 the initial
+ * (elastic) stiffness matrix, v the velocities relative to the ground) and the dashpots */
 static void damping_forces(const bd_params *p, const double x[BD_NX], int i, double *on_floor, double *on_diaph)
 {
     const double *f = floor_states(x, i);
@@ -63,8 +63,10 @@ static void damping_forces(const bd_params *p, const double x[BD_NX], int i, dou
     const double dv_diaph = f[BD_W] - f[BD_V];
     double k0v = p->storey[i].k * (f[BD_V] - v_below) - p->diaph[i].k * dv_diaph;
     if (i + 1 < p->n_storeys) k0v -= p->storey[i + 1].k * (floor_states(x, i + 1)[BD_V] - f[BD_V]);
-    *on_floor = p->a0 * p->m[i] * f[BD_V] + p->a1 * k0v;
-    *on_diaph = p->a0 * p->md[i] * f[BD_W] + p->a1 * p->diaph[i].k * dv_diaph;
+    double dashpots = p->cs[i] * (f[BD_V] - v_below) - p->cd[i] * dv_diaph;
+    if (i + 1 < p->n_storeys) dashpots -= p->cs[i + 1] * (floor_states(x, i + 1)[BD_V] - f[BD_V]);
+    *on_floor = p->a0 * p->m[i] * f[BD_V] + p->a1 * k0v + dashpots;
+    *on_diaph = p->a0 * p->md[i] * f[BD_W] + (p->a1 * p->diaph[i].k + p->cd[i]) * dv_diaph;
 }
 
 double bd_diaphragm_acceleration(const bd_params *p, const bd_input *in, const double x[BD_NX], int i)

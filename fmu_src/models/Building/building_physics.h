@@ -9,7 +9,8 @@
  *
  * Displacements relative to the ground; the ground acceleration ag enters as -m ag. Each spring is
  * linear or Bouc-Wen (hysteretic variable a continuous state, no events), the diaphragms
- * optionally with Foliente's pinching function; Rayleigh damping C = a0 M + a1 K0. */
+ * optionally with Foliente's pinching function; Rayleigh damping C = a0 M + a1 K0, and a dashpot
+ * beside each spring (cs, cd: the scenes' damping ratios; the Building FMU leaves them 0). */
 #ifndef BUILDING_PHYSICS_H
 #define BUILDING_PHYSICS_H
 
@@ -37,6 +38,7 @@ typedef struct {
     double n_bw, beta;                                /* Bouc-Wen exponent and beta (gamma = 1 - beta) */
     double pinch_size, pinch_width, pinch_centre;     /* Foliente's zeta1, zeta2, q */
     double a0, a1;                                    /* Rayleigh: C = a0 M + a1 K0 */
+    double cs[BD_MAX_FLOORS], cd[BD_MAX_FLOORS];      /* dashpots beside the storey and diaphragm springs */
     double m[BD_MAX_FLOORS], md[BD_MAX_FLOORS];       /* floor and diaphragm masses */
     bd_spring storey[BD_MAX_FLOORS], diaph[BD_MAX_FLOORS];
 } bd_params;

@@ -6,7 +6,9 @@ import sys
 import tempfile
 import warnings
 
-from .. import records
+from .. import records, units
+from ..building.description import DAMPING_DEFAULT, TIE_DEFAULT, Diaphragm
+from ..names import SUPPORTS
 from ..wall import Wall
 
 WALL_FLAGS = {  # flag -> parameter; values may carry units ('30kN/m/m', '230mm')
@@ -32,6 +34,12 @@ def add_wall_arguments(parser):
                    help="any other parameter by name (rockingwall info lists them)")
 
 
+def wall_given(args):
+    """Did the command line give any of the wall's options?"""
+    return args.wall is not None or bool(args.set) or any(
+        getattr(args, flag[2:].replace("-", "_")) is not None for flag in WALL_FLAGS)
+
+
 def wall_from_args(args):
     values = {param: getattr(args, flag[2:].replace("-", "_")) for flag, param in WALL_FLAGS.items()}
     values = {k: v for k, v in values.items() if v is not None}
@@ -46,6 +54,33 @@ def wall_from_args(args):
     for w in caught:
         print(f"rockingwall: warning: {w.message}", file=sys.stderr)
     return wall
+
+
+def add_diaphragm_arguments(parser):
+    g = parser.add_argument_group(
+        "a diaphragm with mass (the wall tied to it, its supports on the ground); without "
+        "--diaphragm-mass the top spring K_d ends at a fixed point (the paper's scene)")
+    g.add_argument("--diaphragm-mass", help="the diaphragm's mass per metre of wall, e.g. 200kg/m")
+    g.add_argument("--diaphragm-damping", type=float, default=DAMPING_DEFAULT,
+                   help=f"its damping ratio (default {DAMPING_DEFAULT:g}); its stiffness is --Kd")
+    g.add_argument("--tie", help=f"the wall-to-diaphragm connection [N/m per m] (default {TIE_DEFAULT:g})")
+
+
+def diaphragm_from_args(args, wall):
+    """(Diaphragm or None, tie [N/m per m]) from --diaphragm-mass, --diaphragm-damping, --tie and
+    the wall's K_d as the diaphragm's stiffness."""
+    tie = units.parse(args.tie, "N/m2", "--tie") if args.tie else TIE_DEFAULT
+    if args.diaphragm_mass is None:
+        if args.tie:
+            raise ValueError("--tie is the connection to a diaphragm with mass: give --diaphragm-mass too")
+        return None, tie
+    if int(wall.params["support"]) != SUPPORTS["flexibleTop"]:
+        raise ValueError("--diaphragm-mass: a diaphragm holds the wall's top (support flexibleTop)")
+    mass = units.parse(args.diaphragm_mass, "kg/m", "--diaphragm-mass")
+    if not 0 < mass < 1e7 or not 0 <= args.diaphragm_damping <= 2 or not 1 <= tie <= 1e12:
+        raise ValueError("--diaphragm-mass must be in (0, 1e7) kg/m, --diaphragm-damping in [0, 2], --tie in "
+                         "[1, 1e12] N/m per m")
+    return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=args.diaphragm_damping), tie
 
 
 def add_record_arguments(parser, many=False):

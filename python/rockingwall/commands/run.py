@@ -1,17 +1,20 @@
 """rockingwall run: one wall under one or more records; prints the peaks with units, writes a CSV
 of the time histories and a plot per record (and --json for programs)."""
-import json
 import sys
 
-from .. import run_report
+from .. import run_report, strict_json
 from ..api import ENGINES, simulate
 from . import common as cc
+from .building import run_building
 
 
 def parser(sub=None):
     p = (sub.add_parser if sub else lambda name, **kw: cc.Parser(prog="rockingwall run", **kw))(
         "run", help="simulate one wall under records", description=__doc__)
     cc.add_wall_arguments(p)
+    cc.add_diaphragm_arguments(p)
+    p.add_argument("--building", metavar="FILE", help="the walls of the building in FILE (TOML) instead of one wall: "
+                   "as `rockingwall building FILE`")
     cc.add_record_arguments(p, many=True)
     p.add_argument("--engine", default="exact", choices=ENGINES,
                    help="exact (event-driven, default), fmi2sim (CVODE) or fmpy (the FMU's Model Exchange)")
@@ -25,9 +28,14 @@ def parser(sub=None):
 
 
 def main(args):
+    if args.building:
+        if cc.wall_given(args) or args.diaphragm_mass or args.tie:
+            raise ValueError("--building FILE describes the walls and diaphragms: give no wall or diaphragm options")
+        return run_building(args.building, args)
     wall = cc.wall_from_args(args)
+    diaphragm, tie = cc.diaphragm_from_args(args, wall)
     results = [simulate(wall, cc.record_from_args(spec, args), engine=args.engine, stop_time=args.stop_time,
-                        tail=args.tail, rtol=args.rtol) for spec in args.records]
+                        tail=args.tail, rtol=args.rtol, diaphragm=diaphragm, tie=tie) for spec in args.records]
     if args.out:  # files first: a closed pipe on standard output cannot lose them
         out = cc.output_dir(args.out)
         for r in results:
@@ -36,10 +44,8 @@ def main(args):
             cc.write_atomic(out / f"{stem}.png", lambda tmp, r=r: run_report.plot(r, tmp))
             print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
     if args.json:
-        json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u,
-                   "runs": [dict(record=r.record, engine=r.engine, **r.peaks()) for r in results]},
-                  sys.stdout, indent=1, default=float)
-        print()
+        strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
+                          "runs": [dict(record=r.record, engine=r.engine, **r.peaks()) for r in results]}, sys.stdout)
     else:
         print(run_report.table(wall, results))
     return 0

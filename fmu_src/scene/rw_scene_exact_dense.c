@@ -1,0 +1,128 @@
+/* Small dense linear algebra for the exact scene engine (at most 43 x 43): an LU solve with
+ * partial pivoting, Osborne's diagonal balancing, a matrix-vector product and the least eigenvalue
+ * of a symmetric 2 x 2. Written here rather than taken from LAPACK: these are a few dozen lines and
+ * the engine library stays free of a Fortran runtime. */
+#include "rw_scene_exact_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+static void swap_rows(double *A, int cols, int i, int j)
+{
+    int k;
+    for (k = 0; k < cols; k++) {
+        const double v = A[i * cols + k];
+        A[i * cols + k] = A[j * cols + k];
+        A[j * cols + k] = v;
+    }
+}
+
+int sx_lu_solve(int n, double *A, double *B, int nrhs)
+{
+    int i, j, k;
+    for (k = 0; k < n; k++) {
+        int p = k;
+        for (i = k + 1; i < n; i++)
+            if (fabs(A[i * n + k]) > fabs(A[p * n + k])) p = i;
+        if (!(fabs(A[p * n + k]) > 0.0)) return 1;
+        if (p != k) {
+            swap_rows(A, n, p, k);
+            swap_rows(B, nrhs, p, k);
+        }
+        for (i = k + 1; i < n; i++) {
+            const double m = A[i * n + k] / A[k * n + k];
+            if (m == 0.0) continue;
+            for (j = k + 1; j < n; j++) A[i * n + j] -= m * A[k * n + j];
+            for (j = 0; j < nrhs; j++) B[i * nrhs + j] -= m * B[k * nrhs + j];
+        }
+    }
+    for (k = n - 1; k >= 0; k--)
+        for (j = 0; j < nrhs; j++) {
+            double v = B[k * nrhs + j];
+            for (i = k + 1; i < n; i++) v -= A[k * n + i] * B[i * nrhs + j];
+            B[k * nrhs + j] = v / A[k * n + k];
+        }
+    return 0;
+}
+
+/* off-diagonal absolute sums of row i and column i of B */
+static void row_col_sums(int n, const double *B, int i, double *r, double *c)
+{
+    int j;
+    *r = *c = 0.0;
+    for (j = 0; j < n; j++) {
+        if (j == i) continue;
+        *r += fabs(B[i * n + j]);
+        *c += fabs(B[j * n + i]);
+    }
+}
+
+/* Osborne's iteration with powers of 2 (exact scaling): S^-1 A S with rows and columns of
+ * comparable size, so that its infinity norm is near the spectral radius. */
+void sx_balance(int n, const double *A, double *S, double *norm)
+{
+    double B[SX_MAX_N * SX_MAX_N];
+    int i, j, sweep, changed = 1;
+    memcpy(B, A, sizeof(double) * (size_t)(n * n));
+    for (i = 0; i < n; i++) S[i] = 1.0;
+    for (sweep = 0; sweep < 60 && changed; sweep++) {
+        changed = 0;
+        for (i = 0; i < n; i++) {
+            double r, c, f;
+            row_col_sums(n, B, i, &r, &c);
+            if (!(r > 0.0 && c > 0.0)) continue;
+            f = exp2(round(0.5 * log2(r / c)));
+            if (f == 1.0 || !(c * f + r / f < 0.95 * (c + r))) continue;
+            S[i] *= f;
+            for (j = 0; j < n; j++) {
+                B[i * n + j] /= f;
+                B[j * n + i] *= f;
+            }
+            changed = 1;
+        }
+    }
+    *norm = 0.0;
+    for (i = 0; i < n; i++) {
+        double r = 0.0;
+        for (j = 0; j < n; j++) r += fabs(B[i * n + j]);
+        if (r > *norm) *norm = r;
+    }
+}
+
+/* four rows at a time: each row's sum keeps its order (the same result), the four chains of
+ * additions overlap (this product is most of a quiet step's arithmetic) */
+void sx_matvec(int rows, int cols, const double *A, const double *x, double *y)
+{
+    int i = 0, j;
+    for (; i + 4 <= rows; i += 4) {
+        const double *a0 = A + (size_t)i * (size_t)cols, *a1 = a0 + cols, *a2 = a1 + cols, *a3 = a2 + cols;
+        double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0;
+        for (j = 0; j < cols; j++) {
+            const double xj = x[j];
+            v0 += a0[j] * xj, v1 += a1[j] * xj, v2 += a2[j] * xj, v3 += a3[j] * xj;
+        }
+        y[i] = v0, y[i + 1] = v1, y[i + 2] = v2, y[i + 3] = v3;
+    }
+    for (; i < rows; i++) {
+        const double *a = A + (size_t)i * (size_t)cols;
+        double v = 0.0;
+        for (j = 0; j < cols; j++) v += a[j] * x[j];
+        y[i] = v;
+    }
+}
+
+void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2])
+{
+    const double a = A[0][0], d = A[1][1], b = 0.5 * (A[0][1] + A[1][0]);
+    const double theta = 0.5 * atan2(2.0 * b, a - d), c = cos(theta), s = sin(theta);
+    e[0][0] = c, e[0][1] = s;   /* the rotation that diagonalises [[a, b], [b, d]] */
+    e[1][0] = -s, e[1][1] = c;
+    mu[0] = a * c * c + 2.0 * b * c * s + d * s * s;
+    mu[1] = a * s * s - 2.0 * b * c * s + d * c * c;
+}
+
+double sx_sym2_min_eig(const double A[2][2])
+{
+    const double a = A[0][0], d = A[1][1], b = 0.5 * (A[0][1] + A[1][0]);
+    return 0.5 * (a + d) - sqrt(0.25 * (a - d) * (a - d) + b * b);
+}

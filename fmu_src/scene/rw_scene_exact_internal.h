@@ -1,0 +1,213 @@
+/* The exact scene engine's shared pieces (rw_scene_exact*.c): a scene's linear region, its exact
+ * propagators over a step length, polynomial tools and the run's state. Internal, not installed.
+ *
+ * Augmented state xa = (x, ag, ag', 1) of length na = n + 3, x = (X, X') the region's n = 2 ndof
+ * first-order states: xa' = Aa xa exactly while the record is linear, so the motion over a step
+ * of length h is xa(u h) = sum_k X_k u^k with X_{k+1} = h/(k+1) Aa X_k (u in [0, 1]). */
+#ifndef RW_SCENE_EXACT_INTERNAL_H
+#define RW_SCENE_EXACT_INTERNAL_H
+
+#include <complex.h>
+#include <float.h>
+#include <math.h>
+
+#include "rw_scene_exact.h"
+
+#define SX_MAX_DOF (4 * RW_SCENE_MAX_STOREYS) /* per storey: a wall's q1, q2, the floor, the diaphragm */
+#define SX_MAX_N (2 * SX_MAX_DOF)
+#define SX_MAX_NA (SX_MAX_N + 3)
+#define SX_MAX_F (4 * RW_SCENE_MAX_STOREYS)     /* watched linear functionals of the state */
+#define SX_MAX_TERMS (4 * RW_SCENE_MAX_STOREYS) /* rank-one terms of the viscous dissipation */
+#define SX_LO 6          /* degree of the quiet test's polynomials */
+#define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
+#define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
+#define SX_STEPS 8       /* step lengths cached per region */
+#define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) ... */
+#define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
+#define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
+
+/* kinds of functionals */
+enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC };
+
+/* what selects a region: which walls stand and their hinge moments Q = c + J q */
+typedef struct {
+    int standing[RW_SCENE_MAX_STOREYS];
+    double c[RW_SCENE_MAX_STOREYS][2], J[RW_SCENE_MAX_STOREYS][2][2];
+    double cap[RW_SCENE_MAX_STOREYS]; /* the wall's hinge capacities cap_b + cap_m: the scale of c */
+} sx_key;
+
+/* a standing wall's collapse indicator on the region: G(q) = q.A q - c.q (rw_collapse_form) */
+typedef struct {
+    int active;          /* outside the law's elastic range: the collapse test can fire */
+    double A[2][2], c[2];
+    double lam_min;      /* least eigenvalue of A's symmetric part */
+    double mu[2], e[2][2]; /* A's symmetric part = sum_k mu_k e_k e_k^T (G without the rounding of a
+                              stiff tie's large entries: q.A q = sum_k mu_k (e_k.q)^2) */
+} sx_collapse;
+
+/* A region's modes (the eigen-decomposition of A, LAPACK's dgeev), for the slow steps' quiet test:
+ * x = Vr y, y = Winv x; a mode is a real eigenvalue (coordinate y_j) or a complex pair lambda =
+ * sigma + i omega (zeta = y_j - i y_{j+1}), with zeta' = lambda zeta + g0 + g1 ag, and functional
+ * f's share of it Re(a[f] zeta). The motion stays exp(Aa h)'s: the modes only bound it. */
+typedef struct {
+    int valid;       /* decomposed, and well enough conditioned to bound with */
+    int count;
+    int first[SX_MAX_N], pair[SX_MAX_N];
+    double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
+    double complex a[SX_MAX_F][SX_MAX_N];
+    double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
+    double cond;     /* the product of Vr's and Winv's balanced norms */
+    double Winv[SX_MAX_N * SX_MAX_N];
+} sx_modes;
+
+/* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
+ * coefficients' and `tail`, its derivative's within theirs and `dtail` */
+typedef struct {
+    double coef[SX_LO + 1], tail, dtail;
+    int deg; /* the coefficients in use (the modes' polynomials are quadratics) */
+} sx_lopoly;
+
+/* the exact propagators of a region over one step length h */
+typedef struct {
+    double h;
+    long used;
+    int is_long;  /* longer than the series converges over: E, Wd and wg by squaring, no T or rows */
+    int deg;      /* degree of the matrix series */
+    double rho;   /* ||A_s|| h */
+    double *E;    /* na x na: exp(Aa h) */
+    double *T;    /* n x na: x part of (Aa h)^(SX_LO+1)/(SX_LO+1)!, the quiet test's tail */
+    double *Wd;   /* na x na: the viscous dissipation over the step as a quadratic form of xa */
+    double *wg;   /* 2 x na: the momentum's integrals over the step of E(tau) and tau E(tau) */
+    double *rows; /* nf x (SX_LO+1) x na: functional f's Taylor coefficients l.(Aa h)^k/k! */
+} sx_step;
+
+typedef struct {
+    sx_key key;
+    long used;
+    int ndof, n, na, nf;
+    int pos[SX_MAX_DOF], vel[SX_MAX_DOF]; /* each DOF's displacement and velocity in the scene state */
+    int wall_dof[RW_SCENE_MAX_STOREYS], floor_dof[RW_SCENE_MAX_STOREYS], diaph_dof[RW_SCENE_MAX_STOREYS];
+    double *Aa;                /* na x na, row-major */
+    double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */
+    double norm;               /* ||A_s||_inf */
+    double F[SX_MAX_F][SX_MAX_NA]; /* functional rows over xa */
+    int f_kind[SX_MAX_F], f_storey[SX_MAX_F];
+    double f_scale[SX_MAX_F];  /* sum_i |l_i| S_i over x: a functional's share of a tail in the S norm */
+    double mom[SX_MAX_NA];     /* the horizontal momentum relative to the ground, a row over xa */
+    /* the scene's energy on the region, (1/2) V.M V + (1/2) X.K X - f.X + e_const (M, K: its
+     * Hessians; e_const: from rw_scene_energy at a state of the region) */
+    double Mq[SX_MAX_DOF * SX_MAX_DOF], Kq[SX_MAX_DOF * SX_MAX_DOF], fq[SX_MAX_DOF], e_const;
+    int nterms;                /* viscous dissipation rate = sum_t dcoef_t (dvec_t . xa)^2 */
+    double dcoef[SX_MAX_TERMS], dvec[SX_MAX_TERMS][SX_MAX_NA];
+    sx_collapse col[RW_SCENE_MAX_STOREYS];
+    sx_modes modes;
+    sx_step step[SX_STEPS];
+    double *blob;              /* every array above that is allocated */
+} sx_region;
+
+/* a step's Taylor series of the augmented state (X[k*na + i]) and its tail bound in the S norm */
+typedef struct {
+    int deg;
+    double L;        /* step length */
+    double X[(SX_MAX_DEG + 1) * SX_MAX_NA];
+    double tail;     /* max_i |sum_{k>deg} X_k,i| / S_i */
+} sx_series;
+
+/* one indicator of a wall: z = c + s|w| + t w with w = a.(q1, q2) (rw_indicator_line), or the
+ * collapse indicator's G */
+typedef struct {
+    double a0, a1, s, t, c;
+} sx_line;
+
+typedef struct {
+    rw_scene sc;
+    const rw_scene_record *rec;
+    const rw_scene_options *opt;
+    rw_scene_result *res;
+    double x[RW_SCENE_NX];
+    double t;
+    sx_region *regions;
+    int nregions, cur, capacity;
+    long stamp;
+    int nlines[RW_SCENE_MAX_STOREYS];
+    sx_line lines[RW_SCENE_MAX_STOREYS][SX_MAX_LINES];
+    double work_ground, work_damping, losses;
+    size_t hint, next_out;
+    double last_event_t;
+    int same_instant;
+    int error;               /* an event's error code (Zeno, no memory, a singular mass matrix) */
+} sx_run;
+
+/* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */
+double sx_ground(sx_run *R, double t);  /* the record at t */
+int sx_handle_events(sx_run *R);        /* the event update at R->t, then the region: 0 or an error code */
+int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
+
+/* ---- dense pieces (rw_scene_exact_dense.c) ---- */
+int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */
+void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
+void sx_matvec(int rows, int cols, const double *A, const double *x, double *y);
+double sx_sym2_min_eig(const double A[2][2]);
+void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
+
+/* ---- the region (rw_scene_exact_region.c) ---- */
+/* the key of the region the motion at x goes into; 0, or an error code */
+void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key);
+int sx_key_equal(const sx_key *a, const sx_key *b);
+/* builds region r for key (allocates; frees an old build first): 0 or RW_SCENE_NO_MEMORY */
+int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r);
+void sx_region_free(sx_region *r);
+/* the scene state's (x, ag, slope) as the region's augmented state, and back */
+void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[]);
+void sx_scatter(const sx_region *r, const double xa[], double x[]);
+/* the region's quadratic energy at the scene state x, without e_const */
+double sx_region_energy(const sx_region *r, const double x[]);
+
+/* ---- propagators (rw_scene_exact_series.c) ---- */
+/* the step table of length h (cached, built if missing; lengths within tol share one: the
+ * rounding of the record's times) */
+sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
+/* that rounding at time t */
+#define SX_TIME_TOL(t) (16.0 * DBL_EPSILON * fmax(fabs(t), 1.0))
+/* the Taylor series of the augmented state over a step of length L <= the region's limit */
+void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s);
+/* the longest step the series is built for */
+double sx_hmax(const sx_region *r);
+
+/* ---- polynomials on [0, 1] (rw_scene_exact_poly.c) ---- */
+double sx_poly_eval(const double *p, int deg, double u);
+double sx_poly_deriv(const double *p, int deg, double u);
+/* the first u in (0, 1] where g = p + r changes sign from g(0) > 0 (p within `err` of the function),
+ * or 2 if none */
+double sx_poly_first_root(const double *p, int deg, double err);
+/* max |p| over [0, b] if it exceeds best (else best) */
+double sx_poly_max_abs(const double *p, int deg, double err, double b, double best);
+/* integral over [0, b] of p */
+double sx_poly_integral(const double *p, int deg, double b);
+/* the square of p (degree 2 deg) */
+void sx_poly_square(const double *p, int deg, double *sq);
+void sx_poly_product(const double *p, const double *q, int deg, double *pq);
+
+/* ---- modes and slow steps (rw_scene_exact_modes.c) ---- */
+void sx_modes_build(sx_region *r);
+/* each functional's polynomial over a step of length h from xa0 (the trend of the slow modes and the
+ * fast modes' quasi-static part, with the slow modes' remainder and the fast modes' free motion as
+ * the tail); 0 if the region has no usable modes */
+int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
+
+/* ---- watching a step (rw_scene_exact_watch.c) ---- */
+/* the quiet test on given polynomials of the functionals (xa1: the exact end state): 0 (quiet: the
+ * peaks taken from the ends), or why not */
+enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[]);
+/* the walls' indicator lines under the current modes (after every event) */
+void sx_watch_lines(sx_run *R);
+/* the quiet test of a step from its start state with its table: 1 when no indicator can change
+ * sign and no peak can rise over it (then the peaks are those of its ends) */
+int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[]);
+/* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
+double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
+/* the work of the ground and of the dashpots over [0, u] of a series */
+void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping);
+
+#endif

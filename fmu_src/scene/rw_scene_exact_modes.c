@@ -1,0 +1,189 @@
+/* A region's modes and the exact scene engine's slow steps. A stiff tie (or a stiff or light
+ * diaphragm) is a mode far faster than the walls' rocking; over a step that turns it by many
+ * radians its motion is its quasi-static part (affine in time while the record is linear) plus a
+ * free oscillation whose size the mode's amplitude bounds: a band. The other modes are a quadratic
+ * in time with a bounded remainder. So a step of the record's interval is cleared by one test on
+ * these polynomials, as docs/engine.md's band does for the single wall; the motion over it is
+ * still exp(Aa h)'s (the modes only bound it), and a step the test does not clear is halved down
+ * to the exact steps. The eigen-decomposition is LAPACK's dgeev. */
+#include "rw_scene_exact_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+/* LAPACK: eigenvalues and right eigenvectors of a general real matrix (column-major) */
+extern void dgeev_(const char *jobvl, const char *jobvr, const int *n, double *a, const int *lda, double *wr,
+                   double *wi, double *vl, const int *ldvl, double *vr, const int *ldvr, double *work, const int *lwork,
+                   int *info);
+
+#define SX_MODES_COND 1e8 /* a decomposition worse conditioned than this bounds nothing */
+/* the bounds' allowance for the decomposition's rounding: the modal values' error relative to
+ * their size is a few ulps times the condition */
+#define SX_MODES_MARGIN(cond) (256.0 * DBL_EPSILON * (cond) + 1e-12)
+
+/* dgeev on A (the first-order block of Aa): eigenvalues and Vr (row-major, real form: a pair's
+ * real and imaginary parts in two columns) */
+static int decompose(const sx_region *r, double *wr, double *wi, double *Vr)
+{
+    const int n = r->n;
+    double A[SX_MAX_N * SX_MAX_N], VR[SX_MAX_N * SX_MAX_N], work[8 * SX_MAX_N], dummy = 0.0;
+    const int lwork = 8 * SX_MAX_N, one = 1;
+    int i, j, info = 0;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) A[i + j * n] = r->Aa[i * r->na + j];
+    dgeev_("N", "V", &n, A, &n, wr, wi, &dummy, &one, VR, &n, work, &lwork, &info);
+    if (info != 0) return 1;
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) Vr[i * n + j] = VR[i + j * n];
+    return 0;
+}
+
+/* the balanced norms of Vr and Winv: their product bounds how far rounding in the coordinates goes */
+static double condition(const sx_region *r, const double *Vr, const double *Winv)
+{
+    const int n = r->n;
+    double nv = 0.0, nw = 0.0;
+    int i, j;
+    for (i = 0; i < n; i++) {
+        double rv = 0.0, rw = 0.0;
+        for (j = 0; j < n; j++) {
+            rv += fabs(Vr[i * n + j]) / r->scale[i];
+            rw += fabs(Winv[i * n + j]) * r->scale[j];
+        }
+        nv = fmax(nv, rv), nw = fmax(nw, rw);
+    }
+    return nv * nw;
+}
+
+/* the modal forcing of a column of Aa (the constant's or ag's) */
+static void modal_forcing(const sx_region *r, const sx_modes *m, int col, double complex *g)
+{
+    const int n = r->n;
+    double y[SX_MAX_N], v[SX_MAX_N];
+    int k;
+    for (k = 0; k < n; k++) v[k] = r->Aa[k * r->na + col];
+    sx_matvec(n, n, m->Winv, v, y);
+    for (k = 0; k < m->count; k++)
+        g[k] = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
+}
+
+static void shares(const sx_region *r, sx_modes *m, const double *Vr)
+{
+    const int n = r->n;
+    int f, k, i;
+    for (f = 0; f < r->nf; f++)
+        for (k = 0; k < m->count; k++) {
+            double re = 0.0, im = 0.0;
+            for (i = 0; i < n; i++) {
+                re += r->F[f][i] * Vr[i * n + m->first[k]];
+                if (m->pair[k]) im += r->F[f][i] * Vr[i * n + m->first[k] + 1];
+            }
+            m->a[f][k] = re + I * im;
+            m->abs_a[f][k] = sqrt(re * re + im * im);
+        }
+}
+
+void sx_modes_build(sx_region *r)
+{
+    sx_modes *m = &r->modes;
+    const int n = r->n;
+    double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], LU[SX_MAX_N * SX_MAX_N];
+    int i, j;
+    memset(m, 0, sizeof *m);
+    if (decompose(r, wr, wi, Vr)) return;
+    memcpy(LU, Vr, sizeof(double) * (size_t)(n * n));
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) m->Winv[i * n + j] = i == j;
+    if (sx_lu_solve(n, LU, m->Winv, n)) return;
+    m->cond = condition(r, Vr, m->Winv);
+    if (!(m->cond < SX_MODES_COND)) return;
+    for (i = 0; i < n; i++) {
+        const int k = m->count++;
+        m->first[k] = i;
+        m->pair[k] = wi[i] != 0.0;
+        m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
+        m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
+        if (m->pair[k]) i++;
+    }
+    modal_forcing(r, m, r->n + 2, m->g0);
+    modal_forcing(r, m, r->n, m->g1);
+    shares(r, m, Vr);
+    m->valid = 1;
+}
+
+/* one mode over a step in u = tau/h: its part of a functional's polynomial (c[0..2], times the
+ * share), and what bounds the rest (the slow mode's cubic remainder, or the fast mode's free
+ * oscillation), for the value and for its rate */
+typedef struct {
+    double complex c[3];
+    double bound, dbound;
+} mode_step;
+
+static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z) * cimag(z)); }
+
+/* The two ways to bound a mode over a step, whichever is tighter: a fast mode's quasi-static part
+ * (exact while the input is linear) with its free oscillation, which keeps its size (times the
+ * growth e^(Re lam h)) as a band; a slow mode's quadratic z0 + z'(0) tau + z''(0) tau^2/2 with the
+ * remainder |lam| |z''(0)| e^(max(Re lam, 0) h) tau^3/6 (z''' = lam z'' while the input is linear). */
+static mode_step mode_over(const sx_modes *m, int k, double complex z0, double ag0, double slope, double h)
+{
+    const double complex lam = m->lam[k], b0 = m->g0[k] + m->g1[k] * ag0, b1 = m->g1[k] * slope;
+    const double grow = creal(lam) > 0.0 ? exp(creal(lam) * h) : 1.0, wh = mag(lam) * h;
+    const double complex d1 = lam * z0 + b0, d2 = lam * d1 + b1;
+    const double r3 = wh * mag(d2) * grow * h * h;
+    mode_step s;
+    s.c[0] = z0;
+    s.c[1] = d1 * h;
+    s.c[2] = 0.5 * d2 * h * h;
+    s.bound = r3 / 6.0;
+    s.dbound = r3 / 2.0;
+    if (wh > 0.5) {
+        const double complex il = m->inv_lam[k], qs = -(b0 + b1 * il) * il;
+        const double band = mag(z0 - qs) * grow;
+        if (band < s.bound) {
+            s.c[0] = qs;
+            s.c[1] = -b1 * il * h;
+            s.c[2] = 0.0;
+            s.bound = band;
+            s.dbound = band * wh;
+        }
+    }
+    return s;
+}
+
+int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F])
+{
+    const sx_modes *m = &r->modes;
+    const double ag0 = xa0[r->n], slope = xa0[r->n + 1];
+    double y[SX_MAX_N], size[SX_MAX_F];
+    int f, k, j;
+    if (!m->valid) return 0;
+    sx_matvec(r->n, r->n, m->Winv, xa0, y);
+    for (f = 0; f < r->nf; f++) { /* the functionals' own terms in ag and the constant */
+        memset(&P[f], 0, sizeof P[f]);
+        P[f].coef[0] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
+        P[f].coef[1] = r->F[f][r->n] * slope * h;
+        P[f].deg = 2;
+        size[f] = fabs(P[f].coef[0]) + fabs(P[f].coef[1]);
+    }
+    for (k = 0; k < m->count; k++) {
+        const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
+        const mode_step s = mode_over(m, k, z0, ag0, slope, h);
+        const double cr[3] = {creal(s.c[0]), creal(s.c[1]), creal(s.c[2])};
+        const double ci[3] = {cimag(s.c[0]), cimag(s.c[1]), cimag(s.c[2])};
+        const double mode_size = mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound;
+        for (f = 0; f < r->nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
+            const double ar = creal(m->a[f][k]), ai = cimag(m->a[f][k]), abs_a = m->abs_a[f][k];
+            for (j = 0; j < 3; j++) P[f].coef[j] += ar * cr[j] - ai * ci[j];
+            P[f].tail += abs_a * s.bound;
+            P[f].dtail += abs_a * s.dbound;
+            size[f] += abs_a * mode_size;
+        }
+    }
+    for (f = 0; f < r->nf; f++) {
+        P[f].tail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
+        P[f].dtail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
+    }
+    return 1;
+}

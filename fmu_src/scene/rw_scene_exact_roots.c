@@ -1,0 +1,159 @@
+/* A step of the exact scene engine examined on its exact series (rw_scene_exact_watch.c's quiet
+ * test did not clear it): the first root of any standing wall's event indicators, the peaks up to
+ * it, and the work of the ground and the dashpots over it, on the polynomials of the series. */
+#include "rw_scene_exact_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define SX_TOL 32.0 * DBL_EPSILON
+#define SX_PMAX (2 * SX_MAX_DEG + 2)
+
+static double sgn(double v) { return (v > 0.0) - (v < 0.0); }
+
+/* functional f's polynomial over the step */
+static void poly_of(const sx_region *r, int f, const sx_series *s, double *p)
+{
+    int k, j;
+    for (k = 0; k <= s->deg; k++) {
+        const double *X = s->X + (size_t)k * (size_t)r->na;
+        double v = 0.0;
+        for (j = 0; j < r->na; j++) v += r->F[f][j] * X[j];
+        p[k] = v;
+    }
+}
+
+/* the sign an indicator starts with: its own when clear of rounding, else its direction */
+static double start_sign(double z0, double tol, double dz, double ddz)
+{
+    if (fabs(z0) > tol) return sgn(z0);
+    if (dz != 0.0) return sgn(dz);
+    if (ddz != 0.0) return sgn(ddz);
+    return z0 < 0.0 ? -1.0 : 1.0;
+}
+
+/* the first root of g = sgn0 (c + m W) + 2 tol */
+static double affine_root(const double *W, int deg, double c, double m, double sgn0, double tol)
+{
+    double g[SX_PMAX];
+    int k;
+    for (k = 0; k <= deg; k++) g[k] = sgn0 * m * W[k];
+    g[0] += sgn0 * c + 2.0 * tol;
+    return sx_poly_first_root(g, deg, 0.0);
+}
+
+/* z = c + s|w| + t w (s = 0, or s > 0 with c <= 0: one branch at most above zero) */
+static double line_root(const sx_line *L, const double *Q1, const double *Q2, int deg)
+{
+    double W[SX_PMAX], z0, tol, sw, dz, s0;
+    int k;
+    for (k = 0; k <= deg; k++) W[k] = L->a0 * Q1[k] + L->a1 * Q2[k];
+    z0 = L->c + L->s * fabs(W[0]) + L->t * W[0];
+    tol = SX_TOL * (fabs(L->c) + fabs(L->a0 * Q1[0]) + fabs(L->a1 * Q2[0])) + DBL_MIN;
+    sw = W[0] != 0.0 ? sgn(W[0]) : sgn(W[1]);
+    dz = (L->s * sw + L->t) * W[1];
+    s0 = start_sign(z0, tol, dz, (L->s * sw + L->t) * (deg >= 2 ? W[2] : 0.0));
+    if (L->s == 0.0) return affine_root(W, deg, L->c, L->t, s0, tol);
+    if (s0 > 0.0) return affine_root(W, deg, L->c, L->t + L->s * sw, 1.0, tol); /* the branch above zero */
+    return fmin(affine_root(W, deg, L->c, L->t + L->s, -1.0, tol), affine_root(W, deg, L->c, L->t - L->s, -1.0, tol));
+}
+
+/* G(q) = q.A q - c.q along the step (degree 2 deg) */
+static double collapse_root(const sx_collapse *c, const double *Q1, const double *Q2, int deg)
+{
+    double a[SX_PMAX], b[SX_PMAX], m[SX_PMAX], G[SX_PMAX], tol, s0;
+    const double q1 = Q1[0], q2 = Q2[0];
+    int k;
+    sx_poly_square(Q1, deg, a);
+    sx_poly_square(Q2, deg, b);
+    sx_poly_product(Q1, Q2, deg, m);
+    for (k = 0; k <= 2 * deg; k++) G[k] = c->A[0][0] * a[k] + (c->A[0][1] + c->A[1][0]) * m[k] + c->A[1][1] * b[k];
+    for (k = 0; k <= deg; k++) G[k] -= c->c[0] * Q1[k] + c->c[1] * Q2[k];
+    tol = SX_TOL * (fabs(c->A[0][0] * q1 * q1) + fabs((c->A[0][1] + c->A[1][0]) * q1 * q2) + fabs(c->A[1][1] * q2 * q2) +
+                    fabs(c->c[0] * q1) + fabs(c->c[1] * q2)) + DBL_MIN;
+    s0 = start_sign(G[0], tol, G[1], G[2]);
+    for (k = 0; k <= 2 * deg; k++) G[k] *= s0;
+    G[0] += 2.0 * tol;
+    return sx_poly_first_root(G, 2 * deg, 0.0);
+}
+
+/* a storey's polynomials over the step */
+typedef struct {
+    double q1[SX_PMAX], q2[SX_PMAX], deform[SX_PMAX], acc[SX_PMAX];
+    double err_q1, err_q2, err_deform, err_acc;
+    int wall;
+} storey_series;
+
+static void storey_polys(const sx_region *r, const sx_series *s, storey_series *P)
+{
+    int f;
+    for (f = 0; f < r->nf; f++) {
+        storey_series *S = &P[r->f_storey[f]];
+        const double err = r->f_scale[f] * s->tail;
+        switch (r->f_kind[f]) {
+        case SX_Q1: poly_of(r, f, s, S->q1), S->err_q1 = err, S->wall = 1; break;
+        case SX_Q2: poly_of(r, f, s, S->q2), S->err_q2 = err; break;
+        case SX_DEFORM: poly_of(r, f, s, S->deform), S->err_deform = err; break;
+        default: poly_of(r, f, s, S->acc), S->err_acc = err; break;
+        }
+    }
+}
+
+static void storey_peaks(sx_run *R, int i, const storey_series *S, int deg, double u)
+{
+    rw_scene_result *res = R->res;
+    if (S->wall) {
+        const double h2 = 0.5 * R->sc.S.wall[i].h;
+        double p[SX_PMAX];
+        int k;
+        for (k = 0; k <= deg; k++) p[k] = h2 * S->q1[k];
+        res->peak_s1[i] = sx_poly_max_abs(p, deg, h2 * S->err_q1, u, res->peak_s1[i]);
+        for (k = 0; k <= deg; k++) p[k] = h2 * (S->q1[k] + S->q2[k]);
+        res->peak_s2[i] = sx_poly_max_abs(p, deg, h2 * (S->err_q1 + S->err_q2), u, res->peak_s2[i]);
+    }
+    res->peak_diaphragm[i] = sx_poly_max_abs(S->deform, deg, S->err_deform, u, res->peak_diaphragm[i]);
+    res->peak_base_acc[i] = sx_poly_max_abs(S->acc, deg, S->err_acc, u, res->peak_base_acc[i]);
+}
+
+double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
+{
+    storey_series P[RW_SCENE_MAX_STOREYS];
+    double first = 2.0;
+    int i, k;
+    memset(P, 0, sizeof P);
+    storey_polys(r, s, P);
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        if (!P[i].wall) continue;
+        for (k = 0; k < R->nlines[i]; k++) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
+        if (r->col[i].active) first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));
+    }
+    for (i = 0; i < R->sc.S.n_storeys; i++) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0));
+    return first;
+}
+
+void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping)
+{
+    double mom[SX_PMAX], ag[SX_PMAX], prod[SX_PMAX], d[SX_PMAX], sq[SX_PMAX];
+    const int na = r->na, deg = s->deg;
+    int k, j, t;
+    memset(ag, 0, sizeof ag);
+    for (k = 0; k <= deg; k++) {
+        const double *X = s->X + (size_t)k * (size_t)na;
+        mom[k] = 0.0;
+        for (j = 0; j < r->n; j++) mom[k] += r->mom[j] * X[j];
+        ag[k] = X[r->n]; /* zero beyond degree 1 */
+    }
+    sx_poly_product(ag, mom, deg, prod);
+    *w_ground = -s->L * sx_poly_integral(prod, 2 * deg, u);
+    *w_damping = 0.0;
+    for (t = 0; t < r->nterms; t++) {
+        for (k = 0; k <= deg; k++) {
+            const double *X = s->X + (size_t)k * (size_t)na;
+            d[k] = 0.0;
+            for (j = 0; j < r->n; j++) d[k] += r->dvec[t][j] * X[j];
+        }
+        sx_poly_square(d, deg, sq);
+        *w_damping += r->dcoef[t] * s->L * sx_poly_integral(sq, 2 * deg, u);
+    }
+}

@@ -1,0 +1,238 @@
+/* The exact propagators of a region: the Taylor series of the augmented state over a step, and a
+ * step length's tables (exp(Aa h), the quiet test's polynomial rows and tail, the work integrals)
+ * built once per region and length. A step is at most SX_RHO / ||A_s|| long (A_s the balanced
+ * first-order matrix), so that the series' terms fall at least as fast as rho^k / k! in the
+ * balanced norm: no cancellation, and a tail bounded by its first term (docs/scenes.md). */
+#include "rw_scene_exact_internal.h"
+
+#include <math.h>
+#include <string.h>
+
+#define SX_SERIES_REL 1e-19 /* the series stops where its terms are this small against the largest */
+
+double sx_hmax(const sx_region *r)
+{
+    return r->norm > 0.0 ? SX_RHO / r->norm : INFINITY;
+}
+
+/* max_i |v_i| / S_i over the first-order states */
+static double scaled_norm(const sx_region *r, const double *v)
+{
+    double m = 0.0;
+    int i;
+    for (i = 0; i < r->n; i++) {
+        const double a = fabs(v[i]) / r->scale[i];
+        if (a > m) m = a;
+    }
+    return m;
+}
+
+/* the degree at which rho^(k+1)/(k+1)! (the matrix series' tail in the S norm) is negligible */
+static int matrix_degree(double rho)
+{
+    double term = rho;
+    int k = 0;
+    while (k < SX_MAX_DEG && term > SX_SERIES_REL) {
+        k++;
+        term *= rho / (k + 1);
+    }
+    return k < SX_LO + 1 ? SX_LO + 1 : k;
+}
+
+void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s)
+{
+    const int na = r->na;
+    const double rho = r->norm * L;
+    double biggest = scaled_norm(r, xa0), nk = 0.0;
+    int k;
+    memcpy(s->X, xa0, sizeof(double) * (size_t)na);
+    s->L = L;
+    for (k = 0; k < SX_MAX_DEG; k++) {
+        double *next = s->X + (size_t)(k + 1) * (size_t)na;
+        int i;
+        sx_matvec(na, na, r->Aa, s->X + (size_t)k * (size_t)na, next);
+        for (i = 0; i < na; i++) next[i] *= L / (k + 1);
+        nk = scaled_norm(r, next);
+        if (nk > biggest) biggest = nk;
+        /* from degree 2 on the inputs' entries are zero: the rest of the series is A's alone */
+        if (k + 1 >= 3 && nk <= SX_SERIES_REL * biggest && rho < k + 2) break;
+    }
+    s->deg = k; /* X_{k+1} is the tail's first term, not part of the polynomial */
+    s->tail = rho < s->deg + 2 ? nk / (1.0 - rho / (s->deg + 2)) : INFINITY;
+}
+
+/* rows r_{k+1} = h/(k+1) r_k Aa of a row vector r_0 over xa */
+static void row_step(const sx_region *r, const double *rk, int k, double h, double *next)
+{
+    const int na = r->na;
+    int i, j;
+    for (j = 0; j < na; j++) next[j] = 0.0;
+    for (i = 0; i < na; i++) {
+        const double v = rk[i];
+        if (v == 0.0) continue;
+        for (j = 0; j < na; j++) next[j] += v * r->Aa[i * na + j];
+    }
+    for (j = 0; j < na; j++) next[j] *= h / (k + 1);
+}
+
+/* E = sum_k (Aa h)^k/k!, and T = the x rows of the term SX_LO+1 */
+static void exponential(const sx_region *r, sx_step *st)
+{
+    const int na = r->na;
+    double B[SX_MAX_NA * SX_MAX_NA], Bn[SX_MAX_NA * SX_MAX_NA];
+    int i, j, k, l;
+    memset(B, 0, sizeof(double) * (size_t)(na * na));
+    for (i = 0; i < na; i++) B[i * na + i] = 1.0;
+    memcpy(st->E, B, sizeof(double) * (size_t)(na * na));
+    for (k = 0; k < st->deg; k++) {
+        for (i = 0; i < na; i++)
+            for (j = 0; j < na; j++) {
+                double v = 0.0;
+                for (l = 0; l < na; l++) v += r->Aa[i * na + l] * B[l * na + j];
+                Bn[i * na + j] = v * st->h / (k + 1);
+            }
+        memcpy(B, Bn, sizeof(double) * (size_t)(na * na));
+        for (i = 0; i < na * na; i++) st->E[i] += B[i];
+        if (k + 1 == SX_LO + 1) memcpy(st->T, B, sizeof(double) * (size_t)(r->n * na));
+    }
+}
+
+/* the functionals' rows l.(Aa h)^k/k! for k <= SX_LO, and the momentum's work integrals */
+static void rows(const sx_region *r, sx_step *st)
+{
+    const int na = r->na, D = SX_LO + 1;
+    double cur[SX_MAX_NA], next[SX_MAX_NA];
+    int f, k, j;
+    for (f = 0; f < r->nf; f++) {
+        double *out = st->rows + (size_t)f * (size_t)(D * na);
+        memcpy(out, r->F[f], sizeof(double) * (size_t)na);
+        for (k = 0; k < SX_LO; k++) row_step(r, out + k * na, k, st->h, out + (k + 1) * na);
+    }
+    memcpy(cur, r->mom, sizeof(double) * (size_t)na);
+    memset(st->wg, 0, sizeof(double) * (size_t)(2 * na));
+    for (k = 0; k <= st->deg; k++) {
+        for (j = 0; j < na; j++) {
+            st->wg[j] += st->h * cur[j] / (k + 1);
+            st->wg[na + j] += st->h * st->h * cur[j] / (k + 2);
+        }
+        row_step(r, cur, k, st->h, next);
+        memcpy(cur, next, sizeof(double) * (size_t)na);
+    }
+}
+
+/* Wd = h sum_t c_t sum_{j,k} r_tj r_tk^T / (j+k+1), r_tk = d_t.(Aa h)^k/k!: the integral over the
+ * step of the dissipation rate sum_t c_t (d_t . xa)^2 along xa(tau) = E(tau) xa0 */
+static void dissipation(const sx_region *r, sx_step *st)
+{
+    const int na = r->na, D = st->deg + 1;
+    double R[(SX_MAX_DEG + 1) * SX_MAX_NA], P[SX_MAX_NA];
+    int t, j, k, a, b;
+    memset(st->Wd, 0, sizeof(double) * (size_t)(na * na));
+    for (t = 0; t < r->nterms; t++) {
+        memcpy(R, r->dvec[t], sizeof(double) * (size_t)na);
+        for (k = 0; k + 1 < D; k++) row_step(r, R + k * na, k, st->h, R + (k + 1) * na);
+        for (k = 0; k < D; k++) {
+            const double *rk = R + k * na;
+            for (a = 0; a < na; a++) P[a] = 0.0;
+            for (j = 0; j < D; j++)
+                for (a = 0; a < na; a++) P[a] += R[j * na + a] / (j + k + 1);
+            for (a = 0; a < na; a++) {
+                const double v = r->dcoef[t] * st->h * rk[a];
+                if (v == 0.0) continue;
+                for (b = 0; b < na; b++) st->Wd[a * na + b] += v * P[b];
+            }
+        }
+    }
+}
+
+/* C = A B (na x na) */
+static void matmul(int na, const double *A, const double *B, double *C)
+{
+    int i, j, l;
+    for (i = 0; i < na; i++)
+        for (j = 0; j < na; j++) {
+            double v = 0.0;
+            for (l = 0; l < na; l++) v += A[i * na + l] * B[l * na + j];
+            C[i * na + j] = v;
+        }
+}
+
+/* the table of 2h from that of h: E(2h) = E E, Wd(2h) = Wd + E^T Wd E, and the momentum's
+ * integrals w0(2h) = w0 + w0 E, w1(2h) = w1 + (w1 + h w0) E (the semigroup E(tau + h) = E(tau) E(h)) */
+static void doubled(const sx_region *r, sx_step *st)
+{
+    const int na = r->na;
+    double T1[SX_MAX_NA * SX_MAX_NA], T2[SX_MAX_NA * SX_MAX_NA], w[SX_MAX_NA];
+    int i, j;
+    matmul(na, st->Wd, st->E, T1);
+    for (i = 0; i < na; i++)
+        for (j = 0; j < na; j++) {
+            double v = 0.0;
+            int l;
+            for (l = 0; l < na; l++) v += st->E[l * na + i] * T1[l * na + j];
+            st->Wd[i * na + j] += v;
+        }
+    for (j = 0; j < na; j++) w[j] = st->wg[na + j] + st->h * st->wg[j];
+    for (j = 0; j < na; j++) {
+        double v0 = 0.0, v1 = 0.0;
+        for (i = 0; i < na; i++) v0 += st->wg[i] * st->E[i * na + j], v1 += w[i] * st->E[i * na + j];
+        T1[j] = v0, T2[j] = v1;
+    }
+    for (j = 0; j < na; j++) st->wg[j] += T1[j], st->wg[na + j] += T2[j];
+    matmul(na, st->E, st->E, T1);
+    memcpy(st->E, T1, sizeof(double) * (size_t)(na * na));
+    st->h *= 2.0;
+}
+
+static sx_step *cached(sx_region *r, double h, double tol)
+{
+    int k;
+    for (k = 0; k < SX_STEPS; k++)
+        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= fmax(1e-12 * h, tol)) return &r->step[k];
+    return NULL;
+}
+
+/* a copy of the table of h/2 doubled (E, Wd, wg: what a long table holds) */
+static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
+{
+    const size_t nn = (size_t)(r->na * r->na);
+    memcpy(st->E, half->E, sizeof(double) * nn);
+    memcpy(st->Wd, half->Wd, sizeof(double) * nn);
+    memcpy(st->wg, half->wg, sizeof(double) * (size_t)(2 * r->na));
+    st->h = half->h;
+    st->rho = half->rho;
+    st->deg = half->deg;
+    st->is_long = 1;
+    doubled(r, st);
+}
+
+/* The table of length h: cached (a length within tol, the rounding of the record's times, is the
+ * same), or built. A step longer than the series converge over is the table of h/2 doubled (itself
+ * cached, so that the halves of a slow step find theirs ready). */
+sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
+{
+    sx_step *st = cached(r, h, tol), *half = NULL;
+    int k;
+    if (st) return (st->used = stamp), st;
+    if (r->norm * h > SX_RHO * (1.0 + 1e-12)) {
+        half = sx_step_of(r, 0.5 * h, 0.5 * tol, stamp);
+        half->used = stamp + 1; /* not the slot this one takes */
+    }
+    for (k = 0; k < SX_STEPS; k++)
+        if (!st || r->step[k].used < st->used) st = &r->step[k];
+    if (half) {
+        half->used = stamp;
+        from_half(r, half, st);
+    } else {
+        st->h = h;
+        st->is_long = 0;
+        st->rho = r->norm * h;
+        st->deg = matrix_degree(st->rho);
+        exponential(r, st);
+        rows(r, st);
+        dissipation(r, st);
+    }
+    st->used = stamp;
+    st->h = h;
+    return st;
+}

@@ -1,0 +1,143 @@
+/* How the exact scene engine takes a record interval (the record linear over it): one slow step if
+ * the modes' quiet test clears it, else its dyadic halves, down to the steps the exact series
+ * converge over, each cleared by the quiet test on its table or examined on its series (which
+ * stops at the first root and has the event handled). docs/scenes.md says how. */
+#include "rw_scene_exact_internal.h"
+
+#include <math.h>
+
+static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
+
+/* the motion over a cleared step of its table: xa1 = exp(Aa h) xa0, the work integrals */
+static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[],
+                       double t1)
+{
+    double Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
+    int k;
+    sx_matvec(r->na, r->na, st->Wd, xa0, Wx);
+    for (k = 0; k < r->na; k++) {
+        wd += xa0[k] * Wx[k];
+        m0 += st->wg[k] * xa0[k];
+        m1 += st->wg[r->na + k] * xa0[k];
+    }
+    R->work_ground -= xa0[r->n] * m0 + xa0[r->n + 1] * m1;
+    R->work_damping += wd;
+    sx_scatter(r, xa1, R->x);
+    R->t = t1;
+    R->res->steps++;
+}
+
+/* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
+ * at an event (handled here) */
+static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slope)
+{
+    while (R->t < t1) {
+        sx_region *r = current(R);
+        const int parts = (int)ceil((t1 - R->t) / sx_hmax(r) * (1.0 - 1e-12));
+        const double L = (t1 - R->t) / (parts > 1 ? parts : 1);
+        double xa[SX_MAX_NA], wg, wd, u;
+        sx_series s;
+        int k;
+        sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa);
+        sx_series_of(r, xa, L, &s);
+        u = sx_watch_step(R, r, &s);
+        sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
+        R->work_ground += wg;
+        R->work_damping += wd;
+        for (k = 0; k < r->na; k++) xa[k] = 0.0;
+        for (k = 0; k < r->n; k++) {
+            double v = 0.0;
+            int j;
+            for (j = s.deg; j >= 0; j--) v = v * fmin(u, 1.0) + s.X[(size_t)j * (size_t)r->na + (size_t)k];
+            xa[k] = v;
+        }
+        sx_scatter(r, xa, R->x);
+        R->res->steps++;
+        if (u > 1.0) {
+            R->t = parts > 1 ? R->t + L : t1;
+            continue;
+        }
+        R->t = (u == 1.0 && parts <= 1) ? t1 : R->t + u * L;
+        R->error = sx_handle_events(R);
+        return R->error ? -1 : 1;
+    }
+    return 0;
+}
+
+/* one step of the grid on its table: 1 if the quiet test cleared it (then taken), 0 if not */
+static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
+{
+    sx_region *r = current(R);
+    double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
+    sx_step *st;
+    if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    if (st->is_long) return 0; /* a length at the limit, doubled: no polynomial rows */
+    sx_gather(r, R->x, ag0, slope, xa0);
+    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
+    table_step(R, r, st, xa0, xa1, t1);
+    return 1;
+}
+
+/* [R->t, t1] in the grid of equal steps no longer than the region allows (the steps the exact
+ * series converge over): each cleared by the quiet test on its table, or examined on its series
+ * (after an event the series takes the motion to the next grid point) */
+static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slope)
+{
+    const double t0 = R->t;
+    const int n = (int)ceil((t1 - t0) / sx_hmax(current(R)) * (1.0 - 1e-12));
+    const int steps = n > 1 ? n : 1;
+    const double h = (t1 - t0) / steps;
+    int k = 0;
+    while (R->t < t1) {
+        const double end = k + 1 >= steps ? t1 : t0 + (k + 1) * h;
+        if (R->t == (k == 0 ? t0 : t0 + k * h) && quiet_step(R, h, end, ag_a + slope * (R->t - ta), slope)) {
+            k++;
+            continue;
+        }
+        if (exact_piece(R, end, ta, ag_a, slope) < 0) return 1;
+        if (R->t >= end) k++;
+    }
+    return 0;
+}
+
+/* a slow step [R->t, t1] cleared by the modes' quiet test on its (long) table: 0 if taken, else
+ * why not (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes) */
+static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
+{
+    sx_region *r = current(R);
+    const double h = t1 - R->t;
+    double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
+    sx_lopoly P[SX_MAX_F];
+    sx_step *st;
+    int why;
+    sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
+    if (!sx_modes_polys(r, h, xa0, P)) return -1;
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    if ((why = sx_watch_quiet_polys(R, r, P, xa1)) != 0) return why;
+    table_step(R, r, st, xa0, xa1, t1);
+    return 0;
+}
+
+/* The dyadic piece `index` of `level` of the interval [ta, ta + L]: one slow step if the modes'
+ * test clears it, else its two halves, down to the exact steps (docs/scenes.md) */
+static int dyadic(sx_run *R, double ta, double L, int level, double index, double ag_a, double slope)
+{
+    const double h = ldexp(L, -level), t1 = index + 1.0 >= ldexp(1.0, level) ? ta + L : ta + (index + 1.0) * h;
+    const sx_region *r = current(R);
+    if (R->t >= t1) return 0;
+    if (R->t > ta + index * h || !r->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope);
+    if (slow_step(R, t1, ta, ag_a, slope) == 0) return 0;
+    if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope);
+    if (dyadic(R, ta, L, level + 1, 2.0 * index, ag_a, slope)) return 1;
+    return dyadic(R, ta, L, level + 1, 2.0 * index + 1.0, ag_a, slope);
+}
+
+/* the interval [R->t, tb], the record linear over it */
+int sx_advance(sx_run *R, double tb)
+{
+    const double ta = R->t, ag_a = sx_ground(R, ta), slope = (sx_ground(R, tb) - ag_a) / (tb - ta);
+    return dyadic(R, ta, tb - ta, 0, 0.0, ag_a, slope);
+}

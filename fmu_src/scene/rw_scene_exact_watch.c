@@ -1,0 +1,263 @@
+/* What the exact scene engine watches over a step: each standing wall's event indicators (its
+ * lines under the current modes, rw_indicator_lines, the toppling limit and the collapse
+ * indicator's G) and the peaks of s1, s2, the diaphragms' deformations and the walls' base
+ * accelerations. A quiet test on a low-degree polynomial with a bounded tail clears most steps;
+ * the others are examined on the exact series. An indicator's sign at a step's start is its own
+ * where it is clear of rounding, else the direction it moves in; a root is where it has moved
+ * 2 tol past zero (tol: its rounding), so that an event leaves it on its new side. */
+#include "rw_scene_exact_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#define SX_TOL 32.0 * DBL_EPSILON
+
+static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc->collapsed[i]; }
+
+void sx_watch_lines(sx_run *R)
+{
+    const rw_scene *sc = &R->sc;
+    int i, k;
+    for (i = 0; i < sc->S.n_storeys; i++) {
+        rw_indicator_line L[RW_NZ];
+        sx_line *out = R->lines[i];
+        int n = 0;
+        R->nlines[i] = 0;
+        if (!standing(sc, i)) continue;
+        rw_indicator_lines(&sc->S.wall[i], &sc->D[i], &sc->regime[i], L);
+        for (k = 0; k < RW_NZ; k++) {
+            if (L[k].none || (L[k].a[0] == 0.0 && L[k].a[1] == 0.0)) continue;
+            /* the mid-height switch under a law of q alone changes nothing but the side, which the
+             * event update's own rule brings up to date at the next event */
+            if (k == RW_Z_MID && rw_mid_switch_is_bookkeeping(&sc->S.wall[i])) continue;
+            out[n].a0 = L[k].a[0], out[n].a1 = L[k].a[1], out[n].s = L[k].s, out[n].t = L[k].t, out[n].c = L[k].c;
+            n++;
+        }
+        for (k = 0; k < 2; k++) { /* the toppling limit: |q_k| = 2b/h (rw_topple_value) */
+            out[n].a0 = k == 0, out[n].a1 = k == 1, out[n].s = 1.0, out[n].t = 0.0, out[n].c = -sc->D[i].q_topple;
+            n++;
+        }
+        R->nlines[i] = n;
+    }
+}
+
+/* ---- ranges (the quiet test) ---- */
+
+typedef struct {
+    double lo, hi;
+} span;
+
+/* z = c + s|w| + t w over w in [lo, hi]: piecewise linear with its kink at 0 */
+static span line_span(const sx_line *L, span w)
+{
+    const double zl = L->c + L->s * fabs(w.lo) + L->t * w.lo, zh = L->c + L->s * fabs(w.hi) + L->t * w.hi;
+    span z = {fmin(zl, zh), fmax(zl, zh)};
+    if (w.lo < 0.0 && w.hi > 0.0) z.lo = fmin(z.lo, L->c), z.hi = fmax(z.hi, L->c);
+    return z;
+}
+
+static double line_tol(const sx_line *L, double q1, double q2)
+{
+    return SX_TOL * (fabs(L->c) + fabs(L->a0 * q1) + fabs(L->a1 * q2)) + DBL_MIN;
+}
+
+static int clear_of_zero(span z, double tol) { return z.lo > 2.0 * tol || z.hi < -2.0 * tol; }
+
+static span square_span(span a)
+{
+    span s = {a.lo * a.lo, a.hi * a.hi};
+    if (s.lo > s.hi) s = (span){s.hi, s.lo};
+    if (a.lo < 0.0 && a.hi > 0.0) s.lo = 0.0;
+    return s;
+}
+
+static span scaled(span a, double c) { return c >= 0 ? (span){c * a.lo, c * a.hi} : (span){c * a.hi, c * a.lo}; }
+static span sum(span a, span b) { return (span){a.lo + b.lo, a.hi + b.hi}; }
+
+static double collapse_tol(const sx_collapse *c, double q1, double q2)
+{
+    return SX_TOL * (fabs(c->A[0][0] * q1 * q1) + fabs((c->A[0][1] + c->A[1][0]) * q1 * q2) + fabs(c->A[1][1] * q2 * q2) +
+                     fabs(c->c[0] * q1) + fabs(c->c[1] * q2)) + DBL_MIN;
+}
+
+static span poly_span(const sx_lopoly *p);
+static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
+
+/* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
+ * sum_k mu_k (e_k.q)^2 - c.q with each combination's own range (a stiff tie's entries of A are
+ * large and nearly cancel along the motion: the ranges of q1 and q2 alone would lose that) */
+static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lopoly *q2)
+{
+    const span s1 = poly_span(q1), s2 = poly_span(q2);
+    sx_lopoly p;
+    span G = {0.0, 0.0};
+    int k;
+    if (!c->active) return 1;
+    if (c->lam_min > 0.0) {
+        const double d1 = s1.lo > 0 ? s1.lo : (s1.hi < 0 ? -s1.hi : 0.0), d2 = s2.lo > 0 ? s2.lo : (s2.hi < 0 ? -s2.hi : 0.0);
+        if (sqrt(d1 * d1 + d2 * d2) * c->lam_min > 1.000001 * hypot(c->c[0], c->c[1])) return 1;
+    }
+    for (k = 0; k < 2; k++) {
+        combine(&p, q1, c->e[k][0], q2, c->e[k][1]);
+        G = sum(G, scaled(square_span(poly_span(&p)), c->mu[k]));
+    }
+    combine(&p, q1, -c->c[0], q2, -c->c[1]);
+    G = sum(G, poly_span(&p));
+    return clear_of_zero(G, collapse_tol(c, q1->coef[0], q2->coef[0]));
+}
+
+static span poly_span(const sx_lopoly *p)
+{
+    span s = {p->coef[0] - p->tail, p->coef[0] + p->tail};
+    int k;
+    for (k = 1; k <= p->deg; k++) {
+        if (p->coef[k] < 0.0) s.lo += p->coef[k];
+        else s.hi += p->coef[k];
+    }
+    return s;
+}
+
+static int monotone(const sx_lopoly *p)
+{
+    span d = {p->coef[1] - p->dtail, p->coef[1] + p->dtail};
+    int k;
+    for (k = 2; k <= p->deg; k++) {
+        if (p->coef[k] < 0.0) d.lo += k * p->coef[k];
+        else d.hi += k * p->coef[k];
+    }
+    return d.lo > 0.0 || d.hi < 0.0;
+}
+
+/* a peak quantity (a combination of functionals) can rise over its peak inside the step */
+static int peak_may_rise(const sx_lopoly *P, double peak)
+{
+    const span s = poly_span(P);
+    if (fmax(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
+    return !monotone(P);
+}
+
+static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb)
+{
+    int k;
+    out->deg = b && b->deg > a->deg ? b->deg : a->deg;
+    for (k = 0; k <= out->deg; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
+    out->tail = fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
+    out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
+}
+
+/* the peak quantities of storey i from its functionals; a slot is NULL when the storey has none */
+typedef struct {
+    sx_lopoly q1, q2, s1, s2, deform, acc;
+    int wall;
+} storey_polys;
+
+/* the peaks at a cleared step's ends: its start (coef[0]) and its exact end (xa1) */
+static void peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
+{
+    rw_scene_result *res = R->res;
+    double q1[2] = {0.0, 0.0}, q2[2] = {0.0, 0.0};
+    int f, k;
+    for (f = 0; f < r->nf; f++) {
+        const int i = r->f_storey[f];
+        double end = 0.0, *peak;
+        for (k = 0; k < r->na; k++) end += r->F[f][k] * xa1[k];
+        switch (r->f_kind[f]) {
+        case SX_Q1: q1[0] = P[f].coef[0], q1[1] = end; continue;
+        case SX_Q2: { /* q1 comes first: the wall's peaks */
+            const double h2 = 0.5 * R->sc.S.wall[i].h;
+            q2[0] = P[f].coef[0], q2[1] = end;
+            for (k = 0; k < 2; k++) {
+                res->peak_s1[i] = fmax(res->peak_s1[i], fabs(h2 * q1[k]));
+                res->peak_s2[i] = fmax(res->peak_s2[i], fabs(h2 * (q1[k] + q2[k])));
+            }
+            continue;
+        }
+        case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
+        default: peak = &res->peak_base_acc[i]; break;
+        }
+        *peak = fmax(*peak, fmax(fabs(P[f].coef[0]), fabs(end)));
+    }
+}
+
+/* each functional's polynomial over a step from its table (rows and tail) */
+static void low_polys(const sx_region *r, const sx_step *st, const double xa0[], sx_lopoly P[SX_MAX_F])
+{
+    double Xt[SX_MAX_N], tn = 0.0;
+    const double q = st->rho / (SX_LO + 2);
+    int f, k;
+    sx_matvec(r->n, r->na, st->T, xa0, Xt);
+    for (k = 0; k < r->n; k++) tn = fmax(tn, fabs(Xt[k]) / r->scale[k]);
+    for (f = 0; f < r->nf; f++) {
+        sx_lopoly *p = &P[f];
+        const double *row = st->rows + (size_t)f * (size_t)((SX_LO + 1) * r->na);
+        for (k = 0; k <= SX_LO; k++) {
+            double v = 0.0;
+            int j;
+            for (j = 0; j < r->na; j++) v += row[k * r->na + j] * xa0[j];
+            p->coef[k] = v;
+        }
+        p->tail = r->f_scale[f] * tn / (1.0 - q);
+        p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
+        p->deg = SX_LO;
+    }
+}
+
+/* the storeys' polynomials from the functionals' */
+static void storey_view(const sx_region *r, const sx_lopoly P[SX_MAX_F], storey_polys S[RW_SCENE_MAX_STOREYS])
+{
+    int f;
+    for (f = 0; f < r->nf; f++) {
+        storey_polys *s = &S[r->f_storey[f]];
+        switch (r->f_kind[f]) {
+        case SX_Q1: s->q1 = P[f], s->wall = 1; break;
+        case SX_Q2: s->q2 = P[f]; break;
+        case SX_DEFORM: s->deform = P[f]; break;
+        default: s->acc = P[f]; break;
+        }
+    }
+}
+
+static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_polys *P)
+{
+    int k;
+    for (k = 0; k < R->nlines[i]; k++) {
+        const sx_line *L = &R->lines[i][k];
+        sx_lopoly w;
+        combine(&w, &P->q1, L->a0, &P->q2, L->a1);
+        if (!clear_of_zero(line_span(L, poly_span(&w)), line_tol(L, P->q1.coef[0], P->q2.coef[0])))
+            return 0;
+    }
+    return collapse_quiet(&r->col[i], &P->q1, &P->q2);
+}
+
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[])
+{
+    storey_polys S[RW_SCENE_MAX_STOREYS];
+    rw_scene_result *res = R->res;
+    int i, why = 0;
+    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].wall = 0;
+    storey_view(r, P, S);
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        storey_polys *s = &S[i];
+        const double h2 = 0.5 * R->sc.S.wall[i].h;
+        if (s->wall) {
+            combine(&s->s1, &s->q1, h2, NULL, 0.0);
+            combine(&s->s2, &s->q1, h2, &s->q2, h2);
+            if (!wall_quiet(R, r, i, s)) return SX_MAY_CROSS;
+            if (peak_may_rise(&s->s1, res->peak_s1[i]) || peak_may_rise(&s->s2, res->peak_s2[i])) why = SX_MAY_PEAK;
+        }
+        if (peak_may_rise(&s->deform, res->peak_diaphragm[i]) || peak_may_rise(&s->acc, res->peak_base_acc[i]))
+            why = SX_MAY_PEAK;
+    }
+    if (why) return why;
+    peaks_at_ends(R, r, P, xa1);
+    return 0;
+}
+
+int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[])
+{
+    sx_lopoly P[SX_MAX_F];
+    low_polys(r, st, xa0, P);
+    return sx_watch_quiet_polys(R, r, P, xa1) == 0;
+}

@@ -1,0 +1,165 @@
+"""The building file (TOML): read into a Building, every value with its unit checked, every error
+naming the file, the line and the problem (docs/your-building.md has the contract)."""
+import math
+import os
+import re
+import tomllib
+
+from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, TIE_DEFAULT, Building, Diaphragm,
+                          InPlaneWalls, Storey, WallLayer, parse_quantity)
+from ..names import HINGE_LAWS
+
+BUILDING_KEYS = {"name", "tie"}
+STOREY_KEYS = {"height", "wall", "diaphragm", "tie", "in_plane"}
+WALL_KEYS = {"b", "W", "unit_weight", "overburden", "hinge_law", "e_r"}
+DIAPHRAGM_KEYS = {"stiffness", "mass", "damping", "law", "yield_force", "post_yield"}
+IN_PLANE_KEYS = {"stiffness", "mass", "damping"}
+DIAPHRAGM_LAWS = ("linear", "boucWen", "boucWenPinched")
+RANGES = {  # what a masonry building's per-metre numbers can be (SI); outside is refused
+    "height": (0.5, 30.0), "b": (0.02, 3.0), "W": (10.0, 1e6), "unit_weight": (1e3, 1e5), "overburden": (0.0, 1e7),
+    "stiffness": (0.0, 1e12), "mass": (1e-6, 1e7), "damping": (0.0, 2.0), "tie": (1.0, 1e12), "e_r": (0.0, 1.0),
+    "yield_force": (1e-3, 1e9), "post_yield": (0.0, 1.0),
+}
+
+
+class BuildingFileError(ValueError):
+    """A building file that cannot be used: the message names the file, the line and the problem."""
+
+
+class _Where:
+    """The file and the line of a table, for messages."""
+
+    def __init__(self, path, lines):
+        self.path, self.lines = path, lines
+
+    def error(self, line, message):
+        return BuildingFileError(f"{self.path}:{line}: {message}")
+
+
+def _table_lines(text, header):
+    """The line numbers (1-based) of every `[[header]]` (or `[header]`) table in the text."""
+    pattern = re.compile(r"^\s*\[\[?\s*" + re.escape(header) + r"\s*\]\]?\s*(#.*)?$")
+    return [n for n, line in enumerate(text.splitlines(), 1) if pattern.match(line)]
+
+
+def _check_keys(table, allowed, what, where, line):
+    unknown = sorted(set(table) - allowed)
+    if unknown:
+        raise where.error(line, f"{what}: unknown key(s) {', '.join(unknown)}; known: {', '.join(sorted(allowed))}")
+
+
+def _quantity(table, key, unit, where, line, what, default=None):
+    if key not in table:
+        if default is None:
+            raise where.error(line, f"{what}.{key} is missing")
+        return default
+    try:
+        v = parse_quantity(table[key], unit, f"{what}.{key}")
+    except ValueError as exc:
+        raise where.error(line, str(exc)) from None
+    low, high = RANGES[key]
+    if not low <= v <= high:
+        raise where.error(line, f"{what}.{key} = {table[key]!r} is outside [{low:g}, {high:g}] {unit or ''}".rstrip())
+    return v
+
+
+def _wall(table, height, where, line, what):
+    if not isinstance(table, dict):
+        raise where.error(line, f"{what} must be a table, e.g. {{ b = \"230 mm\", W = \"14.9 kN/m\" }}")
+    _check_keys(table, WALL_KEYS, what, where, line)
+    b = _quantity(table, "b", "m", where, line, what)
+    if ("W" in table) == ("unit_weight" in table):
+        raise where.error(line, f"{what}: give W (weight per metre of wall) or unit_weight, one of the two")
+    W = (_quantity(table, "W", "N/m", where, line, what) if "W" in table
+         else _quantity(table, "unit_weight", "N/m3", where, line, what) * b * height)
+    law = table.get("hinge_law", HINGE_LAW_DEFAULT)
+    if law not in HINGE_LAWS:
+        raise where.error(line, f"{what}.hinge_law = {law!r}: known {', '.join(HINGE_LAWS)}")
+    return WallLayer(b=b, W=W, overburden=_quantity(table, "overburden", "N/m", where, line, what, 0.0),
+                     hinge_law=law, e_r=_quantity(table, "e_r", "1", where, line, what, E_R_DEFAULT))
+
+
+def _diaphragm(table, where, line, what):
+    if not isinstance(table, dict):
+        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"20 kN/m/m\", mass = \"200 kg/m\" }}")
+    _check_keys(table, DIAPHRAGM_KEYS, what, where, line)
+    law = table.get("law", "linear")
+    if law not in DIAPHRAGM_LAWS:
+        raise where.error(line, f"{what}.law = {law!r}: known {', '.join(DIAPHRAGM_LAWS)}")
+    hysteretic = law != "linear"
+    if hysteretic != ("yield_force" in table):
+        raise where.error(line, f"{what}: yield_force is given with a Bouc-Wen law and only with one")
+    return Diaphragm(stiffness=_quantity(table, "stiffness", "N/m2", where, line, what),
+                     mass=_quantity(table, "mass", "kg/m", where, line, what),
+                     damping=_quantity(table, "damping", "1", where, line, what, DAMPING_DEFAULT), law=law,
+                     yield_force=_quantity(table, "yield_force", "N/m", where, line, what, math.inf),
+                     post_yield=_quantity(table, "post_yield", "1", where, line, what, 1.0 if not hysteretic else 0.1))
+
+
+def _in_plane(table, where, line, what):
+    if not isinstance(table, dict):
+        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"5 MN/m/m\", mass = \"800 kg/m\" }}")
+    _check_keys(table, IN_PLANE_KEYS, what, where, line)
+    return InPlaneWalls(stiffness=_quantity(table, "stiffness", "N/m2", where, line, what),
+                        mass=_quantity(table, "mass", "kg/m", where, line, what),
+                        damping=_quantity(table, "damping", "1", where, line, what, DAMPING_DEFAULT))
+
+
+def _storey(table, tie, where, line, k):
+    what = f"storey {k}"
+    if not isinstance(table, dict):
+        raise where.error(line, f"{what}: expected a [[storey]] table")
+    _check_keys(table, STOREY_KEYS, what, where, line)
+    height = _quantity(table, "height", "m", where, line, what)
+    for key in ("wall", "diaphragm"):
+        if key not in table:
+            raise where.error(line, f"{what}.{key} is missing")
+    wall = _wall(table["wall"], height, where, line, f"{what}.wall")
+    if not wall.b < height:
+        raise where.error(line, f"{what}: the wall's thickness b = {wall.b:g} m must be less than its height {height:g} m")
+    in_plane = _in_plane(table["in_plane"], where, line, f"{what}.in_plane") if "in_plane" in table else None
+    return Storey(height=height, wall=wall, diaphragm=_diaphragm(table["diaphragm"], where, line, f"{what}.diaphragm"),
+                  tie=_quantity(table, "tie", "N/m2", where, line, what, tie), in_plane=in_plane)
+
+
+def parse(text, path="<building>"):
+    """A Building from the text of a building file."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        found = re.search(r"line (\d+)", str(exc))
+        raise BuildingFileError(f"{path}:{found.group(1) if found else 1}: not valid TOML: {exc}") from None
+    where = _Where(path, text.splitlines())
+    head = _table_lines(text, "building")
+    head_line = head[0] if head else 1
+    _check_keys(data, {"building", "storey"}, "the file", where, 1)
+    building = data.get("building", {})
+    if not isinstance(building, dict):
+        raise where.error(head_line, "[building] must be a table")
+    _check_keys(building, BUILDING_KEYS, "[building]", where, head_line)
+    tie = _quantity(building, "tie", "N/m2", where, head_line, "building", TIE_DEFAULT)
+    storeys = data.get("storey")
+    lines = _table_lines(text, "storey")
+    if not isinstance(storeys, list) or not storeys:
+        raise where.error(head_line, "no [[storey]] tables: give the storeys, ground storey first")
+    parsed = tuple(_storey(s, tie, where, lines[k] if k < len(lines) else head_line, k + 1)
+                   for k, s in enumerate(storeys))
+    try:
+        return Building(name=str(building.get("name", os.path.basename(path))), storeys=parsed, source=str(path))
+    except ValueError as exc:
+        raise where.error(head_line, str(exc)) from None
+
+
+def read(path):
+    """A Building from a building file (TOML); BuildingFileError naming the file and the line."""
+    path = os.fspath(path)
+    try:
+        with open(path, "rb") as fh:
+            raw = fh.read()
+    except OSError as exc:
+        raise BuildingFileError(f"{path}: {exc.strerror or exc}") from None
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError as exc:
+        raise BuildingFileError(f"{path}:1: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    return parse(text, path)

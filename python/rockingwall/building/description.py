@@ -1,0 +1,136 @@
+"""A building as engineers describe it: storeys bottom up, each with its face-loaded wall, the
+diaphragm on top of it and the tie between them, values with units (docs/your-building.md). Read
+from a TOML file (`read`) or built in code; `Building.spec()` is the scene the solver runs.
+
+    [building]
+    name = "two-storey brick, timber floors"
+    [[storey]]
+    height = "4.0 m"
+    wall = { b = "350 mm", W = "25.2 kN/m", overburden = "3.2 kN/m" }   # or unit_weight = "18 kN/m3"
+    diaphragm = { stiffness = "60 kN/m/m", mass = "600 kg/m", damping = 0.05 }
+    # tie = "1e8 N/m/m"
+
+Everything is per metre of the face-loaded wall, in SI once read."""
+import dataclasses
+import math
+
+from .. import units
+from ..names import hinge_law_code
+
+TIE_DEFAULT = 1e8          # N/m per m: a stiff tie (docs/your-building.md: 1e9 moves peaks by about 1 %)
+DAMPING_DEFAULT = 0.05     # of critical, on the diaphragm's own mass and spring
+HINGE_LAW_DEFAULT = "dohertyHinge"
+E_R_DEFAULT = 0.86
+MAX_STOREYS = 5
+
+
+@dataclasses.dataclass(frozen=True)
+class WallLayer:
+    """The face-loaded wall of a storey: thickness b [m], weight W [N/m], the overburden it carries
+    at its top [N/m] (the floor or roof load on it; the walls above are added by the scene), the
+    hinge law and the coefficient of restitution."""
+    b: float
+    W: float
+    overburden: float = 0.0
+    hinge_law: str = HINGE_LAW_DEFAULT
+    e_r: float = E_R_DEFAULT
+
+
+@dataclasses.dataclass(frozen=True)
+class Diaphragm:
+    """The diaphragm on top of a storey, at the wall, per metre of wall: stiffness [N/m per m],
+    mass [kg/m] and damping ratio; law 'linear', 'boucWen' or 'boucWenPinched' (the latter two
+    with a yield force [N/m] and a post-yield stiffness ratio)."""
+    stiffness: float
+    mass: float
+    damping: float = DAMPING_DEFAULT
+    law: str = "linear"
+    yield_force: float = math.inf
+    post_yield: float = 1.0
+
+    @property
+    def dashpot(self):
+        """c = 2 zeta sqrt(k m) [N s/m per m]."""
+        return 2.0 * self.damping * math.sqrt(self.stiffness * self.mass)
+
+    @property
+    def period(self):
+        """Its own period on its spring, 2 pi sqrt(m/k) [s] (inf for no stiffness)."""
+        return 2.0 * math.pi * math.sqrt(self.mass / self.stiffness) if self.stiffness > 0 else math.inf
+
+
+@dataclasses.dataclass(frozen=True)
+class InPlaneWalls:
+    """The in-plane walls of a storey when they are not rigid: stiffness [N/m per m], the floor's
+    mass they carry [kg/m], damping ratio."""
+    stiffness: float
+    mass: float
+    damping: float = DAMPING_DEFAULT
+
+
+@dataclasses.dataclass(frozen=True)
+class Storey:
+    height: float
+    wall: WallLayer
+    diaphragm: Diaphragm
+    tie: float = TIE_DEFAULT
+    in_plane: InPlaneWalls = None  # None: rigid in-plane walls (the floor moves with the ground)
+
+
+@dataclasses.dataclass(frozen=True)
+class Building:
+    name: str
+    storeys: tuple
+    source: str = ""
+
+    def __post_init__(self):
+        if not 1 <= len(self.storeys) <= MAX_STOREYS:
+            raise ValueError(f"a building has 1 to {MAX_STOREYS} storeys, not {len(self.storeys)}")
+        rigid = [s.in_plane is None for s in self.storeys]
+        if any(rigid) and not all(rigid):
+            raise ValueError("in-plane walls: give them for every storey or for none (none: rigid)")
+        laws = {s.diaphragm.law for s in self.storeys}
+        if len(laws) > 1:
+            raise ValueError(f"one diaphragm law for the whole building, not {sorted(laws)}")
+
+    @property
+    def rigid_in_plane(self):
+        return self.storeys[0].in_plane is None
+
+    def weight_above(self, i):
+        """The weight [N/m] the walls above storey i (0-based) put on its wall's top: their own
+        weights and the overburdens they carry."""
+        return sum(s.wall.W + s.wall.overburden for s in self.storeys[i + 1:])
+
+    def wall_parameters(self, i):
+        """The wall of storey i as the model's parameters (SI): tied to its diaphragm (flexibleTop,
+        Kd = the tie), psi from the overburden it carries."""
+        s = self.storeys[i]
+        return dict(h=s.height, b=s.wall.b, W=s.wall.W, psi=2.0 * s.wall.overburden / s.wall.W, Kd=s.tie,
+                    er=s.wall.e_r, support=3, hingeLaw=hinge_law_code(s.wall.hinge_law))
+
+    def describe(self):
+        """The building with units, storey by storey: what the report echoes."""
+        lines = [f"building: {self.name}" + (f" ({self.source})" if self.source else ""),
+                 "in-plane walls: " + ("rigid (every floor moves with the ground)" if self.rigid_in_plane
+                                       else "flexible")]
+        for i, s in enumerate(self.storeys, 1):
+            w, d = s.wall, s.diaphragm
+            lines.append(f"storey {i}: h = {s.height:g} m; wall b = {w.b * 1e3:g} mm, W = {w.W / 1e3:.4g} kN/m, "
+                         f"overburden {w.overburden / 1e3:.4g} kN/m, {w.hinge_law}, e_r = {w.e_r:g}")
+            lines.append(f"  diaphragm: {d.stiffness / 1e3:.4g} kN/m per m, {d.mass:.4g} kg/m, "
+                         f"{100 * d.damping:.3g} % damping ({d.law}; own period {d.period:.3g} s); "
+                         f"tie {s.tie:.3g} N/m per m")
+            if s.in_plane is not None:
+                p = s.in_plane
+                lines.append(f"  in-plane walls: {p.stiffness / 1e3:.4g} kN/m per m, floor {p.mass:.4g} kg/m, "
+                             f"{100 * p.damping:.3g} % damping")
+        return "\n".join(lines)
+
+
+def parse_quantity(value, unit, what):
+    """A value with its unit (see rockingwall.units) in SI, finite."""
+    v = units.parse(value, unit, what)
+    if not math.isfinite(v):
+        raise ValueError(f"{what} = {value!r}: must be finite")
+    return v

@@ -1,0 +1,137 @@
+"""A building's walls, ties, diaphragms and floors in one integration (the scene solver,
+rockingwall.scene_engine): stable at any mass ratio, each wall with its own event rules. The
+response per storey, the energy balance checked, and what the scene leaves out."""
+import dataclasses
+import math
+
+import numpy as np
+
+from .. import scene_engine
+from ..coupling.rules import ENERGY_SHARE_MAX
+
+SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
+
+
+class BuildingError(RuntimeError):
+    """A run whose numbers cannot be trusted (the energy balance does not close): never a result."""
+
+
+@dataclasses.dataclass(frozen=True)
+class StoreyResult:
+    """One storey's wall and diaphragm: peaks [m] of s1, s2 relative to the wall's own base, Delta_u
+    [m], collapse and its time [s] (None if standing), the diaphragm's peak displacement relative
+    to its supports [m], the peak absolute acceleration of the floor the wall stands on [m/s2]."""
+    storey: int
+    peak_s1_m: float
+    peak_s2_m: float
+    delta_u_m: float
+    collapsed: bool
+    t_collapse_s: float
+    diaphragm_peak_m: float
+    base_peak_acc_m_s2: float
+    impacts: int
+
+    @property
+    def s1_over_delta_u(self):
+        return self.peak_s1_m / self.delta_u_m
+
+    def to_dict(self):
+        d = dataclasses.asdict(self)
+        d["s1_over_Delta_u"] = self.s1_over_delta_u
+        return d
+
+
+@dataclasses.dataclass(frozen=True)
+class BuildingResult:
+    """The response of every storey under one record, the solver that ran and the energy balance
+    (input work, viscous and impact losses [J/m], the largest residual over the run as a share of
+    the largest input work)."""
+    record: str
+    storeys: tuple
+    solver: str
+    work_ground_J_m: float
+    work_damping_J_m: float
+    event_losses_J_m: float
+    residual_share: float
+    steps: int
+    events: int
+
+    def to_dict(self):
+        return {"record": self.record, "solver": self.solver, "storeys": [s.to_dict() for s in self.storeys],
+                "energy": {"ground_work_J_per_m": self.work_ground_J_m, "damping_J_per_m": self.work_damping_J_m,
+                           "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
+
+
+def delta_u(params):
+    """Delta_u [m] of a wall: b (1 + 0.75 psi)/(1 + psi) (the paper's Table 5.1)."""
+    psi = params["psi"]
+    return params["b"] * (1 + 0.75 * psi) / (1 + psi)
+
+
+def storey_spec(wall_params, diaphragm, in_plane=None):
+    """One storey of the scene: the wall's parameters (None: no wall), its diaphragm (a
+    description.Diaphragm) and its in-plane walls (None: rigid)."""
+    d = diaphragm
+    hysteretic = d.law != "linear"
+    values = dict(wall=wall_params, md=d.mass, kd=d.stiffness, cd=d.dashpot,
+                  Fyd=d.yield_force if hysteretic else 1.0, alphad=d.post_yield if hysteretic else 1.0)
+    if in_plane is not None:
+        values.update(m=in_plane.mass, k=in_plane.stiffness,
+                      cs=2.0 * in_plane.damping * math.sqrt(in_plane.stiffness * in_plane.mass))
+    return scene_engine.StoreySpec(**values)
+
+
+def building_spec(building):
+    """The scene solver's Spec of a description.Building."""
+    storeys = tuple(storey_spec(building.wall_parameters(i), s.diaphragm, s.in_plane)
+                    for i, s in enumerate(building.storeys))
+    return scene_engine.Spec(storeys=storeys, rigid_in_plane=building.rigid_in_plane,
+                             diaphragm_law=building.storeys[0].diaphragm.law)
+
+
+def wall_under_diaphragm_spec(wall_params, diaphragm, tie):
+    """The scene of one wall (its full parameter set, the tie as its Kd) under a diaphragm with
+    mass whose supports move with the ground."""
+    return scene_engine.Spec(storeys=(storey_spec(dict(wall_params, Kd=tie, support=3), diaphragm),),
+                             diaphragm_law=diaphragm.law)
+
+
+def check_energy(r, where):
+    """BuildingError when the energy balance does not close within ENERGY_SHARE_MAX of the input
+    work: a number from such a run is not a result."""
+    share = r.max_residual / r.max_work if r.max_work > 0 else 0.0
+    if not share <= ENERGY_SHARE_MAX:
+        raise BuildingError(
+            f"{where}: the energy balance does not close (residual {share:.2g} of the input work, more than "
+            f"{ENERGY_SHARE_MAX:g}): the run is not converged; run again with a tighter tolerance (rtol)")
+    return share
+
+
+def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None):
+    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
+    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene."""
+    r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
+    share = check_energy(r, record.name)
+    storeys = []
+    for i, params in enumerate(wall_params_list):
+        collapsed = bool(r.collapsed[i])
+        du = delta_u(params) if params else math.nan
+        storeys.append(StoreyResult(
+            storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
+            collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
+            diaphragm_peak_m=float(r.peak_diaphragm[i]), base_peak_acc_m_s2=float(r.peak_base_acc[i]),
+            impacts=int(r.impacts[i])))
+    result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=r.engine,
+                            work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
+                            event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events)
+    return result, r
+
+
+def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None):
+    """The response of every storey of a description.Building under a Record (solver: as respond's)."""
+    t_out = None
+    if output_interval:
+        end = float(record.t[-1]) if t_end is None else float(t_end)
+        t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
+    params = [building.wall_parameters(i) for i in range(len(building.storeys))]
+    return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver)

@@ -1,0 +1,70 @@
+"""A building's response for people and programs: the table `rockingwall building` prints, its
+strict JSON (null, never NaN), the time histories as CSV and a plot per record."""
+import numpy as np
+
+from .. import scenes, strict_json
+
+
+def _collapse(s):
+    return f"collapsed at {s.t_collapse_s:.2f} s" if s.collapsed else "standing"
+
+
+def table(building, results):
+    """The building echoed with units, the scene, then one row per storey and record."""
+    lines = [building.describe(), scenes.building(building).text(), "",
+             f"{'record':<26}{'storey':>7}{'peak s1 [mm]':>14}{'peak s2 [mm]':>14}{'s1/Delta_u':>12}"
+             f"{'diaphragm [mm]':>16}{'floor acc [g]':>15}  collapse"]
+    for r in results:
+        for s in r.storeys:
+            s1 = "-" if s.collapsed else f"{s.peak_s1_m * 1e3:.1f}"
+            s2 = "-" if s.collapsed else f"{s.peak_s2_m * 1e3:.1f}"
+            ratio = "-" if s.collapsed else f"{s.s1_over_delta_u:.2f}"
+            lines.append(f"{r.record[:25]:<26}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
+                         f"{s.diaphragm_peak_m * 1e3:>16.1f}{s.base_peak_acc_m_s2 / 9.81:>15.3f}  {_collapse(s)}")
+    lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
+                 "floor acc: the floor the wall stands on, absolute")
+    return "\n".join(lines)
+
+
+def to_json(building, results):
+    """{"scene", "building", "runs": [{"record", "solver", "storeys": [...], "energy"}]}; each
+    storey with peak_s1_m, peak_s2_m, collapsed, t_collapse_s (null if standing), diaphragm_peak_m,
+    base_peak_acc_m_s2, and also delta_u_m, s1_over_Delta_u, impacts."""
+    return strict_json.clean({"scene": scenes.building(building).to_dict(),
+                   "building": {"name": building.name, "file": building.source, "description": building.describe()},
+                   "runs": [r.to_dict() for r in results]})
+
+
+def history_csv(history, path):
+    """time [s] and, per storey, s1 and s2 [m] (relative to the wall's base), the diaphragm [m]
+    (relative to its supports) and the wall base's absolute acceleration [m/s2]."""
+    n = history.s1.shape[1]
+    columns = [history.t] + [a[:, i] for i in range(n) for a in (history.s1, history.s2, history.diaphragm,
+                                                                   history.base_acc)]
+    names = ["time"] + [f"{name}_{i + 1}" for i in range(n) for name in ("s1", "s2", "diaphragm", "base_acc")]
+    np.savetxt(path, np.column_stack(columns), delimiter=",", header=",".join(names), comments="", fmt="%.9g")
+
+
+def plot(building, result, history, path):
+    """s1 of each storey's wall and its diaphragm over time, one panel per storey (top storey first)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    n = len(result.storeys)
+    fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n + 0.6), sharex=True, squeeze=False)
+    for panel, s in zip(axes[::-1, 0], result.storeys):
+        i = s.storey - 1
+        panel.plot(history.t, history.s1[:, i] * 1e3, lw=0.8, color="C0", label="wall s1 (mid-height) [mm]")
+        panel.plot(history.t, history.diaphragm[:, i] * 1e3, lw=0.8, color="C1", label="diaphragm [mm]")
+        du = s.delta_u_m * 1e3
+        panel.axhline(du, color="C3", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
+        panel.axhline(-du, color="C3", lw=0.6, ls="--")
+        panel.set_ylabel(f"storey {s.storey}")
+        panel.set_title(f"storey {s.storey}: {_collapse(s)}", fontsize=8)
+        panel.legend(fontsize=7, loc="upper right")
+        panel.grid(alpha=0.3)
+    axes[-1, 0].set_xlabel("time [s]")
+    fig.suptitle(f"{result.record}: {building.name}", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110, format="png")
+    plt.close(fig)

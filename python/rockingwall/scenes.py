@@ -1,0 +1,63 @@
+"""Which scene answered: every output names the scene that was run and what it leaves out.
+
+    (a) paper      the paper's scene: the top spring K_d ends at a fixed point (a rigid,
+                   massless far end); the wall stands on the ground;
+    (b) diaphragm  the wall under a diaphragm with mass and damping, tied to it, whose supports
+                   (the in-plane walls) move with the ground: a single storey or a top storey;
+    (c) building   walls in a multi-storey building, each standing on the floor below and tied
+                   to the diaphragm above.
+"""
+import dataclasses
+
+from .names import SUPPORTS
+from .units import format_kd
+
+
+@dataclasses.dataclass(frozen=True)
+class Scene:
+    key: str
+    title: str
+    leaves_out: str
+
+    def text(self):
+        """Two lines for a report: the scene, and what it leaves out."""
+        return f"scene: {self.title}\nleft out: {self.leaves_out}"
+
+    def to_dict(self):
+        return {"name": self.key, "description": self.title, "leaves_out": self.leaves_out}
+
+
+def paper(params):
+    """The scene of a wall on its own (rockingwall run/assess without a diaphragm mass)."""
+    support = int(params["support"])
+    if support == SUPPORTS["parapet"]:
+        return Scene("paper", "a parapet (free top) on the ground",
+                     "the motion of the floor or roof it stands on (rockingwall building FILE: a wall in its building)")
+    if support == SUPPORTS["simplySupported"]:
+        return Scene("paper", "a wall pinned at its top to a fixed point (a rigid diaphragm on the ground's motion)",
+                     "the diaphragm's flexibility and mass and the floor's motion (give --Kd and --diaphragm-mass)")
+    return Scene("paper", f"the paper's: the top spring K_d = {format_kd(params['Kd'])} ends at a fixed point",
+                 "the diaphragm's mass and damping and the floor's motion: the diaphragm is a massless spring "
+                 "and the wall stands on the ground (give --diaphragm-mass for a diaphragm with mass, "
+                 "--building FILE for the wall in its building)")
+
+
+def diaphragm(diaphragm, tie):
+    """Scene (b): the wall under a diaphragm with mass, its supports moving with the ground."""
+    d = diaphragm
+    return Scene("diaphragm",
+                 f"a wall tied ({tie:.3g} N/m per m) to a diaphragm of {format_kd(d.stiffness)}, {d.mass:.4g} kg/m, "
+                 f"{100 * d.damping:.3g} % damping, whose supports (the in-plane walls) move with the ground",
+                 "the floor's motion below the wall and the in-plane walls' flexibility: right for a single "
+                 "storey or a top storey on rigid in-plane walls (give --building FILE for a multi-storey building)")
+
+
+def building(description):
+    """Scene (c): the walls of a building (a building.description.Building)."""
+    n = len(description.storeys)
+    in_plane = "rigid in-plane walls" if description.rigid_in_plane else "flexible in-plane walls"
+    return Scene("building",
+                 f"walls in a {n}-storey building ({description.name}): each wall stands on the floor below and is "
+                 f"tied to the diaphragm above; diaphragms with mass and damping, {in_plane}",
+                 "the diaphragms' higher modes (one mass per metre of wall at the wall), vertical ground motion"
+                 + (", the in-plane walls' flexibility (taken as rigid)" if description.rigid_in_plane else ""))

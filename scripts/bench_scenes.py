@@ -1,0 +1,104 @@
+"""Speed of the exact scene engine (fmu_src/scene/rw_scene_exact*.c) against CVODES on the same
+scenes and against one wall's exact engine, in one run.
+
+The record: FEMA P695 far-field ff19a (Chi-Chi 1999, 90 s), its first 80 s scaled to PGA 0.2 g.
+The wall: b = 0.23 m, h = 3.6 m, W = 14.904 kN/m, psi = 0.2013, dohertyHinge, e_r = 0.86, tied to
+its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
+- one wall: the single wall's exact engine (rockingwall.engine), K_d = the tie, held at a fixed point;
+- one storey: the wall, a diaphragm of 200 kg/m, 200 kN/m per m, 5 % damping, rigid in-plane walls;
+- two storeys: a wall in each, the same diaphragms, flexible in-plane walls (3 000 kg/m, 30 MN/m
+  per m, 5 %).
+Each scene: the exact engine (the best CPU time of 5 calls in-process) and CVODES (rtol 1e-8, one
+call), their peaks' largest relative difference, and the floor: the arithmetic the exact engine's
+method cannot skip at the steps and events it counted. Per record interval one exact propagation
+exp(Aa h) xa and one dissipation form xa.Wd xa (2 na^2 multiply-adds; na = 3 + 2 x the degrees of
+freedom), per event one exact series (about 20 na^2), at 2 flop/ns. Every time is CPU time on a
+shared machine: read ratios, not absolutes.
+
+    .venv/bin/python scripts/bench_scenes.py [--pga 0.2] [--calls 5]
+"""
+import argparse
+import time
+
+import numpy as np
+
+from rockingwall import engine, records, scene_engine as se
+from rockingwall.sweep import suites as suite
+
+WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
+TIES = (1e8, 1e6)
+FLOPS_PER_NS = 2.0
+
+
+def record(pga_g, t_end=80.0):
+    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
+    rec = records.read_at2(by_name["ff19a"].path).to_pga(pga_g)
+    keep = rec.t <= t_end
+    return rec.t[keep], rec.ag[keep]
+
+
+def storey(tie, with_floor):
+    md, kd, m, k = 200.0, 2e5, 3000.0, 3e7
+    floor = dict(m=m, k=k, cs=2 * 0.05 * np.sqrt(k * m)) if with_floor else {}
+    return se.StoreySpec(wall=dict(WALL, Kd=tie), md=md, kd=kd, cd=2 * 0.05 * np.sqrt(kd * md), **floor)
+
+
+def scenes(tie):
+    return {"1 storey": se.Spec(storeys=(storey(tie, False),), rigid_in_plane=True),
+            "2 storeys": se.Spec(storeys=(storey(tie, True), storey(tie, True)), rigid_in_plane=False)}
+
+
+def best_time(run, calls):
+    result, best = run(), float("inf")
+    for _ in range(calls):
+        start = time.process_time()
+        run()
+        best = min(best, time.process_time() - start)
+    return result, best
+
+
+def augmented_size(spec):
+    dofs = sum(2 * (s.wall is not None) + 1 + (not spec.rigid_in_plane) for s in spec.storeys)
+    return 2 * dofs + 3
+
+
+def floor_ms(spec, n_intervals, events):
+    na = augmented_size(spec)
+    flops = 2 * (n_intervals * 2 * na * na + events * 20 * na * na)
+    return flops / FLOPS_PER_NS * 1e-6
+
+
+def peak_difference(a, b):
+    rel = [np.max(np.abs(x - y) / np.maximum(np.abs(y), 1e-9)) for x, y in
+           ((a.peak_s1, b.peak_s1), (a.peak_s2, b.peak_s2))]
+    return max(rel)
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--pga", type=float, default=0.2, help="PGA of the record in g (default 0.2)")
+    ap.add_argument("--calls", type=int, default=5, help="exact runs timed per scene (the best counts)")
+    a = ap.parse_args(argv)
+    t, ag = record(a.pga)
+    print(f"ff19a (Chi-Chi 1999), 80 s at PGA {a.pga:g} g; CPU ms per record (exact: best of {a.calls})")
+    print(f"{'tie [N/m per m]':>15} {'scene':>9} | {'exact':>8} {'x wall':>7} {'floor':>7} | {'CVODES':>8} "
+          f"{'x exact':>8} | {'steps':>7} {'events':>6} {'peaks':>8} | collapsed")
+    for tie in TIES:
+        wall, t_wall = best_time(lambda: engine.run(t, ag, **dict(WALL, Kd=tie)), 20)
+        print(f"{tie:>15.0e} {'one wall':>9} | {t_wall * 1e3:8.2f} {1.0:7.1f} {'':>7} | {'':>8} {'':>8} | "
+              f"{wall.steps:7d} {wall.events:6d} {'':>8} | {bool(wall.collapsed)}")
+        for label, spec in scenes(tie).items():
+            exact, t_exact = best_time(lambda: se.run(spec, t, ag, engine="exact"), a.calls)
+            start = time.process_time()
+            cvode = se.run(spec, t, ag, engine="cvode", rtol=1e-8)
+            t_cvode = time.process_time() - start
+            floor = floor_ms(spec, t.size - 1, exact.events)
+            print(f"{'':>15} {label:>9} | {t_exact * 1e3:8.2f} {t_exact / t_wall:7.1f} {floor:7.2f} | "
+                  f"{t_cvode * 1e3:8.0f} {t_cvode / t_exact:8.0f} | {exact.steps:7d} {exact.events:6d} "
+                  f"{peak_difference(exact, cvode):8.1e} | {exact.collapsed.tolist()}")
+    print("x wall: the exact scene's time over one wall's; floor: its method's arithmetic at its steps and "
+          "events; peaks: the largest relative difference of peak s1, s2 against CVODES at rtol 1e-8")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,225 @@
+/* The exact scene engine (fmu_src/scene/rw_scene_exact*.c): its linear system against the scene's
+ * own rates (rw_scene_derivatives) at random states of random scenes, a short run against
+ * CVODES, and what it refuses. Run under ASan/UBSan by scripts/run_tests.sh. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "check.h"
+#include "rw_scene_exact.h"
+
+static double uniform(double lo, double hi) { return lo + (hi - lo) * (rand() / (double)RAND_MAX); }
+static int coin(void) { return rand() % 2; }
+
+/* a wall in plausible ranges, tied to its diaphragm (support 3) */
+static void random_wall(rw_params *p)
+{
+    rw_params_default(p);
+    p->support = RW_FLEXIBLE_TOP;
+    p->hingeLaw = coin() ? RW_DOHERTY_HINGE : RW_SEMI_RIGID_HINGE;
+    p->b = uniform(0.1, 0.4);
+    p->h = uniform(2.5, 4.5);
+    p->W = uniform(15e3, 25e3) * p->b * p->h;
+    p->psi = uniform(0.0, 1.0);
+    p->Kd = pow(10.0, uniform(5.0, 9.0));
+    p->er = uniform(0.6, 1.0);
+}
+
+static void random_spec(rw_scene_spec *s)
+{
+    int i;
+    memset(s, 0, sizeof *s);
+    s->n_storeys = 1 + rand() % 3;
+    s->rigid_in_plane = coin();
+    s->building.a0 = coin() ? uniform(0.0, 0.5) : 0.0;
+    s->building.a1 = coin() ? uniform(0.0, 1e-3) : 0.0;
+    for (i = 0; i < s->n_storeys; i++) {
+        bd_params *b = &s->building;
+        b->md[i] = uniform(50.0, 500.0);
+        b->diaph[i].k = pow(10.0, uniform(3.5, 6.0));
+        b->cd[i] = uniform(0.0, 0.1) * 2.0 * sqrt(b->diaph[i].k * b->md[i]);
+        b->m[i] = uniform(500.0, 3000.0);
+        b->storey[i].k = pow(10.0, uniform(6.0, 8.0));
+        b->cs[i] = uniform(0.0, 0.05) * 2.0 * sqrt(b->storey[i].k * b->m[i]);
+        s->has_wall[i] = i == 0 || rand() % 4 != 0;
+        if (s->has_wall[i]) random_wall(&s->wall[i]);
+    }
+}
+
+/* a state of a motion: rotations up to the toppling limit, the building a few centimetres off, each
+ * tie stretched by a force of at most a few kN per metre (random displacements of a 1e8 N/m per m
+ * tie would make forces of MN, whose rates the scene's own arithmetic takes to 1e-10 only) */
+static void random_state(const rw_scene *sc, double *x)
+{
+    const int N = sc->S.n_storeys;
+    double y_below = 0.0, w_below = 0.0;
+    int i, k;
+    memset(x, 0, sizeof(double) * RW_SCENE_NX);
+    for (i = 0; i < N; i++) {
+        double *xi = RW_SCENE_WALL(x, i), *f = RW_SCENE_BUILDING(sc, x) + BD_STATES_PER_FLOOR * i;
+        f[BD_Y] = uniform(-0.05, 0.05);
+        f[BD_W] = uniform(-0.5, 0.5);
+        if (sc->S.has_wall[i]) {
+            const rw_params *p = &sc->S.wall[i];
+            const double qt = sc->D[i].q_topple, stretch = uniform(-3e3, 3e3) / p->Kd;
+            for (k = 0; k < 2; k++) xi[k] = uniform(-0.8, 0.8) * qt * (coin() ? 1.0 : 0.05);
+            for (k = 2; k < 4; k++) xi[k] = uniform(-0.3, 0.3);
+            f[BD_Y] = y_below + 0.5 * p->h * (xi[0] + xi[1]) - stretch;
+            f[BD_W] = w_below + 0.5 * p->h * (xi[2] + xi[3]) - 100.0 * stretch;
+        }
+        if (!sc->S.rigid_in_plane) f[BD_U] = uniform(-0.02, 0.02), f[BD_V] = uniform(-0.2, 0.2);
+        y_below = f[BD_Y], w_below = f[BD_W];
+    }
+}
+
+/* the largest |d_i - e_i| over the positions' and velocities' rates, against the largest term of
+ * each rate (the sums cancel: a stiff tie's force is a large difference) */
+static double rates_error(const rw_scene *sc, double ag, double *x)
+{
+    double dx[RW_SCENE_NX], ex[RW_SCENE_NX], scale[RW_SCENE_NX], d2[RW_SCENE_NX], worst = 0.0;
+    int k, b;
+    rw_scene_derivatives(sc, ag, x, dx, NULL);
+    if (rw_scene_exact_rates(sc, ag, x, ex) != 0) return INFINITY;
+    /* each rate's scale: its largest change when any one state or the input doubles (the terms it sums) */
+    rw_scene_derivatives(sc, 2.0 * ag, x, d2, NULL);
+    for (k = 0; k < RW_SCENE_NX; k++) scale[k] = fmax(fabs(dx[k]), fabs(d2[k] - dx[k]));
+    for (b = 0; b < sc->nx; b++) {
+        const double keep = x[b];
+        x[b] = 2.0 * keep;
+        rw_scene_derivatives(sc, ag, x, d2, NULL);
+        x[b] = keep;
+        for (k = 0; k < RW_SCENE_NX; k++) scale[k] = fmax(scale[k], fabs(d2[k] - dx[k]));
+    }
+    for (k = 0; k < sc->nx; k++) {
+        const int floor_block = k >= RW_NX * sc->S.n_storeys;
+        const int off = (k - RW_NX * sc->S.n_storeys) % BD_STATES_PER_FLOOR;
+        if (floor_block && (off == BD_Z || off == BD_ZD || off == BD_WORK_S || off == BD_WORK_D)) continue;
+        if (scale[k] > 0.0) worst = fmax(worst, fabs(dx[k] - ex[k]) / scale[k]);
+    }
+    return worst;
+}
+
+static void test_rates_match_the_scene(void)
+{
+    int n, worst_case = -1;
+    double worst = 0.0;
+    for (n = 0; n < 400; n++) {
+        rw_scene_spec spec;
+        rw_scene sc;
+        double x[RW_SCENE_NX];
+        char msg[256];
+        int i;
+        random_spec(&spec);
+        CHECK(rw_scene_validate(&spec, msg, sizeof msg) == 0, "scene %d refused: %s", n, msg);
+        memset(x, 0, sizeof x);
+        rw_scene_init(&sc, &spec, 0.0, x);
+        for (i = 0; i < spec.n_storeys; i++) {
+            sc.regime[i].side_b = coin() ? 1 : -1;
+            sc.regime[i].side_m = coin() ? 1 : -1;
+            sc.collapsed[i] = spec.has_wall[i] && rand() % 6 == 0;
+        }
+        random_state(&sc, x);
+        {
+            const double e = rates_error(&sc, uniform(-5.0, 5.0), x);
+            if (e > worst) worst = e, worst_case = n;
+        }
+    }
+    printf("rates: worst relative difference %.3g (scene %d) over 400 random scenes and states\n", worst, worst_case);
+    CHECK(worst <= 1e-12, "the linear system's rates differ from rw_scene_derivatives by %.3g (scene %d)", worst,
+          worst_case);
+}
+
+/* the pulse D exp(-(t-1)^2/(2 s^2)) as acceleration, s = 0.15 s, 2 s at 5 ms */
+static void pulse(double D, double t[401], double ag[401])
+{
+    int i;
+    for (i = 0; i <= 400; i++) {
+        const double s = 0.15, tt = 0.005 * i - 1.0;
+        t[i] = 0.005 * i;
+        ag[i] = D * (tt * tt / (s * s) - 1.0) / (s * s) * exp(-tt * tt / (2.0 * s * s));
+    }
+}
+
+/* the exact engine against CVODES at rtol 1e-10: peaks within 1e-4, the same impacts and collapses */
+static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, double D)
+{
+    rw_scene_result a, b;
+    rw_scene_options opt;
+    rw_scene_record rec;
+    double t[401], ag[401];
+    int i, ca, cb;
+    pulse(D, t, ag);
+    rec.n = 401, rec.t = t, rec.ag = ag;
+    memset(&opt, 0, sizeof opt);
+    opt.t_end = 2.0, opt.rtol = 1e-10;
+    memset(&a, 0, sizeof a);
+    memset(&b, 0, sizeof b);
+    ca = rw_scene_run_exact(spec, &rec, &opt, &a);
+    cb = rw_scene_run(spec, &rec, &opt, &b);
+    CHECK(ca == 0 && cb == 0, "%s: runs failed: %d %s / %d %s", what, ca, a.message, cb, b.message);
+    for (i = 0; i < spec->n_storeys; i++) {
+        CHECK(fabs(a.peak_s1[i] - b.peak_s1[i]) <= 1e-4 * b.peak_s1[i], "%s, storey %d: peak s1 %.9g against %.9g",
+              what, i, a.peak_s1[i], b.peak_s1[i]);
+        CHECK(fabs(a.peak_s2[i] - b.peak_s2[i]) <= 1e-4 * b.peak_s2[i], "%s, storey %d: peak s2 %.9g against %.9g",
+              what, i, a.peak_s2[i], b.peak_s2[i]);
+        CHECK(a.impacts[i] == b.impacts[i] && a.collapsed[i] == b.collapsed[i], "%s, storey %d: %ld impacts, collapse %d "
+              "against %ld, %d", what, i, a.impacts[i], a.collapsed[i], b.impacts[i], b.collapsed[i]);
+    }
+    CHECK(a.impacts[0] > 0, "%s: the ground storey's wall does not rock (a comparison of little worth)", what);
+    CHECK(a.max_residual <= 1e-9 * fmax(a.max_work, 1e-3), "%s: energy residual %.3g of work %.3g", what,
+          a.max_residual, a.max_work);
+}
+
+/* two storeys on flexible in-plane walls (soft ties), and one storey with a stiff tie (its mode a
+ * band over the record's intervals, halved near events) */
+static void test_runs_against_cvodes(void)
+{
+    rw_scene_spec spec;
+    int i;
+    srand(7);
+    memset(&spec, 0, sizeof spec);
+    spec.n_storeys = 2;
+    spec.rigid_in_plane = 0;
+    for (i = 0; i < 2; i++) {
+        spec.has_wall[i] = 1;
+        random_wall(&spec.wall[i]);
+        spec.wall[i].Kd = 1e6;
+        spec.building.md[i] = 200.0, spec.building.diaph[i].k = 5e4, spec.building.cd[i] = 300.0;
+        spec.building.m[i] = 2000.0, spec.building.storey[i].k = 5e7, spec.building.cs[i] = 1e4;
+    }
+    compare_with_cvodes("two storeys", &spec, 0.05);
+    spec.n_storeys = 1;
+    spec.rigid_in_plane = 1;
+    spec.wall[0].Kd = 1e8;
+    compare_with_cvodes("stiff tie", &spec, 0.06);
+}
+
+static void test_refusals(void)
+{
+    rw_scene_spec spec;
+    char msg[256];
+    memset(&spec, 0, sizeof spec);
+    spec.n_storeys = 1;
+    spec.rigid_in_plane = 1;
+    spec.has_wall[0] = 1;
+    random_wall(&spec.wall[0]);
+    spec.building.md[0] = 100.0, spec.building.diaph[0].k = 1e4;
+    CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == 0, "a dohertyHinge scene refused: %s", msg);
+    spec.wall[0].hingeLaw = RW_RIGID;
+    CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == RW_SCENE_UNSUPPORTED && strstr(msg, "rigid"),
+          "the rigid law: %s", msg);
+    spec.wall[0].hingeLaw = RW_DOHERTY_HINGE;
+    spec.building.diaphragm_law = BD_BOUC_WEN;
+    CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == RW_SCENE_UNSUPPORTED && strstr(msg, "diaphragm"),
+          "Bouc-Wen diaphragms: %s", msg);
+}
+
+int main(void)
+{
+    srand(12345);
+    test_rates_match_the_scene();
+    test_runs_against_cvodes();
+    test_refusals();
+    printf("%d checks, %d failures\n", checks, failures);
+    return failures ? 1 : 0;
+}

@@ -1,0 +1,114 @@
+"""The building file (rockingwall.building.building_file), the command `rockingwall building` and
+the scene every output names: values with units, errors naming the file and the line, strict JSON."""
+import json
+
+import pytest
+
+from rockingwall import cli
+from rockingwall.building import building_file
+
+CONTRACT = """\
+[building]
+name = "two-storey brick, timber floors"
+
+[[storey]]                                   # ground storey first
+height = "4.0 m"
+wall = { b = "350 mm", W = "25.2 kN/m", overburden = "3.2 kN/m" }
+diaphragm = { stiffness = "60 kN/m/m", mass = "600 kg/m", damping = 0.05 }
+tie = "1e6 N/m/m"
+
+[[storey]]
+height = "3.6 m"
+wall = { b = "230 mm", unit_weight = "18 kN/m3", overburden = "1.5 kN/m" }
+diaphragm = { stiffness = "20 kN/m/m", mass = "200 kg/m", damping = 0.05 }
+tie = "1e6 N/m/m"
+"""
+
+
+def test_the_contract_reads_in_si_units():
+    b = building_file.parse(CONTRACT, "house.toml")
+    ground, upper = b.storeys
+    assert ground.height == 4.0 and ground.wall.b == pytest.approx(0.35) and ground.wall.W == pytest.approx(25.2e3)
+    assert ground.wall.overburden == pytest.approx(3.2e3)
+    assert ground.diaphragm.stiffness == pytest.approx(60e3) and ground.diaphragm.mass == pytest.approx(600.0)
+    assert upper.wall.W == pytest.approx(18e3 * 0.23 * 3.6)  # 14.904 kN/m from the unit weight
+    assert upper.tie == pytest.approx(1e6) and b.rigid_in_plane
+    params = b.wall_parameters(1)
+    assert params["psi"] == pytest.approx(2 * 1.5e3 / (18e3 * 0.23 * 3.6)) and params["Kd"] == pytest.approx(1e6)
+
+
+@pytest.mark.parametrize("edit, line, words", [
+    (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 4, "unknown key"),
+    (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 4, "not a unit of"),
+    (lambda t: t.replace('W = "25.2 kN/m", ', 'W = "25.2 kN/m", unit_weight = "18 kN/m3", '), 4, "one of the two"),
+    (lambda t: t.replace('height = "3.6 m"', 'height = "3.6 m"\nheight = "3 m"'), 12, "not valid TOML"),
+    (lambda t: t.replace('mass = "200 kg/m"', 'mass = "-200 kg/m"'), 10, "outside"),
+    (lambda t: t.replace('wall = { b = "350 mm"', 'wal = { b = "350 mm"'), 4, "unknown key"),
+])
+def test_a_bad_file_names_the_file_the_line_and_the_problem(edit, line, words):
+    with pytest.raises(building_file.BuildingFileError) as err:
+        building_file.parse(edit(CONTRACT), "house.toml")
+    assert str(err.value).startswith(f"house.toml:{line}:") and words in str(err.value)
+
+
+def test_the_command_line_refuses_a_bad_file_without_a_traceback(tmp_path, capsys):
+    path = tmp_path / "house.toml"
+    path.write_bytes(b"\xff\xfe[building]")
+    assert cli.main(["building", str(path), "gaussian"]) == 2
+    err = capsys.readouterr().err
+    assert f"{path}:1: not UTF-8" in err and "Traceback" not in err
+
+
+def _strict(text):
+    def refuse(name):
+        raise ValueError(f"not JSON: {name}")
+    return json.loads(text, parse_constant=refuse)
+
+
+@pytest.fixture(scope="module")
+def house(tmp_path_factory):
+    path = tmp_path_factory.mktemp("house") / "house.toml"
+    path.write_text(CONTRACT)
+    return path
+
+
+def test_the_json_contract(house, capsys):
+    """A list `storeys` per run, each with the contract's keys; a standing wall's t_collapse_s is
+    null; valid JSON (no NaN); the scene named."""
+    assert cli.main(["building", str(house), "gaussian:0.04,1", "--scale", "1", "--json"]) == 0
+    data = _strict(capsys.readouterr().out)
+    assert data["scene"]["name"] == "building" and "left" not in data["scene"]["leaves_out"][:0]
+    (run,) = data["runs"]
+    assert [s["storey"] for s in run["storeys"]] == [1, 2]
+    for s in run["storeys"]:
+        assert {"peak_s1_m", "peak_s2_m", "collapsed", "t_collapse_s", "diaphragm_peak_m",
+                "base_peak_acc_m_s2"} <= set(s)
+        assert s["collapsed"] is False and s["t_collapse_s"] is None
+        assert 0 < s["peak_s1_m"] < 0.1 and s["diaphragm_peak_m"] > 0
+    assert run["storeys"][0]["base_peak_acc_m_s2"] == pytest.approx(2.56, rel=0.01)  # the ground's own peak
+
+
+def test_a_collapse_is_a_time_in_the_table_and_in_json(house, capsys):
+    assert cli.main(["building", str(house), "gaussian:0.3,1", "--scale", "1", "--json"]) == 0
+    storeys = _strict(capsys.readouterr().out)["runs"][0]["storeys"]
+    fallen = [s for s in storeys if s["collapsed"]]
+    assert fallen and all(isinstance(s["t_collapse_s"], float) and s["t_collapse_s"] > 0 for s in fallen)
+    assert cli.main(["building", str(house), "gaussian:0.3,1", "--scale", "1"]) == 0
+    out = capsys.readouterr().out
+    assert "collapsed at" in out and "scene: walls in a 2-storey building" in out and "left out:" in out
+
+
+def test_run_names_the_scene_it_ran(capsys):
+    wall = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013", "--Kd", "20kN/m/m"]
+    assert cli.main(["run", *wall, "gaussian:0.04,1"]) == 0
+    paper = capsys.readouterr().out
+    assert "scene: the paper's" in paper and "diaphragm's mass and damping and the floor's motion" in paper
+    assert cli.main(["run", *wall, "--diaphragm-mass", "200kg/m", "--tie", "1e6", "gaussian:0.04,1", "--json"]) == 0
+    data = _strict(capsys.readouterr().out)
+    assert data["scene"]["name"] == "diaphragm" and "200 kg/m" in data["scene"]["description"]
+
+
+def test_run_with_a_building_file_is_the_building_command(house, capsys):
+    assert cli.main(["run", "--building", str(house), "gaussian:0.04,1", "--json"]) == 0
+    assert len(_strict(capsys.readouterr().out)["runs"][0]["storeys"]) == 2
+    assert cli.main(["run", "--building", str(house), "--b", "0.3", "gaussian"]) == 2
