@@ -44,8 +44,7 @@ class Result:
         """The numbers users print: a dict with units in the keys."""
         return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "peak_F_top_N_per_m": self.peak_F_top,
                 "s1_over_Delta_u": self.s1_over_delta_u,
-                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts,
-                "scene": self.scene.to_dict() if self.scene else None}
+                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
 
 
 def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8,
