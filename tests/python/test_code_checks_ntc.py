@@ -133,6 +133,7 @@ def test_eccentric_top_load_governs_outward():
     (lambda: ntc.check_mechanism(WALL, SITE, z=3.0), "z, H and T1 go together"),
     (lambda: ntc.check_mechanism(WALL, SITE, z=12.0, H=9.0, T1=0.3), "z = 12"),
     (lambda: ntc.check_mechanism(WALL, "B"), "NtcSite"),
+    (lambda: ntc.check_mechanism((3.6, 0.23), SITE), "FaceLoadedWall or a Parapet"),
 ])
 def test_bad_inputs_are_refused_by_name(call, words):
     with pytest.raises(ValueError, match=words):

@@ -10,7 +10,7 @@ import math
 
 from . import ntc_spectrum
 from .common import FAIL, G, PASS, Ref, choice, number, unconfirmed_notes, verdict
-from .mechanism import DIRECTIONS
+from .mechanism import DIRECTIONS, FaceLoadedWall, Parapet
 
 CIRC = "Circolare 2019 Par. C8.7.1"
 REFS = (
@@ -63,6 +63,8 @@ def check_mechanism(element, site, *, FC=1.35, q=2.0, z=None, H=None, T1=None, d
     constraint lines with the rest of the building, the building's height and fundamental period
     (all three, or none for a mechanism at ground level); direction 'outward', 'inward' or 'both'
     (the one with the lower capacity/demand ratio)."""
+    if not isinstance(element, (FaceLoadedWall, Parapet)):
+        raise ValueError(f"check_mechanism needs a FaceLoadedWall or a Parapet, got {type(element).__name__}")
     if not isinstance(site, ntc_spectrum.NtcSite):
         raise ValueError(f"site: expected an NtcSite, got {type(site).__name__}")
     FC = number("FC", FC, 1.0, 1.35, "")
