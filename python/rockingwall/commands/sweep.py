@@ -56,6 +56,8 @@ def parse_args(argv=None):
                         "(the unit of the results' kd_kN column)")
     p.add_argument("--scales", type=float, nargs="+", help="scale factors on the records as given")
     p.add_argument("--pga", dest="pga_g", type=float, nargs="+", help="target PGAs [g] (replaces --scales)")
+    p.add_argument("--building", help="a building file (TOML, docs/your-building.md): its storeys' walls under the "
+                   "suite and intensities, solved as one building (replaces walls, models, hinge laws and K_d)")
     p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 (or ESM, GeoNet, K-NET, COSMOS) files")
     p.add_argument("--records", nargs="+", help="only these records of the suite (by name)")
     p.add_argument("--er", type=float, help="coefficient of restitution (default 0.86)")

@@ -15,7 +15,7 @@ WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units,
 # The defaults of a grid; a TOML file's [grid] table and the flags replace them key by key.
 DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], kd_kN=[50.0],
                 scales=[1.0], pga_g=[], er=0.86, tail=5.0, rtol=1e-6, suite="fema", records_dir="",
-                records=[])
+                records=[], building="")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -176,14 +176,21 @@ def expand(grid, suite):
 
 def plan(config_path, flags):
     """(merged grid, suite of records, RunSpecs) from a TOML file (or None) and the command's
-    flags ({key of DEFAULTS: value}; flags win)."""
+    flags ({key of DEFAULTS: value}; flags win). With a building file (`building`), the runs are
+    its storeys' (rockingwall.sweep.building_runs)."""
     cfg = merge(load_config(config_path), flags)
     suite = suites.load(cfg["suite"], cfg["records"])
+    if cfg["building"]:
+        from . import building_runs
+        return cfg, suite, building_runs.expand(cfg, suite)
     return cfg, suite, expand(cfg, suite)
 
 
 def describe(cfg, suite, specs):
     """The plan in a few lines: the grid, the records and the number of runs."""
+    if cfg["building"]:
+        from . import building_runs
+        return building_runs.describe(cfg, suite, specs)
     kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
     levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
     bad = [r.name for r in suite if r.error]
