@@ -105,41 +105,47 @@ static void span_start(rw_span *sp, const rw_cache_entry *R, const double g0[2],
     }
 }
 
-/* Modal motion at s with the Stumpff coefficients C of each mode at lam s^2 (NULL: computed), as
- * changes from the start, deta = eta(s) - eta(0), dv = v(s) - v(0) (with c0 = 1 - z c2, free of
- * cancellation), and the modal accelerations a. Written as changes, the state at s = 0 is the start
- * state itself, not its image through P Pi: an indicator that set an event's state keeps its sign
- * where the next span begins. fast[i] (fast may be NULL) leaves out the free oscillation of mode i:
- * its exact particular solution (f0 + f1 s)/lam alone, the slow part of a stiff mode. */
-static inline void mode_motion(const rw_span *sp, int i, double s, const double C[2][4], int slow_part, double *deta,
-                               double *dv, double *a)
+/* the modal motion at s as changes from the span's start: deta = eta(s) - eta(0), dv = v(s) - v(0),
+ * and the modal accelerations a */
+typedef struct {
+    double deta[2], dv[2], a[2];
+} rw_modal;
+
+/* Mode i's motion at s into md, with the Stumpff coefficients C of each mode at lam s^2 (NULL:
+ * computed), as changes from the start (with c0 = 1 - z c2, free of cancellation). Written as
+ * changes, the state at s = 0 is the start state itself, not its image through P Pi: an indicator
+ * that set an event's state keeps its sign where the next span begins. slow_part leaves out the
+ * mode's free oscillation: its exact particular solution (f0 + f1 s)/lam alone, the slow part of a
+ * stiff mode. */
+static inline void mode_motion(const rw_span *sp, int i, double s, const double C[2][4], int slow_part, rw_modal *md)
 {
     double c[4];
     const double lam = sp->R->E.lam[i], eta0 = sp->eta[i], v0 = sp->v[i];
     const double f0 = sp->f0[i], f1 = sp->f1[i];
     if (slow_part) {
-        *deta = (f0 + f1 * s) / lam - eta0;
-        *dv = f1 / lam - v0;
-        *a = 0.0;
+        md->deta[i] = (f0 + f1 * s) / lam - eta0;
+        md->dv[i] = f1 / lam - v0;
+        md->a[i] = 0.0;
         return;
     }
     if (C) memcpy(c, C[i], sizeof c);
     else stumpff(lam * s * s, c);
-    *deta = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
-    *dv = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
-    *a = -lam * (eta0 + *deta) + f0 + f1 * s;
+    md->deta[i] = s * (v0 * c[1] + s * ((f0 - lam * eta0) * c[2] + s * f1 * c[3]));
+    md->dv[i] = s * ((f0 - lam * eta0) * c[1] + s * (f1 - lam * v0) * c[2]);
+    md->a[i] = -lam * (eta0 + md->deta[i]) + f0 + f1 * s;
 }
 
-static inline void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, double deta[2],
-                              double dv[2], double a[2])
+/* both modes at s (fast[i], fast may be NULL: mode i's slow part alone) */
+static inline void span_modal(const rw_span *sp, double s, const double C[2][4], const int *fast, rw_modal *md)
 {
     int i;
-    for (i = 0; i < 2; i++) mode_motion(sp, i, s, C, fast && fast[i], &deta[i], &dv[i], &a[i]);
+    for (i = 0; i < 2; i++) mode_motion(sp, i, s, C, fast && fast[i], md);
 }
 
-static void to_physical(const rw_span *sp, const double deta[2], const double dv[2], double x[RW_NX])
+static void to_physical(const rw_span *sp, const rw_modal *md, double x[RW_NX])
 {
     const rw_modes2 *E = &sp->R->E;
+    const double *deta = md->deta, *dv = md->dv;
     x[0] = sp->x0[0] + (E->P[0][0] * deta[0] + E->P[0][1] * deta[1]);
     x[1] = sp->x0[1] + (E->P[1][0] * deta[0] + E->P[1][1] * deta[1]);
     x[2] = sp->x0[2] + (E->P[0][0] * dv[0] + E->P[0][1] * dv[1]);
@@ -147,15 +153,14 @@ static void to_physical(const rw_span *sp, const double deta[2], const double dv
 }
 
 /* the state x and, if xd is not NULL, its time derivative from the modal motion */
-static inline void modal_to_state(const rw_span *sp, const double deta[2], const double dv[2], const double a[2],
-                                  double x[RW_NX], double *xd)
+static inline void modal_to_state(const rw_span *sp, const rw_modal *md, double x[RW_NX], double *xd)
 {
-    to_physical(sp, deta, dv, x);
+    to_physical(sp, md, x);
     if (xd) {
         xd[0] = x[2];
         xd[1] = x[3];
-        xd[2] = sp->R->E.P[0][0] * a[0] + sp->R->E.P[0][1] * a[1];
-        xd[3] = sp->R->E.P[1][0] * a[0] + sp->R->E.P[1][1] * a[1];
+        xd[2] = sp->R->E.P[0][0] * md->a[0] + sp->R->E.P[0][1] * md->a[1];
+        xd[3] = sp->R->E.P[1][0] * md->a[0] + sp->R->E.P[1][1] * md->a[1];
     }
 }
 
@@ -164,9 +169,9 @@ static inline void modal_to_state(const rw_span *sp, const double deta[2], const
 static void span_eval_part(const rw_span *sp, double s, const double C[2][4], const int *fast, double x[RW_NX],
                            double xd[RW_NX])
 {
-    double deta[2], dv[2], a[2];
-    span_modal(sp, s, C, fast, deta, dv, a);
-    modal_to_state(sp, deta, dv, a, x, xd);
+    rw_modal md;
+    span_modal(sp, s, C, fast, &md);
+    modal_to_state(sp, &md, x, xd);
 }
 
 static void span_eval(const rw_span *sp, double s, const double C[2][4], double x[RW_NX], double xd[RW_NX])
@@ -179,13 +184,13 @@ static void span_eval(const rw_span *sp, double s, const double C[2][4], double 
 static void span_eval_slow_and_full(const rw_span *sp, double s, const double C[2][4], const int fast[2],
                                     double x_slow[RW_NX], double xd_slow[RW_NX], double x_full[RW_NX])
 {
-    double deta[2], dv[2], a[2];
+    rw_modal md;
     int i;
-    span_modal(sp, s, C, fast, deta, dv, a);
-    modal_to_state(sp, deta, dv, a, x_slow, xd_slow);
+    span_modal(sp, s, C, fast, &md);
+    modal_to_state(sp, &md, x_slow, xd_slow);
     for (i = 0; i < 2; i++)
-        if (fast[i]) mode_motion(sp, i, s, C, 0, &deta[i], &dv[i], &a[i]);
-    to_physical(sp, deta, dv, x_full);
+        if (fast[i]) mode_motion(sp, i, s, C, 0, &md);
+    to_physical(sp, &md, x_full);
 }
 
 static rw_input span_input(const rw_span *sp, double s)
@@ -244,16 +249,40 @@ static void span_rates(const rw_engine *e, const rw_span *sp, double floor_rate,
     }
 }
 
+/* ---- the span under resolution -------------------------------------------------------------- */
+/* What the functions along a span share: the engine (its region, lines and forms, the tracked
+ * indicator states, peaks and counters), the regime (events change it), the span, what a new span
+ * of the same region starts from (the region, its modal forcing g0, the input segment given at
+ * t_in), the rates of its modes (span_rates: the band of a fast mode) and the motion's state x, *t,
+ * which the resolution advances. A quiet segment (rw_engine_quiet_segment) sets e, m and sp only. */
+typedef struct {
+    rw_engine *e;
+    rw_regime *m;
+    rw_span sp;
+    rw_cache_entry *R;
+    double g0[2];
+    const rw_linear_input *in;
+    double t_in;
+    rw_rates r;
+    double *x, *t;
+} rw_span_ctx;
+
+/* a new span of the same region from (t0, x) */
+static void restart_span(rw_span_ctx *sc, double t0, const double x[RW_NX])
+{
+    span_start(&sc->sp, sc->R, sc->g0, t0, x, sc->in, sc->t_in);
+}
+
 /* ---- indicators along a span ---------------------------------------------------------------- */
 typedef rw_engine_point rw_point; /* rw_engine.h */
 
 /* The indicators of the closed rigid hinges among `mask` at the state x (rates along xd, if not
- * NULL, with the input at the rate in_rate) from the region's affine form of their moments
- * (rw_closed_force_form): 1 - |f|/cap + eps_f, as rw_event_indicators computes it. Returns those
- * within RW_AFFINE_Q_CLEARANCE of zero, which the physics itself takes (the signs decided near a
- * root must come from one function, as for the collapse form). */
-static unsigned closed_hinge_values(const rw_engine *e, const rw_input *in, const rw_input *in_rate,
-                                    const double x[RW_NX], const double *xd, unsigned mask, double *z, double *dz)
+ * NULL, with the input at the rate in[1]; in[0]: its value) from the region's affine form of their
+ * moments (rw_closed_force_form): 1 - |f|/cap + eps_f, as rw_event_indicators computes it. Returns
+ * those within RW_AFFINE_Q_CLEARANCE of zero, which the physics itself takes (the signs decided near
+ * a root must come from one function, as for the collapse form). */
+static unsigned closed_hinge_values(const rw_engine *e, const rw_input in[2], const double x[RW_NX], const double *xd,
+                                    unsigned mask, double *z, double *dz)
 {
     const rw_closed_form *F = &e->closed_form;
     unsigned near_zero = 0;
@@ -262,12 +291,12 @@ static unsigned closed_hinge_values(const rw_engine *e, const rw_input *in, cons
         const int k = j == 0 ? RW_Z_BASE : RW_Z_MID;
         double f;
         if (!((mask >> k) & 1u)) continue;
-        f = F->c[j] + F->G[j][0] * x[0] + F->G[j][1] * x[1] + F->g_ag[j] * in->ag + F->g_u[j] * in->u_top;
+        f = F->c[j] + F->G[j][0] * x[0] + F->G[j][1] * x[1] + F->g_ag[j] * in[0].ag + F->g_u[j] * in[0].u_top;
         z[k] = 1.0 - fabs(f) * F->inv_cap[j] + RW_EPS_F;
         if (fabs(z[k]) < RW_AFFINE_Q_CLEARANCE) near_zero |= 1u << k;
         else if (xd) {
             const double df =
-                F->G[j][0] * xd[0] + F->G[j][1] * xd[1] + F->g_ag[j] * in_rate->ag + F->g_u[j] * in_rate->u_top;
+                F->G[j][0] * xd[0] + F->G[j][1] * xd[1] + F->g_ag[j] * in[1].ag + F->g_u[j] * in[1].u_top;
             dz[k] = -((f > 0.0) - (f < 0.0)) * df * F->inv_cap[j];
         }
     }
@@ -289,15 +318,21 @@ static int collapse_form_holds(const rw_engine *e, const rw_regime *m, const dou
  * lines of the rotations (rw_indicator_lines, taken once per region) are evaluated here; the
  * others (collapse, toppling, closed hinges) by the shared physics, with the region's affine
  * hinge moments where the law has them (rw_hinge_law.q_only). */
-static void region_indicators(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_input *in,
-                              const double x[RW_NX], const double xd[RW_NX], unsigned mask, double *restrict z,
-                              double *restrict dz)
+static void region_indicators(const rw_span_ctx *sc, const rw_input *in, const double x[RW_NX], const double xd[RW_NX],
+                              unsigned mask, double *restrict z, double *restrict dz)
 {
+    const rw_engine *e = sc->e;
+    const rw_regime *m = sc->m;
+    const rw_span *sp = &sc->sp;
     const unsigned collapse = 1u << RW_Z_COLLAPSE, topple = 1u << RW_Z_TOPPLE;
     unsigned rest = mask & ~e->line_mask;
     int k;
     if (xd && mask == RW_Z_ALL) { /* every line, without a test per line (the others are overwritten below) */
         const rw_line_arrays *A = &e->line_arrays;
+        /* z, dz never overlap the engine's arrays, which gcc cannot tell through the context's
+         * pointer (restrict on z, dz serves only against other parameters): without this it tests
+         * for an overlap at every call */
+#pragma GCC ivdep
         for (k = 0; k < RW_NZ; k++) { /* rw_line_value's arithmetic on arrays, which the compiler vectorizes */
             const double w = A->a0[k] * x[0] + A->a1[k] * x[1], wd = A->a0[k] * xd[0] + A->a1[k] * xd[1];
             const double sign = (double)(w > 0.0) - (double)(w < 0.0);
@@ -313,8 +348,8 @@ static void region_indicators(const rw_engine *e, const rw_regime *m, const rw_s
         rest &= ~topple;
     }
     if (rest & e->closed_mask) {
-        const rw_input rate = {sp->ag1, sp->u1};
-        rest = (rest & ~e->closed_mask) | closed_hinge_values(e, in, &rate, x, xd, rest & e->closed_mask, z, dz);
+        const rw_input in_and_rate[2] = {*in, {sp->ag1, sp->u1}};
+        rest = (rest & ~e->closed_mask) | closed_hinge_values(e, in_and_rate, x, xd, rest & e->closed_mask, z, dz);
     }
     if ((rest & collapse) && sp->aq.valid && collapse_form_holds(e, m, x)) {
         if (e->collapse_radius == 0.0) {
@@ -342,48 +377,53 @@ static void region_indicators(const rw_engine *e, const rw_regime *m, const rw_s
     }
 }
 
-static inline void eval_point(const rw_engine *e, const rw_regime *m, const rw_span *sp, double s,
-                              const double C[2][4], rw_point *pt)
+static inline void eval_point(const rw_span_ctx *sc, double s, const double C[2][4], rw_point *pt)
 {
     double xd[RW_NX];
-    rw_input in = span_input(sp, s);
+    rw_input in = span_input(&sc->sp, s);
     pt->s = s;
-    span_eval(sp, s, C, pt->x, xd);
-    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+    span_eval(&sc->sp, s, C, pt->x, xd);
+    region_indicators(sc, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
 }
 
-static double indicator_at(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s)
+static double indicator_at(const rw_span_ctx *sc, int k, double s)
 {
     double x[RW_NX], z[RW_NZ];
-    rw_input in = span_input(sp, s);
-    span_eval(sp, s, NULL, x, NULL);
-    region_indicators(e, m, sp, &in, x, NULL, 1u << k, z, NULL);
+    rw_input in = span_input(&sc->sp, s);
+    span_eval(&sc->sp, s, NULL, x, NULL);
+    region_indicators(sc, &in, x, NULL, 1u << k, z, NULL);
     return z[k];
 }
 
 /* rate of indicator k at s (for the extremum of a possible double crossing) */
-static double indicator_rate(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s)
+static double indicator_rate(const rw_span_ctx *sc, int k, double s)
 {
     rw_point pt;
-    eval_point(e, m, sp, s, NULL, &pt);
+    eval_point(sc, s, NULL, &pt);
     return pt.dz[k];
 }
+
+/* a bracket [lo, hi] of a root with the function's values at its ends */
+typedef struct {
+    double lo, flo, hi, fhi;
+} rw_bracket;
 
 /* Safeguarded regula falsi (Illinois; a bisection when three steps have not halved the bracket)
  * for the first s in (lo, hi] where the boolean (value > 0) differs from its value at lo, starting
  * from the guess (NaN: none). Returns hi at convergence (to a few ulps of the absolute time), the
  * first point known to be past the root. */
-typedef double (*rw_scalar_fn)(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s);
+typedef double (*rw_scalar_fn)(const rw_span_ctx *sc, int k, double s);
 
-static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double lo,
-                          double flo, double hi, double fhi, double rel_tol, double guess)
+static double find_switch(rw_scalar_fn f, const rw_span_ctx *sc, int k, const rw_bracket *br, double rel_tol,
+                          double guess)
 {
+    double lo = br->lo, flo = br->flo, hi = br->hi, fhi = br->fhi;
     const int blo = flo > 0.0;
     const double tol_interval = rel_tol * (hi - lo);
     double width_before = hi - lo;
     int it, last = 0;
     for (it = 0; it < 400; it++) {
-        const double tol = rw_max2(4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300, tol_interval);
+        const double tol = rw_max2(4.0 * DBL_EPSILON * (fabs(sc->sp.t0) + fabs(hi)) + 1e-300, tol_interval);
         double s, fs;
         int bisect = 0;
         if (hi - lo <= tol) break;
@@ -395,7 +435,7 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_regime *m
         else s = (bisect || fhi == flo) ? 0.5 * (lo + hi) : (lo * fhi - hi * flo) / (fhi - flo);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
-        fs = f(e, m, sp, k, s);
+        fs = f(sc, k, s);
         if ((fs > 0.0) != blo) {
             hi = s;
             fhi = fs;
@@ -414,21 +454,20 @@ static double find_switch(rw_scalar_fn f, const rw_engine *e, const rw_regime *m
 /* Indicator k and its rate at s and, for a line of the rotations, its second rate (*curv; NaN for
  * the others). A line's value comes from the same state and the same evaluation as
  * region_indicators', so its sign at the root is the one every other test sees. */
-static double indicator_rates_at(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, double s,
-                                 double x[RW_NX], double *rate, double *curv)
+static double indicator_rates_at(const rw_span_ctx *sc, int k, double s, double x[RW_NX], double *rate, double *curv)
 {
     double xd[RW_NX], z[RW_NZ], dz[RW_NZ];
     rw_input in;
-    span_eval(sp, s, NULL, x, xd);
-    if ((e->line_mask >> k) & 1u) {
-        const rw_indicator_line *L = &e->lines[k];
+    span_eval(&sc->sp, s, NULL, x, xd);
+    if ((sc->e->line_mask >> k) & 1u) {
+        const rw_indicator_line *L = &sc->e->lines[k];
         const double w = L->a[0] * x[0] + L->a[1] * x[1];
         const double slope = L->s * ((w > 0.0) - (w < 0.0)) + L->t;
         *curv = slope * (L->a[0] * xd[2] + L->a[1] * xd[3]);
         return rw_line_value(L, x, xd, rate);
     }
-    in = span_input(sp, s);
-    region_indicators(e, m, sp, &in, x, xd, 1u << k, z, dz);
+    in = span_input(&sc->sp, s);
+    region_indicators(sc, &in, x, xd, 1u << k, z, dz);
     *rate = dz[k];
     *curv = NAN;
     return z[k];
@@ -443,20 +482,21 @@ static double root_step(double f, double df, double ddf)
     return df != 0.0 ? -f / df : NAN;
 }
 
-/* The first s in (lo, hi] where indicator k leaves the state `was` (the state at lo), to a few ulps
- * of the absolute time, from the guess (NaN: none): Halley or Newton steps on the exact motion,
- * kept inside the bracket (else a regula falsi step, and a bisection when three steps have not
- * halved it). Near the root the last step is taken a little past it, so that the bracket closes.
- * Returns hi, the first point known to be past the root, with the state there in x_hi if it was
- * evaluated here (*x_valid). */
-static double refine_root(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, int was, double lo,
-                          double flo, double hi, double fhi, double guess, double x_hi[RW_NX], int *x_valid)
+/* The first s in the bracket's (lo, hi] where indicator k leaves the state `was` (the state at lo),
+ * to a few ulps of the absolute time, from the guess (NaN: none): Halley or Newton steps on the
+ * exact motion, kept inside the bracket (else a regula falsi step, and a bisection when three steps
+ * have not halved it). Near the root the last step is taken a little past it, so that the bracket
+ * closes. Returns hi, the first point known to be past the root, with the state there in x_hi if it
+ * was evaluated here (*x_valid). */
+static double refine_root(const rw_span_ctx *sc, int k, int was, const rw_bracket *br, double guess,
+                          double x_hi[RW_NX], int *x_valid)
 {
+    double lo = br->lo, flo = br->flo, hi = br->hi, fhi = br->fhi;
     double width_before = hi - lo, s = guess;
     int it, past;
     *x_valid = 0;
     for (it = 0; it < 200; it++) {
-        const double tol = 4.0 * DBL_EPSILON * (fabs(sp->t0) + fabs(hi)) + 1e-300;
+        const double tol = 4.0 * DBL_EPSILON * (fabs(sc->sp.t0) + fabs(hi)) + 1e-300;
         double fs, rate, curv, step, x[RW_NX];
         if (hi - lo <= tol) break;
         if (it % 3 == 0) { /* the safeguard: every three steps the bracket must have halved */
@@ -466,7 +506,7 @@ static double refine_root(const rw_engine *e, const rw_regime *m, const rw_span 
         if (!(s > lo && s < hi)) s = fhi != flo ? (lo * fhi - hi * flo) / (fhi - flo) : 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) s = 0.5 * (lo + hi);
         if (!(s > lo && s < hi)) break; /* adjacent doubles */
-        fs = indicator_rates_at(e, m, sp, k, s, x, &rate, &curv);
+        fs = indicator_rates_at(sc, k, s, x, &rate, &curv);
         past = (fs > 0.0) != was;
         if (past) {
             hi = s, fhi = fs;
@@ -583,9 +623,8 @@ static double hermite_root(double za, double da, double zb, double db, double L)
  * zero in between? Only when it moves toward zero at an end and its Hermite interpolant does not
  * clear zero; then the piece is split (a breakpoint indicator |w| - c has a kink at w = 0, so one
  * piece can hold a dip and a turn), and at the finest level the extremum is located. On a dip,
- * *lo, *hi bracket its first crossing. */
-static int dip(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k, int was, const rw_point *a,
-               const rw_point *b, int depth, double *lo, double *flo, double *hi, double *fhi)
+ * *br brackets its first crossing. */
+static int dip(const rw_span_ctx *sc, int k, int was, const rw_point *a, const rw_point *b, int depth, rw_bracket *br)
 {
     const int approach = was ? a->dz[k] < 0.0 : a->dz[k] > 0.0;
     const int leave = was ? b->dz[k] > 0.0 : b->dz[k] < 0.0;
@@ -596,10 +635,13 @@ static int dip(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k,
     if (depth == RW_DIP_DEPTH) {
         double s_ext, z_ext;
         if (!approach || !leave) return 0;
-        s_ext = find_switch(indicator_rate, e, m, sp, k, a->s, a->dz[k], b->s, b->dz[k], 1e-9, NAN);
-        z_ext = indicator_at(e, m, sp, k, s_ext);
+        {
+            const rw_bracket rates = {a->s, a->dz[k], b->s, b->dz[k]};
+            s_ext = find_switch(indicator_rate, sc, k, &rates, 1e-9, NAN);
+        }
+        z_ext = indicator_at(sc, k, s_ext);
         if ((z_ext > 0.0) == was) return 0;
-        *lo = a->s, *flo = a->z[k], *hi = s_ext, *fhi = z_ext;
+        br->lo = a->s, br->flo = a->z[k], br->hi = s_ext, br->fhi = z_ext;
         return 1;
     }
     p[0] = *a;
@@ -607,12 +649,12 @@ static int dip(const rw_engine *e, const rw_regime *m, const rw_span *sp, int k,
         rw_point *q = &p[i & 1];
         const rw_point *prev = &p[(i - 1) & 1];
         if (i == 4) *q = *b;
-        else eval_point(e, m, sp, a->s + 0.25 * i * (b->s - a->s), NULL, q);
+        else eval_point(sc, a->s + 0.25 * i * (b->s - a->s), NULL, q);
         if ((q->z[k] > 0.0) != was) {
-            *lo = prev->s, *flo = prev->z[k], *hi = q->s, *fhi = q->z[k];
+            br->lo = prev->s, br->flo = prev->z[k], br->hi = q->s, br->fhi = q->z[k];
             return 1;
         }
-        if (dip(e, m, sp, k, was, prev, q, depth + 1, lo, flo, hi, fhi)) return 1;
+        if (dip(sc, k, was, prev, q, depth + 1, br)) return 1;
     }
     return 0;
 }
@@ -669,11 +711,19 @@ static inline int insert_by_guess(int order[RW_NZ], int n, const double guess[RW
     return n + 1;
 }
 
+/* an event located on a span: its offset s, its indicator k and the state x there */
+typedef struct {
+    double s;
+    int k;
+    double x[RW_NX];
+} rw_root;
+
 /* Earliest s in (a->s, b->s] where an indicator of `suspects` (suspects_of) changes its state
- * e->b[k], including a dip through zero and back inside the substep. Returns 1 and *s_event, or 0. */
-static int first_event(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a, const rw_point *b,
-                       unsigned suspects, double *s_event, int *k_event, double x_event[RW_NX])
+ * e->b[k], including a dip through zero and back inside the substep. Returns 1 with *ev, or 0
+ * (*ev unchanged). */
+static int first_event(const rw_span_ctx *sc, const rw_point *a, const rw_point *b, unsigned suspects, rw_root *ev)
 {
+    const rw_engine *e = sc->e;
     int order[RW_NZ], n = 0, i, found = 0, x_known = 0;
     double guess[RW_NZ], best = b->s;
     /* the indicators that change sign first, the earliest guess first, then the possible dips: a
@@ -691,24 +741,26 @@ static int first_event(const rw_engine *e, const rw_regime *m, const rw_span *sp
     }
     for (i = 0; i < n; i++) {
         const int k = order[i], was = e->b[k];
-        double lo = a->s, flo = a->z[k], hi = b->s, fhi = b->z[k], s, x_root[RW_NX];
+        rw_bracket br = {a->s, a->z[k], b->s, b->z[k]};
+        double s, x_root[RW_NX];
         int x_valid;
-        if (found && x_known && !crossed_before(e, k, was, a, best, x_event)) continue;
-        if (guess[k] == INFINITY && !dip(e, m, sp, k, was, a, b, 0, &lo, &flo, &hi, &fhi)) continue;
-        if ((flo > 0.0) != was) flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
-        if (found && lo >= best) continue;
-        s = refine_root(e, m, sp, k, was, lo, flo, hi, fhi, guess[k] == INFINITY ? NAN : guess[k], x_root, &x_valid);
+        if (found && x_known && !crossed_before(e, k, was, a, best, ev->x)) continue;
+        if (guess[k] == INFINITY && !dip(sc, k, was, a, b, 0, &br)) continue;
+        if ((br.flo > 0.0) != was) br.flo = was ? DBL_MIN : 0.0; /* the state at lo is the tracked one */
+        if (found && br.lo >= best) continue;
+        s = refine_root(sc, k, was, &br, guess[k] == INFINITY ? NAN : guess[k], x_root, &x_valid);
         if (!found || s < best) {
             best = s;
-            *k_event = k;
+            ev->k = k;
             x_known = x_valid;
-            if (x_valid) memcpy(x_event, x_root, sizeof x_root);
+            if (x_valid) memcpy(ev->x, x_root, sizeof x_root);
         }
         found = 1;
     }
-    *s_event = best;
-    if (found && !x_known) span_eval(sp, best, NULL, x_event, NULL);
-    return found;
+    if (!found) return 0;
+    ev->s = best;
+    if (!x_known) span_eval(&sc->sp, best, NULL, ev->x, NULL);
+    return 1;
 }
 
 /* A range that holds hermite_range's (below) (wider, no extremum, no square root): the interpolant is a
@@ -730,14 +782,13 @@ static double s_of(const rw_engine *e, int which, const double x[RW_NX])
     return e->s_coef[which][0] * x[0] + e->s_coef[which][1] * x[1];
 }
 
-static double rate_of_s(const rw_engine *e, const rw_regime *m, const rw_span *sp, int which, double s)
+static double rate_of_s(const rw_span_ctx *sc, int which, double s)
 {
     double x[RW_NX], v[RW_NX] = {0, 0, 0, 0};
-    (void)m;
-    span_eval(sp, s, NULL, x, NULL);
+    span_eval(&sc->sp, s, NULL, x, NULL);
     v[0] = x[2];
     v[1] = x[3];
-    return s_of(e, which, v);
+    return s_of(sc->e, which, v);
 }
 
 static void track_peak(rw_engine *e, int which, double value)
@@ -747,9 +798,9 @@ static void track_peak(rw_engine *e, int which, double value)
 }
 
 /* peaks over [a, b] of the span: the ends and an interior turning point of s1, s2 */
-static void peaks_on(rw_engine *e, const rw_regime *m, const rw_span *sp, const double xa[RW_NX], double sa,
-                     const double xb[RW_NX], double sb)
+static void peaks_on(const rw_span_ctx *sc, const double xa[RW_NX], double sa, const double xb[RW_NX], double sb)
 {
+    rw_engine *e = sc->e;
     int w;
     for (w = 0; w < 2; w++) {
         const double c0 = e->s_coef[w][0], c1 = e->s_coef[w][1];
@@ -763,9 +814,10 @@ static void peaks_on(rw_engine *e, const rw_regime *m, const rw_span *sp, const 
         hermite_range_bound(c0 * xa[0] + c1 * xa[1], ra, vb, rb, sb - sa, &lo, &hi);
         if (rw_max2(-lo, hi) >= *peak) {
             /* a turning point: its value is quadratic in the location error, 1e-9 of the substep is enough */
-            const double s = find_switch(rate_of_s, e, m, sp, w, sa, ra, sb, rb, 1e-9, NAN);
+            const rw_bracket br = {sa, ra, sb, rb};
+            const double s = find_switch(rate_of_s, sc, w, &br, 1e-9, NAN);
             double x[RW_NX];
-            span_eval(sp, s, NULL, x, NULL);
+            span_eval(&sc->sp, s, NULL, x, NULL);
             track_peak(e, w, s_of(e, w, x));
         }
     }
@@ -781,8 +833,10 @@ static void record_output(rw_engine *e, const double x[RW_NX])
 }
 
 /* grid times in (t0 + sa, t0 + sb] */
-static void outputs_on(rw_engine *e, const rw_span *sp, double sb)
+static void outputs_on(const rw_span_ctx *sc, double sb)
 {
+    rw_engine *e = sc->e;
+    const rw_span *sp = &sc->sp;
     while (e->i_out < e->n_out && e->t_out[e->i_out] <= sp->t0 + sb) {
         double x[RW_NX];
         span_eval(sp, e->t_out[e->i_out] - sp->t0, NULL, x, NULL);
@@ -911,40 +965,40 @@ static int one_substep_covers(const rw_engine *e, const rw_cache_entry *R, doubl
 /* The values and rates of the indicators of `mask` at the state x of the span's motion at s, for
  * the indicators that are lines, the toppling indicator, the collapse form and the closed hinges'
  * form: their rates need the rotations' rates alone (x[2], x[3]), not a propagation to s. */
-static void point_from_state(const rw_engine *e, const rw_regime *m, const rw_span *sp, const double x[RW_NX],
-                             double s, unsigned mask, rw_point *pt)
+static void point_from_state(const rw_span_ctx *sc, const double x[RW_NX], double s, unsigned mask, rw_point *pt)
 {
     const double xd[RW_NX] = {x[2], x[3], 0.0, 0.0};
-    const rw_input in = span_input(sp, s);
+    const rw_input in = span_input(&sc->sp, s);
     pt->s = s;
     if (pt->x != x) memcpy(pt->x, x, sizeof pt->x);
-    region_indicators(e, m, sp, &in, pt->x, xd, mask, pt->z, pt->dz);
+    region_indicators(sc, &in, pt->x, xd, mask, pt->z, pt->dz);
 }
 
 /* The carried end point (rw_engine.carry) as the start point of the span sp, which starts at its
  * time and state: the closed hinges' indicators are taken again at the span's input (in *buf), since
  * their rates follow the input's; the other indicators depend on the state and the rotations'
  * rates alone. */
-static const rw_point *carried_with_closed_hinges(const rw_engine *e, const rw_regime *m, const rw_span *sp,
-                                                  rw_point *buf)
+static const rw_point *carried_with_closed_hinges(const rw_span_ctx *sc, rw_point *buf)
 {
-    *buf = e->carry;
-    point_from_state(e, m, sp, buf->x, 0.0, e->closed_mask, buf);
+    *buf = sc->e->carry;
+    point_from_state(sc, buf->x, 0.0, sc->e->closed_mask, buf);
     return buf;
 }
 
-static const rw_point *carried_start(const rw_engine *e, const rw_regime *m, const rw_span *sp, rw_point *buf)
+static const rw_point *carried_start(const rw_span_ctx *sc, rw_point *buf)
 {
-    return e->closed_mask ? carried_with_closed_hinges(e, m, sp, buf) : &e->carry;
+    return sc->e->closed_mask ? carried_with_closed_hinges(sc, buf) : &sc->e->carry;
 }
 
 /* The start point of a span: the end point of the span before, where that holds (carried_start),
  * else evaluated into *buf */
-static const rw_point *start_point(rw_engine *e, const rw_regime *m, const rw_span *sp, rw_point *buf)
+static const rw_point *start_point(const rw_span_ctx *sc, rw_point *buf)
 {
-    if (e->carry_valid && e->region_valid && e->carry_t == sp->t0 && memcmp(e->carry.x, sp->x0, sizeof e->carry.x) == 0)
-        return carried_start(e, m, sp, buf);
-    eval_point(e, m, sp, 0.0, NULL, buf);
+    const rw_engine *e = sc->e;
+    if (e->carry_valid && e->region_valid && e->carry_t == sc->sp.t0 &&
+        memcmp(e->carry.x, sc->sp.x0, sizeof e->carry.x) == 0)
+        return carried_start(sc, buf);
+    eval_point(sc, 0.0, NULL, buf);
     return buf;
 }
 
@@ -987,35 +1041,34 @@ static void region_lines(rw_engine *e, const rw_regime *m);
  * - if it changed the rates (a base impact) and the span is the segment's only piece
  *   (`restart`), a new span of the same region starts at the event and pb is evaluated again at
  *   the segment's end t_end.
- * *at_event: the point at the event with the new lines (its states are the tracked ones, as a new
- * span's start point would give them). The indicators other than lines (toppling, the collapse
- * form) need the rotations' rates alone there, not a propagation. Returns 0 where this does not
- * apply (then the caller goes back to advance()). */
+ * *at_event: the point at the event (the motion's state sc->x) with the new lines (its states are
+ * the tracked ones, as a new span's start point would give them). The indicators other than lines
+ * (toppling, the collapse form) need the rotations' rates alone there, not a propagation. Returns 0
+ * where this does not apply (then the caller goes back to advance()). */
 typedef struct {
-    const rw_cache_entry *R;
-    const double *g0;
-    const rw_linear_input *in;
-    double t_in, t_end;
+    double t_end;
     int restart;
 } rw_piece;
 
-static int go_on_after_event(rw_engine *e, const rw_regime *m, rw_span *sp, const rw_piece *pc, const double x[RW_NX],
-                             int state_kept, double s_ev, rw_point *at_event, rw_point *pb)
+static int go_on_after_event(rw_span_ctx *sc, const rw_piece *pc, int state_kept, double s_ev, rw_point *at_event,
+                             rw_point *pb)
 {
     const unsigned from_rotations = (1u << RW_Z_TOPPLE) | (1u << RW_Z_COLLAPSE);
+    rw_engine *e = sc->e;
+    const double *x = sc->x;
     if (!state_kept && !pc->restart) return 0;
-    region_lines(e, m);
-    if (e->P.support != RW_FLEXIBLE_TOP || !q_fixes_region(e, sp) ||
+    region_lines(e, sc->m);
+    if (e->P.support != RW_FLEXIBLE_TOP || !q_fixes_region(e, &sc->sp) ||
         (RW_Z_ALL & ~e->line_mask & ~from_rotations))
         return 0;
     e->region_valid = 1; /* apply_event let it go: the same region, with its new lines */
     if (state_kept) {
-        point_from_state(e, m, sp, x, s_ev, RW_Z_ALL, at_event);
-        point_from_state(e, m, sp, pb->x, pb->s, RW_Z_ALL, pb);
+        point_from_state(sc, x, s_ev, RW_Z_ALL, at_event);
+        point_from_state(sc, pb->x, pb->s, RW_Z_ALL, pb);
     } else {
-        span_start(sp, pc->R, pc->g0, sp->t0 + s_ev, x, pc->in, pc->t_in);
-        point_from_state(e, m, sp, x, 0.0, RW_Z_ALL, at_event);
-        eval_point(e, m, sp, pc->t_end - sp->t0, NULL, pb);
+        restart_span(sc, sc->sp.t0 + s_ev, x);
+        point_from_state(sc, x, 0.0, RW_Z_ALL, at_event);
+        eval_point(sc, pc->t_end - sc->sp.t0, NULL, pb);
     }
     track_states(e, at_event->z);
     e->b_stale = 0;
@@ -1024,28 +1077,31 @@ static int go_on_after_event(rw_engine *e, const rw_regime *m, rw_span *sp, cons
 }
 
 /* The events of the piece [*pa, pb] of the span (suspects: suspects_of), earliest first: each is
- * applied (x, *t at it); one after which go_on_after_event applies goes on in this piece (*pa
- * becomes *event_point, the point after it). Returns 0 when the piece has no more events (its rest
- * is quiet), -1 when an event ends the span (the caller starts a new one), or a collapse / error
- * code (apply_event). */
-static int events_in_piece(rw_engine *e, rw_regime *m, rw_span *sp, const rw_piece *pc, const rw_point **pa,
-                           rw_point *pb, unsigned suspects, rw_point *event_point, double x[RW_NX], double *t)
+ * applied (the motion's x, *t at it); one after which go_on_after_event applies goes on in this
+ * piece (*pa becomes *event_point, the point after it). Returns 0 when the piece has no more events
+ * (its rest is quiet), -1 when an event ends the span (the caller starts a new one), or a collapse /
+ * error code (apply_event). */
+static int events_in_piece(rw_span_ctx *sc, const rw_piece *pc, const rw_point **pa, rw_point *pb, unsigned suspects,
+                           rw_point *event_point)
 {
-    double s_ev = 0.0;
-    int k_ev = 0; /* both set by first_event when it finds one */
-    while (suspects && first_event(e, m, sp, *pa, pb, suspects, &s_ev, &k_ev, x)) {
-        const rw_input ie = span_input(sp, s_ev);
+    rw_engine *e = sc->e;
+    double *x = sc->x;
+    rw_root ev;
+    while (suspects && first_event(sc, *pa, pb, suspects, &ev)) {
+        const double s_ev = ev.s;
+        const rw_input ie = span_input(&sc->sp, s_ev);
         double x_before[RW_NX];
         int rc, kept;
-        peaks_on(e, m, sp, (*pa)->x, (*pa)->s, x, s_ev);
-        outputs_on(e, sp, s_ev);
-        *t = sp->t0 + s_ev;
+        memcpy(x, ev.x, sizeof ev.x);
+        peaks_on(sc, (*pa)->x, (*pa)->s, x, s_ev);
+        outputs_on(sc, s_ev);
+        *sc->t = sc->sp.t0 + s_ev;
         memcpy(x_before, x, sizeof x_before);
-        rc = apply_event(e, m, x, *t, &ie);
+        rc = apply_event(e, sc->m, x, *sc->t, &ie);
         if (rc) return rc;
-        if (!hinge_event_keeps_region(e, sp, k_ev, x)) return -1;
+        if (!hinge_event_keeps_region(e, &sc->sp, ev.k, x)) return -1;
         kept = memcmp(x_before, x, sizeof x_before) == 0;
-        if (!go_on_after_event(e, m, sp, pc, x, kept, s_ev, event_point, pb)) {
+        if (!go_on_after_event(sc, pc, kept, s_ev, event_point, pb)) {
             e->region_keep = 1;
             return -1;
         }
@@ -1055,17 +1111,17 @@ static int events_in_piece(rw_engine *e, rw_regime *m, rw_span *sp, const rw_pie
     return 0;
 }
 
-/* Full resolution over [0, len] of the span (which starts at x, *t) in n pieces: events, peaks,
- * outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at *t: the caller
- * starts a new region), or a collapse / error code (apply_event). C: Stumpff coefficients of
- * pieces of length len/n (NULL: computed). */
-static int resolve(rw_engine *e, rw_regime *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
-                   const rw_linear_input *in, double t_in, double len, int n, const double (*C)[4], double x[RW_NX],
-                   double *t)
+/* Full resolution over [0, len] of the span (which starts at the motion's x, *t) in n pieces:
+ * events, peaks, outputs. Returns 0 (len reached: x, *t at its end), -1 (an event was applied at
+ * *t: the caller starts a new region), or a collapse / error code (apply_event). C: Stumpff
+ * coefficients of pieces of length len/n (NULL: computed). */
+static int resolve(rw_span_ctx *sc, double len, int n, const double (*C)[4])
 {
+    rw_engine *e = sc->e;
+    const rw_span *sp = &sc->sp;
     const double h = len / n, t_end = sp->t0 + len;
     rw_point buf[2], event_point;
-    const rw_point *pa = start_point(e, m, sp, &buf[0]);
+    const rw_point *pa = start_point(sc, &buf[0]);
     int j;
     for (j = 0; j < n; j++) {
         const double piece = j == n - 1 ? t_end - sp->t0 : h;
@@ -1077,25 +1133,25 @@ static int resolve(rw_engine *e, rw_regime *m, rw_span *sp, const rw_cache_entry
             pb = &e->pending; /* rw_engine_quiet_segment evaluated it: the same span, coefficients and start */
             suspects = e->pending_suspects;
         } else {
-            eval_point(e, m, sp, piece, same ? C : NULL, pb);
+            eval_point(sc, piece, same ? C : NULL, pb);
             suspects = suspects_of(e, pa->z, pa->dz, pb->z, pb->dz, pb->s - pa->s);
         }
         e->pending_valid = 0;
         e->steps++;
         if (suspects) {
-            const rw_piece pc = {R, g0, in, t_in, t_end, n == 1};
-            const int rc = events_in_piece(e, m, sp, &pc, &pa, pb, suspects, &event_point, x, t);
+            const rw_piece pc = {t_end, n == 1};
+            const int rc = events_in_piece(sc, &pc, &pa, pb, suspects, &event_point);
             if (rc) return rc;
         }
-        peaks_on(e, m, sp, pa->x, pa->s, pb->x, pb->s);
-        outputs_on(e, sp, pb->s);
-        memcpy(x, pb->x, sizeof pb->x);
+        peaks_on(sc, pa->x, pa->s, pb->x, pb->s);
+        outputs_on(sc, pb->s);
+        memcpy(sc->x, pb->x, sizeof pb->x);
         if (j == n - 1) {
-            *t = t_end;
+            *sc->t = t_end;
             carry_point(e, pb, t_end);
         } else { /* the next piece starts here */
-            span_start(sp, R, g0, sp->t0 + h, pb->x, in, t_in);
-            *t = sp->t0;
+            restart_span(sc, sp->t0 + h, pb->x);
+            *sc->t = sp->t0;
             pb->s = 0.0;
             pa = pb;
         }
@@ -1143,33 +1199,35 @@ typedef struct {
     double ddq_a[2], ddq_b[2];
 } rw_slow_ends;
 
-static void eval_slow_point(const rw_engine *e, const rw_regime *m, const rw_span *sp, double s, const double (*C)[4],
-                            const int *fast, rw_point *pt, double ddq[2], double *x_full)
+/* the slow point at s (the fast modes' slow part: sc->r.fast) and, if x_full is not NULL, the full
+ * state there */
+static void eval_slow_point(const rw_span_ctx *sc, double s, const double (*C)[4], rw_point *pt, double ddq[2],
+                            double *x_full)
 {
     double xd[RW_NX];
-    rw_input in = span_input(sp, s);
+    rw_input in = span_input(&sc->sp, s);
     pt->s = s;
-    if (x_full) span_eval_slow_and_full(sp, s, C, fast, pt->x, xd, x_full);
-    else span_eval_part(sp, s, C, fast, pt->x, xd);
-    region_indicators(e, m, sp, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
+    if (x_full) span_eval_slow_and_full(&sc->sp, s, C, sc->r.fast, pt->x, xd, x_full);
+    else span_eval_part(&sc->sp, s, C, sc->r.fast, pt->x, xd);
+    region_indicators(sc, &in, pt->x, xd, RW_Z_ALL, pt->z, pt->dz);
     ddq[0] = xd[2];
     ddq[1] = xd[3];
 }
 
 /* The band of the indicators of `mask` near the slow point a, evaluated: twice the larger change
  * of each at a +- dq_fast */
-static void band_by_evaluation(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a,
-                               const rw_rates *r, unsigned mask, double band[RW_NZ])
+static void band_by_evaluation(const rw_span_ctx *sc, const rw_point *a, unsigned mask, double band[RW_NZ])
 {
+    const rw_rates *r = &sc->r;
     double xp[RW_NX], xm[RW_NX], zp[RW_NZ], zm[RW_NZ];
-    const rw_input in = span_input(sp, a->s);
+    const rw_input in = span_input(&sc->sp, a->s);
     int k;
     memcpy(xp, a->x, sizeof xp);
     memcpy(xm, a->x, sizeof xm);
     xp[0] += r->dq_fast[0], xp[1] += r->dq_fast[1];
     xm[0] -= r->dq_fast[0], xm[1] -= r->dq_fast[1];
-    region_indicators(e, m, sp, &in, xp, NULL, mask, zp, NULL);
-    region_indicators(e, m, sp, &in, xm, NULL, mask, zm, NULL);
+    region_indicators(sc, &in, xp, NULL, mask, zp, NULL);
+    region_indicators(sc, &in, xm, NULL, mask, zm, NULL);
     for (k = 0; k < RW_NZ; k++)
         if ((mask >> k) & 1u) band[k] = 2.0 * rw_max2(fabs(zp[k] - a->z[k]), fabs(zm[k] - a->z[k]));
 }
@@ -1178,10 +1236,10 @@ static void band_by_evaluation(const rw_engine *e, const rw_regime *m, const rw_
  * c + s|w| + t w of w = a.q, at most (|s| + |t|) |a.dq_fast|; for the toppling indicator,
  * max |dq_fast|/q_topple; the closed hinges' evaluated (band_by_evaluation). The collapse
  * indicator's is evaluated only where substep_suspects needs it. */
-static void band_of(const rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_point *a, const rw_rates *r,
-                    double band[RW_NZ])
+static void band_of(const rw_span_ctx *sc, const rw_point *a, double band[RW_NZ])
 {
-    const double d0 = r->dq_fast[0], d1 = r->dq_fast[1];
+    const rw_engine *e = sc->e;
+    const double d0 = sc->r.dq_fast[0], d1 = sc->r.dq_fast[1];
     const rw_line_arrays *A = &e->line_arrays;
     unsigned rest = RW_Z_ALL & ~e->line_mask & ~(1u << RW_Z_COLLAPSE);
     int k;
@@ -1191,7 +1249,7 @@ static void band_of(const rw_engine *e, const rw_regime *m, const rw_span *sp, c
         band[RW_Z_TOPPLE] = 2.0 * rw_max2(fabs(d0), fabs(d1)) * e->D.inv_q_topple;
         rest &= ~(1u << RW_Z_TOPPLE);
     }
-    if (rest) band_by_evaluation(e, m, sp, a, r, rest, band);
+    if (rest) band_by_evaluation(sc, a, rest, band);
 }
 
 /* The collapse indicator under the band. Near q = 0 the band turns the direction of q and so
@@ -1200,16 +1258,16 @@ static void band_of(const rw_engine *e, const rw_regime *m, const rw_span *sp, c
  * G >= lam_min |q|^2 - |c| |q| > 0 for |q| > |c|/lam_min (collapse_radius, 0 when c is zero to
  * rounding, as in an elastic range). So the wall stands over the substep when the full motion
  * stays beyond that radius: each rotation's slow range, widened by the band, bounds |q| below. */
-static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const rw_point *a, const rw_point *b,
-                                  const rw_rates *r, double L)
+static int collapse_cannot_vanish(const rw_span_ctx *sc, const rw_point *a, const rw_point *b, double L)
 {
+    const rw_engine *e = sc->e;
     double q_min = 0.0, lo, hi;
     int j;
-    if (!sp->aq.valid || !e->b[RW_Z_COLLAPSE] || !(e->collapse_radius < INFINITY)) return 0;
+    if (!sc->sp.aq.valid || !e->b[RW_Z_COLLAPSE] || !(e->collapse_radius < INFINITY)) return 0;
     if (e->collapse_radius == 0.0) return 1;
     for (j = 0; j < 2; j++) {
         hermite_range(a->x[j], a->x[2 + j], b->x[j], b->x[2 + j], L, &lo, &hi);
-        q_min = rw_max2(q_min, rw_max2(lo - fabs(r->dq_fast[j]), -hi - fabs(r->dq_fast[j])));
+        q_min = rw_max2(q_min, rw_max2(lo - fabs(sc->r.dq_fast[j]), -hi - fabs(sc->r.dq_fast[j])));
     }
     return q_min > e->collapse_radius;
 }
@@ -1220,10 +1278,11 @@ static int collapse_cannot_vanish(const rw_engine *e, const rw_span *sp, const r
  * slow part's states xa, xb at the ends? The slow part's range is its cubic Hermite interpolant's,
  * and the band adds its exact reach |s(dq_fast)| (s is linear in q). 1 with the reach and the slow
  * part's largest |s| (*reach, *slow_max), or 0. */
-static int peak_possible(const rw_engine *e, int which, const rw_rates *r, const double xa[RW_NX],
-                         const double xb[RW_NX], double L, double *reach, double *slow_max)
+static int peak_possible(const rw_span_ctx *sc, int which, const double xa[RW_NX], const double xb[RW_NX], double L,
+                         double *reach, double *slow_max)
 {
-    const double amp[RW_NX] = {r->dq_fast[0], r->dq_fast[1], 0, 0};
+    const rw_engine *e = sc->e;
+    const double amp[RW_NX] = {sc->r.dq_fast[0], sc->r.dq_fast[1], 0, 0};
     const double va[RW_NX] = {xa[2], xa[3], 0, 0}, vb[RW_NX] = {xb[2], xb[3], 0, 0};
     const double peak = which == 0 ? e->peak_s1 : e->peak_s2;
     const double sa = s_of(e, which, xa), ra = s_of(e, which, va), sb = s_of(e, which, xb), rb = s_of(e, which, vb);
@@ -1241,10 +1300,11 @@ static int peak_possible(const rw_engine *e, int which, const rw_rates *r, const
  * when the substep is quiet. Then *peaks_full says whether a new peak is possible there: the band
  * is then negligible (below 1e-9 of the peak) and the peaks are taken on the full motion at the
  * substep's resolution. ends: the slow part's ends; x_end: the full state at the end. */
-static unsigned substep_suspects(const rw_engine *e, const rw_regime *m, const rw_span *sp, double L,
-                                 const double (*C)[4], const rw_rates *r, int *peaks_full, rw_slow_ends *ends,
-                                 double x_end[RW_NX])
+static unsigned substep_suspects(const rw_span_ctx *sc, double L, const double (*C)[4], int *peaks_full,
+                                 rw_slow_ends *ends, double x_end[RW_NX])
 {
+    const rw_engine *e = sc->e;
+    const rw_span *sp = &sc->sp;
     const unsigned collapse = 1u << RW_Z_COLLAPSE;
     const rw_point *a = &ends->a, *b = &ends->b;
     double band[RW_NZ], lo, hi;
@@ -1255,13 +1315,13 @@ static unsigned substep_suspects(const rw_engine *e, const rw_regime *m, const r
         ends->a = e->slow_carry; /* the slow end of the quiet substep before (equal to rounding) */
         memcpy(ends->ddq_a, e->slow_carry_ddq, sizeof ends->ddq_a);
     } else {
-        eval_slow_point(e, m, sp, 0.0, NULL, r->fast, &ends->a, ends->ddq_a, NULL);
+        eval_slow_point(sc, 0.0, NULL, &ends->a, ends->ddq_a, NULL);
     }
-    eval_slow_point(e, m, sp, L, C, r->fast, &ends->b, ends->ddq_b, x_end);
-    band_of(e, m, sp, a, r, band);
-    stands = collapse_cannot_vanish(e, sp, a, b, r, L);
+    eval_slow_point(sc, L, C, &ends->b, ends->ddq_b, x_end);
+    band_of(sc, a, band);
+    stands = collapse_cannot_vanish(sc, a, b, L);
     if (stands) band[RW_Z_COLLAPSE] = 0.0;
-    else band_by_evaluation(e, m, sp, a, r, collapse, band);
+    else band_by_evaluation(sc, a, collapse, band);
     /* the quick test, then the exact range of the slow part's interpolant for what it leaves */
     suspects = clearance_suspects(e, a->z, a->dz, b->z, b->dz, band, L) & ~(stands ? collapse : 0u);
     for (k = 0; suspects >> k; k++) {
@@ -1271,7 +1331,7 @@ static unsigned substep_suspects(const rw_engine *e, const rw_regime *m, const r
     }
     for (w = 0; w < 2; w++) {
         double reach, slow_max;
-        if (!peak_possible(e, w, r, a->x, b->x, L, &reach, &slow_max)) continue;
+        if (!peak_possible(sc, w, a->x, b->x, L, &reach, &slow_max)) continue;
         if (reach > 1e-9 * slow_max) suspects |= RW_PEAKS_SUSPECT;
         else *peaks_full = 1;
     }
@@ -1290,9 +1350,11 @@ static unsigned substep_suspects(const rw_engine *e, const rw_regime *m, const r
  * with the line's full values at the ends, z[0] and z[1], and *guess: the slow part's crossing,
  * within the band's width over the slow rate of the full one; NaN when the slow part does not
  * cross). */
-static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L, const rw_rates *r,
-                         const rw_slow_ends *ends, const double x_end[RW_NX], double z[2], double *guess)
+static int line_crossing(const rw_span_ctx *sc, int k, double L, const rw_slow_ends *ends, const double x_end[RW_NX],
+                         double z[2], double *guess)
 {
+    const rw_engine *e = sc->e;
+    const rw_rates *r = &sc->r;
     const rw_indicator_line *line = &e->lines[k];
     const double a0 = line->a[0], a1 = line->a[1];
     const double w_band = fabs(a0 * r->dq_fast[0] + a1 * r->dq_fast[1]);
@@ -1311,7 +1373,7 @@ static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L,
     hermite_range(a0 * xa[2] + a1 * xa[3], a0 * ends->ddq_a[0] + a1 * ends->ddq_a[1], a0 * xb[2] + a1 * xb[3],
                   a0 * ends->ddq_b[0] + a1 * ends->ddq_b[1], L, &lo, &hi);
     if (!(lo > r->fast_rate * w_band || hi < -r->fast_rate * w_band)) return -1; /* not monotone */
-    z[0] = rw_line_value(line, sp->x0, NULL, NULL);
+    z[0] = rw_line_value(line, sc->sp.x0, NULL, NULL);
     if ((z[0] > 0.0) != e->b[k]) return -1; /* the start is not on the tracked side: let the fast rate decide */
     z[1] = rw_line_value(line, x_end, NULL, NULL);
     if ((z[1] > 0.0) == e->b[k]) return 0;
@@ -1320,36 +1382,37 @@ static int line_crossing(const rw_engine *e, const rw_span *sp, int k, double L,
 }
 
 /* The suspects of a substep settled by line_crossing when every one is a line: 1 with the first
- * crossing (*s_event, *k_event, x_event) or 0 with none, or -1 if one is undecided. The crossings
- * are refined the earliest guess first; a later line is monotone over the substep, so one still on
- * its tracked side at the first root crosses after it and needs no refinement. */
-static int crossings_through_band(const rw_engine *e, const rw_regime *m, const rw_span *sp, unsigned suspects,
-                                  double L, const rw_rates *r, const rw_slow_ends *ends, const double x_end[RW_NX],
-                                  double *s_event, int *k_event, double x_event[RW_NX])
+ * crossing (*ev) or 0 with none, or -1 if one is undecided. The crossings are refined the earliest
+ * guess first; a later line is monotone over the substep, so one still on its tracked side at the
+ * first root crosses after it and needs no refinement. */
+static int crossings_through_band(const rw_span_ctx *sc, unsigned suspects, double L, const rw_slow_ends *ends,
+                                  const double x_end[RW_NX], rw_root *ev)
 {
+    const rw_engine *e = sc->e;
     int order[RW_NZ], n = 0, i, found = 0;
     double guess[RW_NZ], z_ends[RW_NZ][2];
     if (suspects & ~e->line_mask) return -1; /* a new peak, the collapse or the toppling indicator */
     for (i = 0; suspects >> i; i++) {
         int rc;
         if (!((suspects >> i) & 1u)) continue;
-        rc = line_crossing(e, sp, i, L, r, ends, x_end, z_ends[i], &guess[i]);
+        rc = line_crossing(sc, i, L, ends, x_end, z_ends[i], &guess[i]);
         if (rc < 0) return -1;
         if (rc == 1) n = insert_by_guess(order, n, guess, i);
     }
     for (i = 0; i < n; i++) {
         const int k = order[i];
         const rw_indicator_line *line = &e->lines[k];
+        const rw_bracket br = {0.0, z_ends[k][0], L, z_ends[k][1]};
         double s_k, x_k[RW_NX];
         int valid;
-        if (found && (rw_line_value(line, x_event, NULL, NULL) > 0.0) == e->b[k]) continue; /* crosses later */
-        s_k = refine_root(e, m, sp, k, e->b[k], 0.0, z_ends[k][0], L, z_ends[k][1], guess[k], x_k, &valid);
-        if (!valid) span_eval(sp, s_k, NULL, x_k, NULL);
-        if (!found || s_k < *s_event) {
+        if (found && (rw_line_value(line, ev->x, NULL, NULL) > 0.0) == e->b[k]) continue; /* crosses later */
+        s_k = refine_root(sc, k, e->b[k], &br, guess[k], x_k, &valid);
+        if (!valid) span_eval(&sc->sp, s_k, NULL, x_k, NULL);
+        if (!found || s_k < ev->s) {
             found = 1;
-            *s_event = s_k;
-            *k_event = k;
-            memcpy(x_event, x_k, sizeof x_k);
+            ev->s = s_k;
+            ev->k = k;
+            memcpy(ev->x, x_k, sizeof x_k);
         }
     }
     return found;
@@ -1366,26 +1429,27 @@ static double peak_share(const rw_engine *e, const double x[RW_NX])
  * peak so far (peak_possible), [u, v] is halved until a half turns the fast mode by at most 8 rad,
  * and such a piece takes peaks_on on the full motion at the fast rate. Only the neighbourhood of a
  * new peak is resolved, and without the indicators. xu, xv: the slow part's states at u and v. */
-static void peaks_under_band(rw_engine *e, const rw_regime *m, const rw_span *sp, const rw_rates *r, double u,
-                             const double xu[RW_NX], double v, const double xv[RW_NX], int depth)
+static void peaks_under_band(const rw_span_ctx *sc, double u, const double xu[RW_NX], double v, const double xv[RW_NX],
+                             int depth)
 {
+    const rw_span *sp = &sc->sp;
     double reach, slow_max, len = v - u, xa[RW_NX], xb[RW_NX];
     int n, j;
-    if (!peak_possible(e, 0, r, xu, xv, len, &reach, &slow_max) && !peak_possible(e, 1, r, xu, xv, len, &reach, &slow_max))
+    if (!peak_possible(sc, 0, xu, xv, len, &reach, &slow_max) && !peak_possible(sc, 1, xu, xv, len, &reach, &slow_max))
         return;
-    n = substeps_for(r->fast_rate, &len);
+    n = substeps_for(sc->r.fast_rate, &len);
     if (n > 8 && depth < 40) {
         const double mid = u + 0.5 * (v - u);
         double xm[RW_NX];
-        span_eval_part(sp, mid, NULL, r->fast, xm, NULL);
+        span_eval_part(sp, mid, NULL, sc->r.fast, xm, NULL);
         /* the half that reaches higher first: the peak it sets mostly rules the other half out (a
          * growing motion is then searched in log2 of its fast periods, not in all of them) */
-        if (peak_share(e, xv) > peak_share(e, xu)) {
-            peaks_under_band(e, m, sp, r, mid, xm, v, xv, depth + 1);
-            peaks_under_band(e, m, sp, r, u, xu, mid, xm, depth + 1);
+        if (peak_share(sc->e, xv) > peak_share(sc->e, xu)) {
+            peaks_under_band(sc, mid, xm, v, xv, depth + 1);
+            peaks_under_band(sc, u, xu, mid, xm, depth + 1);
         } else {
-            peaks_under_band(e, m, sp, r, u, xu, mid, xm, depth + 1);
-            peaks_under_band(e, m, sp, r, mid, xm, v, xv, depth + 1);
+            peaks_under_band(sc, u, xu, mid, xm, depth + 1);
+            peaks_under_band(sc, mid, xm, v, xv, depth + 1);
         }
         return;
     }
@@ -1393,21 +1457,23 @@ static void peaks_under_band(rw_engine *e, const rw_regime *m, const rw_span *sp
     for (j = 1; j <= n; j++) {
         const double sa = u + (v - u) * (j - 1) / n, sb = j == n ? v : u + (v - u) * j / n;
         span_eval(sp, sb, NULL, xb, NULL);
-        peaks_on(e, m, sp, xa, sa, xb, sb);
+        peaks_on(sc, xa, sa, xb, sb);
         memcpy(xa, xb, sizeof xa);
     }
 }
 
 /* The substep [0, L] of the span taken whole (quiet, or quiet but for indicators without a
- * crossing): x, *t at its end x_end, the slow end point carried to the next substep. */
-static void accept_substep(rw_engine *e, const rw_regime *m, const rw_span *sp, double L, const double x_end[RW_NX],
-                           int peaks_full, const rw_slow_ends *ends, double t_to, double x[RW_NX], double *t)
+ * crossing): the motion's x, *t at its end x_end, the slow end point carried to the next substep. */
+static void accept_substep(rw_span_ctx *sc, double L, const double x_end[RW_NX], int peaks_full,
+                           const rw_slow_ends *ends, double t_to)
 {
+    rw_engine *e = sc->e;
+    double *x = sc->x;
     e->steps++;
-    if (peaks_full) peaks_on(e, m, sp, x, 0.0, x_end, L);
+    if (peaks_full) peaks_on(sc, x, 0.0, x_end, L);
     memcpy(x, x_end, sizeof(double) * RW_NX);
-    outputs_on(e, sp, L);
-    *t = t_to;
+    outputs_on(sc, L);
+    *sc->t = t_to;
     e->slow_carry = ends->b;
     e->slow_carry.s = 0.0; /* the next substep starts here */
     memcpy(e->slow_carry_ddq, ends->ddq_b, sizeof e->slow_carry_ddq);
@@ -1421,51 +1487,53 @@ static void accept_substep(rw_engine *e, const rw_regime *m, const rw_span *sp, 
  * halves are or are short enough (8 pieces at the fast rate) to be resolved in full, so that only
  * the neighbourhood of an event that the band cannot settle, or of a new peak, is resolved at the
  * fast rate. Returns as resolve(). */
-static int fast_substep(rw_engine *e, rw_regime *m, rw_span *sp, const rw_cache_entry *R, const double g0[2],
-                        const rw_linear_input *in, double t_in, double t_to, const double (*C)[4], const rw_rates *r,
-                        double x[RW_NX], double *t, int depth)
+static int fast_substep(rw_span_ctx *sc, double t_to, const double (*C)[4], int depth)
 {
+    rw_engine *e = sc->e;
+    const rw_span *sp = &sc->sp;
+    double *x = sc->x;
     const double L = t_to - sp->t0;
-    int peaks_full, nf, rc, k_ev = 0;
-    double len = L, s_ev = 0.0, x_ev[RW_NX]; /* s_ev, k_ev, x_ev: set by crossings_through_band when it finds one */
-    double x_end[RW_NX];
+    int peaks_full, nf, rc;
+    double len = L, x_end[RW_NX];
+    rw_root ev; /* set by crossings_through_band when it finds one */
     rw_slow_ends ends;
-    const unsigned suspects = substep_suspects(e, m, sp, L, C, r, &peaks_full, &ends, x_end);
+    const unsigned suspects = substep_suspects(sc, L, C, &peaks_full, &ends, x_end);
     if (suspects == 0) {
-        accept_substep(e, m, sp, L, x_end, peaks_full, &ends, t_to, x, t);
+        accept_substep(sc, L, x_end, peaks_full, &ends, t_to);
         return 0;
     }
     e->slow_carry_valid = 0;
-    rc = suspects & ~RW_PEAKS_SUSPECT
-             ? crossings_through_band(e, m, sp, suspects & ~RW_PEAKS_SUSPECT, L, r, &ends, x_end, &s_ev, &k_ev, x_ev)
-             : 0;
+    ev.s = 0.0;
+    ev.k = 0;
+    rc = suspects & ~RW_PEAKS_SUSPECT ? crossings_through_band(sc, suspects & ~RW_PEAKS_SUSPECT, L, &ends, x_end, &ev)
+                                      : 0;
     if (rc == 0) {
-        if (suspects & RW_PEAKS_SUSPECT) peaks_under_band(e, m, sp, r, 0.0, ends.a.x, L, ends.b.x, 0);
-        accept_substep(e, m, sp, L, x_end, peaks_full, &ends, t_to, x, t);
+        if (suspects & RW_PEAKS_SUSPECT) peaks_under_band(sc, 0.0, ends.a.x, L, ends.b.x, 0);
+        accept_substep(sc, L, x_end, peaks_full, &ends, t_to);
         return 0;
     }
     if (rc == 1) { /* the event, as resolve() applies it */
-        const rw_input ie = span_input(sp, s_ev);
+        const rw_input ie = span_input(sp, ev.s);
         e->steps++;
         if (suspects & RW_PEAKS_SUSPECT) {
             double x_slow[RW_NX];
-            span_eval_part(sp, s_ev, NULL, r->fast, x_slow, NULL);
-            peaks_under_band(e, m, sp, r, 0.0, ends.a.x, s_ev, x_slow, 0);
+            span_eval_part(sp, ev.s, NULL, sc->r.fast, x_slow, NULL);
+            peaks_under_band(sc, 0.0, ends.a.x, ev.s, x_slow, 0);
         }
-        if (peaks_full) peaks_on(e, m, sp, x, 0.0, x_ev, s_ev);
-        outputs_on(e, sp, s_ev);
-        memcpy(x, x_ev, sizeof x_ev);
-        *t = sp->t0 + s_ev;
-        rc = apply_event(e, m, x, *t, &ie);
-        if (rc == 0 && hinge_event_keeps_region(e, sp, k_ev, x)) e->region_keep = 1;
+        if (peaks_full) peaks_on(sc, x, 0.0, ev.x, ev.s);
+        outputs_on(sc, ev.s);
+        memcpy(x, ev.x, sizeof ev.x);
+        *sc->t = sp->t0 + ev.s;
+        rc = apply_event(e, sc->m, x, *sc->t, &ie);
+        if (rc == 0 && hinge_event_keeps_region(e, sp, ev.k, x)) e->region_keep = 1;
         return rc ? rc : -1;
     }
-    nf = substeps_for(r->fast_rate, &len);
-    if (nf <= 8 || depth >= 40) return resolve(e, m, sp, R, g0, in, t_in, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL, x, t);
-    rc = fast_substep(e, m, sp, R, g0, in, t_in, sp->t0 + 0.5 * L, NULL, r, x, t, depth + 1);
+    nf = substeps_for(sc->r.fast_rate, &len);
+    if (nf <= 8 || depth >= 40) return resolve(sc, L, len < L ? (int)RW_MAX_SUBSTEPS : nf, NULL);
+    rc = fast_substep(sc, sp->t0 + 0.5 * L, NULL, depth + 1);
     if (rc) return rc;
-    span_start(sp, R, g0, *t, x, in, t_in);
-    return fast_substep(e, m, sp, R, g0, in, t_in, t_to, NULL, r, x, t, depth + 1);
+    restart_span(sc, *sc->t, x);
+    return fast_substep(sc, t_to, NULL, depth + 1);
 }
 
 /* ---- one region on its own (rw_engine.h) ------------------------------------------------------ */
@@ -1489,13 +1557,13 @@ int rw_engine_region_motion(rw_engine *e, const double J[2][2], const double c[2
 /* The indicator states after an event: at the start point of the span that follows, which is kept
  * for resolve() (the region's own evaluation: the lines and the collapse form as the physics gives
  * them, so the same signs as rw_event_indicators) */
-static void refresh_indicator_states(rw_engine *e, const rw_regime *m, const rw_span *sp)
+static void refresh_indicator_states(const rw_span_ctx *sc)
 {
     rw_point pt;
-    eval_point(e, m, sp, 0.0, NULL, &pt);
-    track_states(e, pt.z);
-    e->b_stale = 0;
-    carry_point(e, &pt, sp->t0);
+    eval_point(sc, 0.0, NULL, &pt);
+    track_states(sc->e, pt.z);
+    sc->e->b_stale = 0;
+    carry_point(sc->e, &pt, sc->sp.t0);
 }
 
 /* the indicators that are lines of the rotations under the regime m (they change only at events).
@@ -1543,11 +1611,15 @@ static void collapse_form_of_region(rw_engine *e)
         e->collapse_radius = c_norm <= 1e-12 * size * e->D.q_topple ? 0.0 : 1.01 * c_norm / lam_min;
 }
 
-/* The region of the motion at (x, t): kept from one input segment to the next, since without an
- * event no indicator, so no breakpoint and no regime, has changed; found again after each event. */
-static rw_cache_entry *current_region(rw_engine *e, const rw_regime *m, const double x[RW_NX], double t,
-                                      const rw_linear_input *in, double t_in, double g0[2], rw_affine_Q *aq)
+/* The region of the motion at (sc->x, t), with its modal forcing (sc->g0) and affine hinge moments
+ * (sc->sp.aq): kept from one input segment to the next, since without an event no indicator, so no
+ * breakpoint and no regime, has changed; found again after each event. */
+static rw_cache_entry *current_region(rw_span_ctx *sc, double t)
 {
+    rw_engine *e = sc->e;
+    const rw_regime *m = sc->m;
+    const rw_linear_input *in = sc->in;
+    const double *x = sc->x, t_in = sc->t_in;
     rw_cache_entry *R;
     if (!e->region_valid && e->region_keep) { /* hinge_event_keeps_region */
         region_lines(e, m);
@@ -1575,8 +1647,8 @@ static rw_cache_entry *current_region(rw_engine *e, const rw_regime *m, const do
         e->region = (int)(R - e->cache);
         e->region_valid = 1;
     }
-    memcpy(g0, e->region_g0, sizeof e->region_g0);
-    *aq = e->region_aq;
+    memcpy(sc->g0, e->region_g0, sizeof e->region_g0);
+    sc->sp.aq = e->region_aq;
     return &e->cache[e->region];
 }
 
@@ -1601,50 +1673,54 @@ static int event_ahead(const rw_engine *e, double piece)
 static int advance(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, double t_end, const rw_linear_input *in,
                    double t_in)
 {
+    rw_span_ctx sc;
+    sc.e = e;
+    sc.m = m;
+    sc.in = in;
+    sc.t_in = t_in;
+    sc.x = x;
+    sc.t = t;
     while (*t < t_end) {
-        rw_span sp;
-        rw_rates r;
-        double g0[2], span_len, h, span_end;
-        rw_cache_entry *R;
+        double span_len, h, span_end;
         int n, j, rc = 0, after_event;
-        R = current_region(e, m, x, *t, in, t_in, g0, &sp.aq);
-        if (!R) return RW_ENGINE_UNSUPPORTED + 1;
-        span_start(&sp, R, g0, *t, x, in, t_in);
+        sc.R = current_region(&sc, *t);
+        if (!sc.R) return RW_ENGINE_UNSUPPORTED + 1;
+        restart_span(&sc, *t, x);
         after_event = e->b_stale; /* the indicator states are taken again at an event's state */
-        if (after_event) refresh_indicator_states(e, m, &sp);
+        if (after_event) refresh_indicator_states(&sc);
         span_len = t_end - *t;
-        if (one_substep_covers(e, R, span_len)) {
-            r.any_fast = 0;
+        if (one_substep_covers(e, sc.R, span_len)) {
+            sc.r.any_fast = 0;
             n = 1;
             h = span_len;
             span_end = t_end;
         } else {
-            span_rates(e, &sp, e->floor_rate, &r);
-            n = substeps_for(r.slow_rate, &span_len);
+            span_rates(e, &sc.sp, e->floor_rate, &sc.r);
+            n = substeps_for(sc.r.slow_rate, &span_len);
             h = span_len / n;
             span_end = n * h < t_end - *t ? *t + span_len : t_end;
         }
-        if (r.any_fast || n != 1) e->pending_valid = 0;
-        if (r.any_fast && after_event) {
-            const double piece = RW_PHASE_PER_SUBSTEP / r.fast_rate;
+        if (sc.r.any_fast || n != 1) e->pending_valid = 0;
+        if (sc.r.any_fast && after_event) {
+            const double piece = RW_PHASE_PER_SUBSTEP / sc.r.fast_rate;
             if (piece < span_len && event_ahead(e, piece)) {
-                rc = resolve(e, m, &sp, R, g0, in, t_in, piece, 1, NULL, x, t);
+                rc = resolve(&sc, piece, 1, NULL);
                 if (rc > 0) return rc;
                 continue; /* from the next event, or from the piece's end */
             }
         }
-        if (!r.any_fast) {
-            rc = resolve(e, m, &sp, R, g0, in, t_in, span_end - *t, n, substep_coefficients(R, h, span_end), x, t);
+        if (!sc.r.any_fast) {
+            rc = resolve(&sc, span_end - *t, n, substep_coefficients(sc.R, h, span_end));
             if (rc > 0) return rc;
             continue;
         }
         for (j = 0; j < n && rc == 0; j++) {
-            const double t_to = j == n - 1 ? span_end : sp.t0 + h;
+            const double t_to = j == n - 1 ? span_end : sc.sp.t0 + h;
             /* the last piece differs from h by rounding at most: the same coefficients */
-            const int same = fabs((t_to - sp.t0) - h) <= 4.0 * DBL_EPSILON * (fabs(t_to) + h);
-            rc = fast_substep(e, m, &sp, R, g0, in, t_in, t_to, same ? substep_coefficients(R, h, t_to) : NULL, &r, x, t, 0);
+            const int same = fabs((t_to - sc.sp.t0) - h) <= 4.0 * DBL_EPSILON * (fabs(t_to) + h);
+            rc = fast_substep(&sc, t_to, same ? substep_coefficients(sc.R, h, t_to) : NULL, 0);
             if (rc > 0) return rc;
-            if (rc == 0 && j < n - 1) span_start(&sp, R, g0, *t, x, in, t_in);
+            if (rc == 0 && j < n - 1) restart_span(&sc, *t, x);
         }
     }
     return 0;
@@ -1665,12 +1741,14 @@ static int at_rest(const rw_engine *e, const rw_regime *m)
  * carried_start), else 0: an end near or past zero, for the general test */
 static int rest_holds(rw_engine *e, double t_end, const rw_linear_input *in, double t_in)
 {
-    const rw_input end = {in->ag + in->ag_slope * (t_end - t_in), in->u_top + in->u_slope * (t_end - t_in)};
+    /* the input at the end (its rate is not needed: no rates are taken) */
+    const rw_input end[2] = {{in->ag + in->ag_slope * (t_end - t_in), in->u_top + in->u_slope * (t_end - t_in)},
+                             {0.0, 0.0}};
     /* only the closed hinges' entries are written and read: z is zeroed because gcc cannot see that
      * (-Wmaybe-uninitialized) */
     double z[RW_NZ] = {0.0}, dz[RW_NZ];
     int k;
-    if (closed_hinge_values(e, &end, NULL, e->carry.x, NULL, e->closed_mask, z, dz)) return 0;
+    if (closed_hinge_values(e, end, e->carry.x, NULL, e->closed_mask, z, dz)) return 0;
     for (k = 0; k < RW_NZ; k++)
         if (((e->closed_mask >> k) & 1u) && !(e->b[k] && e->carry.z[k] > 0.0 && z[k] > 0.0)) return 0;
     for (k = 0; k < RW_NZ; k++)
@@ -1684,12 +1762,12 @@ static int rest_holds(rw_engine *e, double t_end, const rw_linear_input *in, dou
  * at most RW_PHASE_PER_SUBSTEP), and the quick test clears every indicator. Such a segment is taken
  * here with the same evaluations as resolve() (so the same numbers), without its set-up; any other
  * segment is left untouched to rw_engine_advance. */
-int rw_engine_quiet_segment(rw_engine *e, const rw_regime *m, double x[RW_NX], double *t, double t_end,
+int rw_engine_quiet_segment(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, double t_end,
                             const rw_linear_input *in, double t_in)
 {
     const double len = t_end - *t;
     rw_cache_entry *R;
-    rw_span sp;
+    rw_span_ctx sc;
     rw_point b, buf;
     const rw_point *a;
     unsigned suspects;
@@ -1703,10 +1781,12 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_regime *m, double x[RW_NX], d
         *t = e->carry_t = t_end;
         return 1;
     }
-    sp.aq = e->region_aq;
-    span_start(&sp, R, e->region_g0, *t, x, in, t_in);
-    a = carried_start(e, m, &sp, &buf);
-    eval_point(e, m, &sp, len, substep_coefficients(R, len, t_end), &b);
+    sc.e = e;
+    sc.m = m;
+    sc.sp.aq = e->region_aq;
+    span_start(&sc.sp, R, e->region_g0, *t, x, in, t_in);
+    a = carried_start(&sc, &buf);
+    eval_point(&sc, len, substep_coefficients(R, len, t_end), &b);
     suspects = suspects_of(e, a->z, a->dz, b.z, b.dz, len);
     if (suspects) { /* its end point and suspects, for resolve() (rw_engine.pending) */
         e->pending = b;
@@ -1716,7 +1796,7 @@ int rw_engine_quiet_segment(rw_engine *e, const rw_regime *m, double x[RW_NX], d
         return 0;
     }
     e->steps++;
-    peaks_on(e, m, &sp, e->carry.x, 0.0, b.x, len);
+    peaks_on(&sc, e->carry.x, 0.0, b.x, len);
     memcpy(x, b.x, sizeof b.x);
     *t = t_end;
     carry_point(e, &b, t_end);

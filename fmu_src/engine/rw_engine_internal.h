@@ -31,7 +31,7 @@ int rw_engine_advance(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, do
                       double t_in);
 /* The segment [*t, t_end] when it is quiet (rw_engine.c): 1 (x, *t at its end), else 0 with
  * nothing changed, for rw_engine_advance */
-int rw_engine_quiet_segment(rw_engine *e, const rw_regime *m, double x[RW_NX], double *t, double t_end,
+int rw_engine_quiet_segment(rw_engine *e, rw_regime *m, double x[RW_NX], double *t, double t_end,
                             const rw_linear_input *in, double t_in);
 /* the output grid's rows past where the run stopped: NaN */
 void rw_engine_fill_outputs(rw_engine *e);
