@@ -274,7 +274,7 @@ static void restart_span(rw_span_ctx *sc, double t0, const double x[RW_NX])
 }
 
 /* ---- indicators along a span ---------------------------------------------------------------- */
-typedef rw_engine_point rw_point; /* rw_engine.h */
+typedef rw_engine_point rw_point; /* rw_engine_internal.h */
 
 /* The indicators of the closed rigid hinges among `mask` at the state x (rates along xd, if not
  * NULL, with the input at the rate in[1]; in[0]: its value) from the region's affine form of their
@@ -1804,6 +1804,22 @@ int rw_engine_quiet_segment(rw_engine *e, rw_regime *m, double x[RW_NX], double 
 }
 
 /* ---- the engine object ---------------------------------------------------------------------- */
+/* rw_engine_init's memory need be aligned for a double only (rw_engine.h) */
+struct rw_align_engine {
+    char c;
+    rw_engine e;
+};
+struct rw_align_double {
+    char c;
+    double d;
+};
+typedef char rw_check_engine_alignment[offsetof(struct rw_align_engine, e) <= offsetof(struct rw_align_double, d) ? 1 : -1];
+
+size_t rw_engine_size(void)
+{
+    return sizeof(rw_engine);
+}
+
 int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
 {
     if (!e || !p) {
@@ -1856,6 +1872,11 @@ void rw_engine_free(rw_engine *e)
     free(e);
 }
 
+void rw_engine_track_dissipated(rw_engine *e)
+{
+    e->track_dissipated = 1;
+}
+
 /* Did the inputs jump at t (a new step's values) so that an indicator changed sign? Then the
  * model's event iteration at t, as cs_cvode.c does at a communication point. */
 static int input_jump(rw_engine *e, rw_regime *m, double x[RW_NX], double t, const rw_input *now)
@@ -1874,11 +1895,14 @@ static int input_jump(rw_engine *e, rw_regime *m, double x[RW_NX], double t, con
 }
 
 int rw_engine_step(rw_engine *e, rw_regime *m, double x[RW_NX], double t, double h, const rw_linear_input *in,
-                   long *impacts, double *t_reached, char *msg, size_t n)
+                   rw_engine_step_report *out)
 {
     const long before = e->impacts;
+    const double dissipated_before = e->dissipated;
+    double *t_reached = &out->t_reached;
     rw_input now;
     int rc;
+    out->message[0] = '\0';
     /* the engine may be a byte copy restored from a serialized FMU state (fmi2SetFMUstate), made
      * by another process: its one reference into this binary, the law, is taken again */
     e->law = rw_hinge_law_of(e->P.hingeLaw);
@@ -1897,8 +1921,10 @@ int rw_engine_step(rw_engine *e, rw_regime *m, double x[RW_NX], double t, double
         set_indicator_states(e, m, &end, x);
         e->b_stale = 0;
     }
-    *impacts += e->impacts - before;
-    if (rc > 1) snprintf(msg, n, "%s", e->msg);
+    out->impacts = e->impacts - before;
+    out->dissipated = e->dissipated - dissipated_before;
+    out->collapse_reason = e->reason;
+    if (rc > 1) snprintf(out->message, sizeof out->message, "%s", e->msg);
     return rc;
 }
 
