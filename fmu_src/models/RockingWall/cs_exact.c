@@ -1,4 +1,4 @@
-/* Co-Simulation of RockingWall through the exact engine (rw_engine.c): fmu_model.exact_step.
+/* Co-Simulation of RockingWall through the exact engine (rw_engine.h): fmu_model.exact_step.
  *
  * Inputs held or ramped over a communication step are exactly linear, and every support / hinge
  * law but the parapet is piecewise linear, so the step is exact: it does not depend on the
