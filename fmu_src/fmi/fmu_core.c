@@ -51,6 +51,7 @@ static void no_events(void *M, double time, const fmu_logger *log, fmu_event_res
 void fmu_model_with_defaults(fmu_model *m)
 {
     *m = FMU_MODEL;
+    if (m->data_tail_size) m->data_size += m->data_tail_size(); /* one block of data, one byte copy */
     if (!m->get_integer) m->get_integer = no_get_integer;
     if (!m->get_boolean) m->get_boolean = no_get_boolean;
     if (!m->set_real) m->set_real = no_set_real;

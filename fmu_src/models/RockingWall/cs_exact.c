@@ -1,4 +1,4 @@
-/* Co-Simulation of RockingWall through the exact engine (rw_engine.c): fmu_model.exact_step.
+/* Co-Simulation of RockingWall through the exact engine (rw_engine.h): fmu_model.exact_step.
  *
  * Inputs held or ramped over a communication step are exactly linear, and every support / hinge
  * law but the parapet is piecewise linear, so the step is exact: it does not depend on the
@@ -20,14 +20,14 @@ static double slope_of(unsigned vr, const unsigned *slope_vr, const double *slop
     return 0.0;
 }
 
-static void log_collapse(rw_data *S)
+static void log_collapse(rw_data *S, int reason)
 {
     char buf[512];
     if (!S->log || !S->log->warning) return;
     snprintf(buf, sizeof buf,
              "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): %s; terminating the simulation",
              S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1],
-             S->engine.reason == RW_PAST_INSTABILITY ? "the wall passed its instability point"
+             reason == RW_PAST_INSTABILITY ? "the wall passed its instability point"
                                                      : "a body turned past its toppling limit 2b/h");
     S->log->warning(S->log->ctx, buf);
 }
@@ -36,13 +36,13 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
                   const fmu_logger *log, double *t_reached, char *msg, size_t n)
 {
     rw_data *S = (rw_data *)M;
+    rw_engine *engine = rw_engine_of(S);
     rw_linear_input in;
-    long impacts = 0;
-    double dissipated;
+    rw_engine_step_report step;
     int rc;
     if (S->engine_state == 0) {
-        S->engine_state = rw_engine_init(&S->engine, &S->P, msg, n) ? -1 : 1;
-        S->engine.track_dissipated = 1; /* the FMU's dissipated output */
+        S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
+        if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */
     }
     if (S->engine_state < 0) return FMU_NOT_EXACT;
     *t_reached = t;
@@ -52,18 +52,19 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     in.u_top = S->in.u_top;
     in.ag_slope = slope_of(RW_VR_ag, slope_vr, slope, n_in);
     in.u_slope = slope_of(RW_VR_u_top, slope_vr, slope, n_in);
-    dissipated = S->engine.dissipated;
-    rc = rw_engine_step(&S->engine, &S->regime, S->x, t, h, &in, &impacts, t_reached, msg, n);
-    S->impacts += (int)impacts;
-    S->dissipated += S->engine.dissipated - dissipated;
+    rc = rw_engine_step(engine, &S->regime, S->x, t, h, &in, &step);
+    *t_reached = step.t_reached;
+    S->impacts += (int)step.impacts;
+    S->dissipated += step.dissipated;
     S->time = *t_reached;
     /* the inputs where the step ended, as the CVODE path leaves them */
     S->in.ag = in.ag + in.ag_slope * (*t_reached - t);
     S->in.u_top = in.u_top + in.u_slope * (*t_reached - t);
     if (rc == 1) {
         S->collapsed = 1;
-        log_collapse(S);
+        log_collapse(S, step.collapse_reason);
         return 1;
     }
+    if (rc > 1) snprintf(msg, n, "%s", step.message);
     return rc > 1 ? -1 : 0;
 }
