@@ -11,7 +11,7 @@ import math
 import numpy as np
 
 from ..building import building_file
-from .grid import RunSpec
+from .run_spec import RunSpec
 
 MODEL = "building"
 

@@ -1,7 +1,6 @@
 """The run grid of a sweep: walls x models x hinge laws x K_d x records x intensities, from a TOML
 file and/or command-line flags, expanded into one RunSpec per run with a stable run_id (the key
 that lets an interrupted sweep resume)."""
-import dataclasses
 import itertools
 import math
 import tomllib
@@ -9,6 +8,7 @@ import tomllib
 
 from ..names import HINGE_LAWS, PAPER_WALLS, SUPPORTS as MODELS, paper_wall
 from . import suites
+from .run_spec import RunSpec
 
 WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units, or strings with units)
 
@@ -16,24 +16,6 @@ WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units,
 DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], kd_kN=[50.0],
                 scales=[1.0], pga_g=[], er=0.86, tail=5.0, rtol=1e-6, suite="fema", records_dir="",
                 records=[], building="")
-
-
-@dataclasses.dataclass(frozen=True)
-class RunSpec:
-    run_id: str
-    wall: str           # a preset (1, 2, 3 = paper1..3) or the name of a [walls.NAME] table
-    model: str
-    hinge_law: str
-    kd_kN: float        # NaN for models without the top spring
-    record: str
-    record_path: str
-    record_pga_g: float
-    scale: float        # factor on the record as given
-    pga_g: float        # scale * record PGA: the intensity measure
-    stop_time: float
-    sets: tuple         # (("NAME", "VALUE"), ...) for fmi2sim --set
-    error: str = ""     # the record could not be planned: reported without running
-    record_sha256: str = ""  # the record's content: part of the run's key (rockingwall.sweep.provenance)
 
 
 def load_config(path):
