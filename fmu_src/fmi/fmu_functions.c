@@ -81,6 +81,10 @@ fmu_status fmu_update_discrete_states(fmu_instance *I, fmu_event_result *r)
         return FMU_OK;
     }
     I->core.model.event_update(I->core.M, I->core.time, &I->log, r);
+    /* An importer that keeps only the last call's flags (the FMU Compliance Checker) would
+     * otherwise miss a jump reported by an earlier call and write the old states back. */
+    I->states_changed |= r->states_changed;
+    r->states_changed = I->states_changed;
     return FMU_OK;
 }
 
