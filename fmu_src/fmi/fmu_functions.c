@@ -69,12 +69,52 @@ void fmu_reset(fmu_instance *I)
     I->state = PHASE(I, INSTANTIATED);
 }
 
+/* ---- results that must be finite ----------------------------------------------------------- */
+
+/* The first Real output, or else the first state, that is not finite: its name and value in msg,
+ * 1; 0 when all are finite (or there is no memory to look). */
+static int non_finite_result(fmu_instance *I, char *msg, size_t n)
+{
+    fmu_core *const C = &I->core;
+    double *x, v;
+    size_t i;
+    int k;
+    for (i = 0; i < C->model.nvars; i++) {
+        const fmu_var *var = &C->model.vars[i];
+        if (var->type != FMU_REAL || strcmp(var->causality, "output")) continue;
+        C->model.get_real(C->M, 0, C->time, &var->vr, 1, &v);
+        if (!isfinite(v)) return snprintf(msg, n, "%s = %g", var->name, v), 1;
+    }
+    x = (double *)I->alloc((size_t)C->model.nx + 1, sizeof(double));
+    if (!x) return 0;
+    C->model.get_states(C->M, 0, x);
+    for (k = 0; k < C->model.nx; k++)
+        if (!isfinite(x[k])) break;
+    if (k < C->model.nx) snprintf(msg, n, "continuous state %d = %g", k, x[k]);
+    I->release(x);
+    return k < C->model.nx;
+}
+
+/* the Real inputs' values, "ag = 1e+308, u_top = 0", for the messages */
+static void describe_inputs(const fmu_instance *I, char *s, size_t n)
+{
+    size_t k, used = 0;
+    s[0] = '\0';
+    for (k = 0; k < I->core.n_inputs && used < n; k++) {
+        const fmu_var *var = fmu_find_var(&I->core.model, I->core.inputs[k].vr);
+        const int w = snprintf(s + used, n - used, "%s%s = %g", k ? ", " : "", var->name, I->core.inputs[k].value);
+        if (w < 0) break;
+        used += (size_t)w;
+    }
+}
+
 /* ---- Event Mode ---------------------------------------------------------------------------- */
 
 /* In Co-Simulation the step (exact engine or CVODE) iterates its events itself, so Event Mode only
  * lets the importer change inputs between steps: nothing is left to update. */
 fmu_status fmu_update_discrete_states(fmu_instance *I, fmu_event_result *r)
 {
+    char what[128];
     memset(r, 0, sizeof *r);
     if (I->core.co_simulation) {
         r->terminate = I->core.terminated;
@@ -85,6 +125,8 @@ fmu_status fmu_update_discrete_states(fmu_instance *I, fmu_event_result *r)
      * otherwise miss a jump reported by an earlier call and write the old states back. */
     I->states_changed |= r->states_changed;
     r->states_changed = I->states_changed;
+    if (non_finite_result(I, what, sizeof what))
+        return fmu_fail(I, "the event update at t = %.17g ended with %s, which is not finite", I->core.time, what);
     return FMU_OK;
 }
 
@@ -150,19 +192,28 @@ fmu_status fmu_get_nominals(fmu_instance *I, double x[], size_t n)
 fmu_status fmu_do_step(fmu_instance *I, double t, double h, int *ended)
 {
     fmu_core *const C = &I->core;
-    char msg[512];
+    char msg[512], what[128];
     int rc;
     *ended = 0;
     if (!(isfinite(t) && isfinite(h) && h > 0))
         return fmu_fail(I, "communication point %g and step size %g must be finite, step size > 0", t, h);
     if (fabs(t - C->time) > 1e-9 * fmax(1.0, fabs(t)))
         return fmu_fail(I, "currentCommunicationPoint = %.17g, but the FMU is at t = %.17g", t, C->time);
+    if (!(t + h <= FMU_MAX_TIME))
+        return fmu_fail(I, "the step would end at t = %g, after the last time this FMU simulates, %g s", t + h,
+                        FMU_MAX_TIME);
+    if (t + h == t) return fmu_fail(I, "step size %g is below the resolution of the time %.17g", h, t);
     if (C->terminated) {
         fmu_log_event(I, "the model terminated at t = %.17g; no further steps", C->time);
         return FMU_DISCARD;
     }
     rc = fmu_core_step(C, h, &I->log, msg, sizeof msg);
     if (rc < 0) return fmu_fail(I, "%s", msg);
+    if (non_finite_result(I, what, sizeof what)) {
+        describe_inputs(I, msg, sizeof msg);
+        return fmu_fail(I, "the step from t = %.17g to %.17g ended with %s, which is not finite (inputs: %s)", t, t + h,
+                        what, msg);
+    }
     *ended = rc == 1;
     if (*ended) fmu_log_event(I, "the model terminated the simulation at t = %.17g", C->time);
     return FMU_OK;

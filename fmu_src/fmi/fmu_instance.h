@@ -43,6 +43,10 @@ enum {
 /* log categories, as declared in modelDescription.xml */
 enum { FMU_LOG_EVENTS = 1 << 0, FMU_LOG_WARNING = 1 << 1, FMU_LOG_ERROR = 1 << 2 };
 
+/* The last time a Co-Simulation step may reach [s], about 32 years: a step ending later is refused
+ * (doStep(0, 1e300) never returned), as is a step below the resolution of the time. */
+#define FMU_MAX_TIME 1e9
+
 /* the value reference of FMI 3.0's independent variable `time`; no model table uses it */
 #define FMU_TIME_VR 0u
 
@@ -194,7 +198,8 @@ void fmu_terminate(fmu_instance *I);
 void fmu_reset(fmu_instance *I);
 /* One event update (Model Exchange; nothing to update in Co-Simulation). r->states_changed is
  * true in every call of an event iteration once a state jumped in it, so that an importer that
- * keeps only the last call's flags still re-reads the states. */
+ * keeps only the last call's flags still re-reads the states. A state that is not finite after
+ * the update is an error. */
 fmu_status fmu_update_discrete_states(fmu_instance *I, fmu_event_result *r);
 
 /* Model Exchange */
@@ -205,8 +210,9 @@ fmu_status fmu_get_event_indicators(fmu_instance *I, double z[], size_t n);
 fmu_status fmu_get_states(fmu_instance *I, double x[], size_t n);
 fmu_status fmu_get_nominals(fmu_instance *I, double x[], size_t n);
 
-/* A Co-Simulation step from t to t + h. FMU_OK: done, *ended says whether the model ended the run
- * in it (at I->core.time); FMU_DISCARD: the run had ended before, nothing done; FMU_ERROR. */
+/* A Co-Simulation step from t to t + h <= FMU_MAX_TIME. FMU_OK: done, *ended says whether the
+ * model ended the run in it (at I->core.time); FMU_DISCARD: the run had ended before, nothing
+ * done; FMU_ERROR, also when a state or a Real output is not finite after the step. */
 fmu_status fmu_do_step(fmu_instance *I, double t, double h, int *ended);
 
 /* FMU state (canGetAndSetFMUstate, canSerializeFMUstate; the blocks are fmu_core.c's) */
