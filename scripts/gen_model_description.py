@@ -21,10 +21,12 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 # Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_without_cvode.c
 # stands in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
-SHARED_SOURCES = ["fmi2Functions.c", "fmu_core.c", "cs_without_cvode.c"]
-FMI3_SHARED_SOURCES = ["fmi3Functions.c", "fmu_core.c", "cs_without_cvode.c"]
+# The FMI layer's version-free half, under either API layer
+VERSION_FREE_SOURCES = ["fmu_instance.c", "fmu_functions.c", "fmu_core.c", "cs_without_cvode.c"]
+SHARED_SOURCES = ["fmi2Functions.c"] + VERSION_FREE_SOURCES
+FMI3_SHARED_SOURCES = ["fmi3Functions.c"] + VERSION_FREE_SOURCES
 MODELS_DIR = REPO / "fmu_src" / "models"
-# the value reference of FMI 3.0's independent variable `time` (FMI3_TIME_VR of fmi3Functions.c)
+# the value reference of FMI 3.0's independent variable `time` (FMU_TIME_VR of fmu_instance.h)
 FMI3_TIME_VR = 0
 MODELS = {
     "RockingWall": dict(
