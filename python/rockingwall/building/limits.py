@@ -152,11 +152,12 @@ def markdown(table, runs, ties):
         lines.append(f"| {label} | " + " | ".join(f"{v:.3g}" for v in table[(order, damped)]) + " |")
     lines += ["", "| run | H [ms] | m_b/m_d | predicted growth [1/s] | measured [1/s] |", "|---|---|---|---|---|"]
     for r in runs:
-        lines.append(f"| {'ramped' if r.order == 2 else 'held'} | {1e3 * r.H:g} | {r.ratio:g} | "
-                     f"{r.predicted_sigma:.4g} | {r.measured_sigma:.4g} |")
+        predicted = f"{r.predicted_sigma:.4g}" if not r.stable else "none"
+        measured = f"{r.measured_sigma:.4g}" if not r.stable else f"none ({r.measured_sigma:.2g}: the record's own build-up)"
+        lines.append(f"| {'ramped' if r.order == 2 else 'held'} | {1e3 * r.H:g} | {r.ratio:g} | {predicted} | {measured} |")
     lines += ["", "| tie [N/m per m] | largest H, held [ms] | largest H, ramped [ms] |", "|---|---|---|"]
     for tie in sorted({k[0] for k in ties}):
-        lines.append(f"| {tie:.0e} | {1e3 * ties[(tie, 1)]:.3g} | {1e3 * ties[(tie, 2)]:.3g} |")
+        lines.append(f"| {tie:.0e}".replace("e+0", "e") + f" | {1e3 * ties[(tie, 1)]:.3g} | {1e3 * ties[(tie, 2)]:.3g} |")
     return "\n".join(lines)
 
 
