@@ -176,6 +176,11 @@ def building_slave(name, values, n, rigid=False):
     return LinearSlave(name, A, B, np.array(Crows), np.array(Drows), inputs, outputs)
 
 
+def wall_values(scene, wall):
+    """A wall's Real parameters: its start values over its FMU's defaults."""
+    return dict(fmu_start_values(scene.wall_fmu), **wall.real)
+
+
 def scene_slaves(scene):
     """(slaves, connections) of a co-simulated building scene (rockingwall.building.scene.Scene)
     about rest: the Building with its FMU's start values under the scene's, and every wall."""
@@ -183,7 +188,7 @@ def scene_slaves(scene):
     values.update(scene.building_real)
     slaves = [building_slave("building", values, scene.n_storeys)]
     for w in scene.walls:
-        slaves.append(wall_slave(w.name, w.real, int(w.integer.get("hingeLaw", 4))))
+        slaves.append(wall_slave(w.name, wall_values(scene, w), int(w.integer.get("hingeLaw", 4))))
     return slaves, [c for c in scene.connections()]
 
 

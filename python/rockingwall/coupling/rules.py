@@ -267,12 +267,13 @@ def scene_stability(scene, H, order):
     walls = []
     for w in scene.walls:
         law = int(w.integer.get("hingeLaw", 4))
-        m_b = linear_models.base_mass(w.real, law)
+        real = linear_models.wall_values(scene, w)
+        m_b = linear_models.base_mass(real, law)
         md_below = ratio_limit = None
         if w.storey > 1:
             md_below, kd, cd = _diaphragm(values, w.storey - 1)
-            ratio_limit = base_ratio_limit(w.real, law, kd, cd, H, order)
-        tie = linear_models.wall_tied_to_diaphragm(w.real, law, *_diaphragm(values, w.storey))
+            ratio_limit = base_ratio_limit(real, law, kd, cd, H, order)
+        tie = linear_models.wall_tied_to_diaphragm(real, law, *_diaphragm(values, w.storey))
         tie_growth = step_map.worst_growth(step_map.jacobi_step_map(*tie, H, order), H)
         walls.append(WallExchange(w.storey, m_b, md_below, ratio_limit, tie_growth.zeta_num))
     return SceneStability(H, order, growth, tuple(walls))
