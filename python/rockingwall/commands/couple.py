@@ -24,7 +24,9 @@ The macro step defaults to the largest one the tie K_d allows (coupling.rules.ma
 H <= c sqrt(m_r/K_d), docs/coupling.md), at most 1 ms; a larger --macro-step (--step) is run with a
 warning. A run whose energy residual exceeds --energy-share of the peak ground work (1 %) is
 flagged: a warning on stderr, "energy_ok": false in the summary JSON, and exit status 3 with
---strict. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
+--strict. A run whose residual passes half of the ground work (coupling.rules.ENERGY_STOP_SHARE)
+has gone unstable: it ends with an error naming the likely cause and the remedy, exit status 1,
+and nothing of it is written or printed as a result. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
 
 Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms), results/couple.png and
 results/couple.json (the summary: peaks, step, step limit, energy residual share and flags).
@@ -41,7 +43,8 @@ from .. import paths
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
-                                       check_options, macro_step, parse_settings, wall_start_values)
+                                       check_options, macro_step, parse_settings, unstable_message,
+                                       wall_start_values)
 from ..names import HINGE_LAWS as LAWS
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
@@ -116,6 +119,20 @@ def resolve_macro_step(a):
     return limit, warning
 
 
+def unstable_masters(results, a):
+    """The error of the first master whose energy residual passed rules.ENERGY_STOP_SHARE of the
+    ground work (the fmpy master stops itself there; libcosim's is checked after its run), or None."""
+    wall = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
+    for master, r in results.items():
+        residual, work = r.energy_residual(), r.ground_work()
+        share, ok = rules.energy_check(residual, work, rules.ENERGY_STOP_SHARE)
+        if not ok:
+            k = int(np.argmax(np.abs(residual) > rules.ENERGY_STOP_SHARE * np.abs(work).max()))
+            explain = unstable_message(wall, {"m": a.m, "k": a.k}, a.macro_step)
+            return f"{master} master: " + explain(float(r["time"][k]), float(residual[k]), float(np.abs(work).max()))
+    return None
+
+
 def main(argv=None):
     a = parse_args(argv)
     step_warning = None
@@ -140,6 +157,10 @@ def main(argv=None):
         return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
     if step_warning:
         print(f"couple.py: warning: {step_warning}", file=sys.stderr)
+    unstable = unstable_masters(results, a)
+    if unstable:
+        print(f"couple.py: error: {unstable}", file=sys.stderr)
+        return 1
     r = results[masters[0]]
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     output.save_csv(r, a.out)

@@ -12,6 +12,12 @@ class CouplingError(Exception):
     its end: never a silent, shortened result."""
 
 
+class CouplingUnstable(CouplingError):
+    """The coupled run's energy balance broke past the stop bound (rules.ENERGY_STOP_SHARE): the
+    scheme, not the physics, drove the motion. The message names the likely cause and the remedy;
+    nothing of such a run is a result."""
+
+
 def value_references(model_description):
     """{variable name: value reference} of an fmpy model description."""
     return {v.name: v.valueReference for v in model_description.modelVariables}
