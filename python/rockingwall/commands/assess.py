@@ -85,7 +85,7 @@ def main(args):
     im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
     write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
-                                   args.sa_period if args.sa else None, study.column, study.scene_text))
+                                   args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
 
 

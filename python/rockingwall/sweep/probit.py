@@ -4,7 +4,7 @@ row of (runs, exceedances) per level fitted by maximum likelihood, which is a pr
 Its log-likelihood is concave in (a, c) and strictly so unless the outcomes separate, so the
 maximum, where it exists, is unique: Newton's method with step halving reaches it to rounding.
 Where it does not exist the row says why (status):
-    INTERIOR   the maximum exists with c > 0: theta = exp(-a/c), beta = 1/c;
+    INTERIOR   the maximum exists with c > C_FLAT: theta = exp(-a/c), beta = 1/c;
     SEPARATED  every run below some level stays short and every run above it reaches the limit
                state (equal at one level at most): the likelihood grows as beta -> 0, theta is
                anywhere in the gap (its log-midpoint is returned);
@@ -17,6 +17,7 @@ import numpy as np
 from scipy import special
 
 INTERIOR, SEPARATED, FLAT, NONE, ALL, ONE_LEVEL = range(6)
+C_FLAT = 1e-8   # c = 1/beta at or below this (beta >= 1e8, a flat share to rounding) counts as FLAT
 _LOG_SQRT_2PI = 0.5 * np.log(2 * np.pi)
 
 
@@ -107,7 +108,7 @@ def fit(x, n, z):
     rows = status == INTERIOR
     if rows.any():
         a, c = newton(x, n[rows], z[rows])
-        flat = c <= 0
+        flat = c <= C_FLAT
         idx = np.flatnonzero(rows)
         status[idx[flat]] = FLAT
         ok = idx[~flat]
