@@ -142,7 +142,7 @@ def fragilities(cases, states, column=KD_COLUMN, outcomes=None):
     for value, d, name in tqdm(jobs, desc="fragility", unit="fit", file=sys.stderr, delay=2):
         what = "collapse" if name == "collapsed" else name
         fits = [("records", fragility.fit_with_uncertainty(d.im, d[name], d.record, what=what))]
-        if outcomes and all(o is not None for o in outcomes):
+        if outcomes and all(outcomes[i] is not None and name in outcomes[i] for i in d.index):
             fits.append(("records and parameters", fragility.fit_tables(*member_tables(d, name, column, outcomes),
                                                                        what=what)))
         for over, est in fits:

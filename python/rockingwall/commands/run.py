@@ -2,6 +2,8 @@
 of the time histories and a plot per record (and --json for programs)."""
 import sys
 
+from tqdm import tqdm
+
 from .. import run_report, strict_json
 from ..api import ENGINES, simulate
 from . import common as cc
@@ -37,9 +39,10 @@ def main(args):
     wall = cc.wall_from_args(args)
     diaphragm, tie = cc.diaphragm_from_args(args, wall)
     ensemble = cc.ensemble_from_args(args)
+    records = tqdm(args.records, desc="records", unit="record", file=sys.stderr, delay=2)
     results = [simulate(wall, cc.record_from_args(spec, args), engine=args.engine, stop_time=args.stop_time,
                         tail=args.tail, rtol=args.rtol, diaphragm=diaphragm, tie=tie, ensemble=ensemble)
-               for spec in args.records]
+               for spec in records]
     if args.out:  # files first: a closed pipe on standard output cannot lose them
         out = cc.output_dir(args.out)
         for r in results:
