@@ -9,10 +9,11 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from . import fmi2sim, names, paths, scenes
+from . import fmi2sim, names, paths, robustness, scenes
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .building import monolithic
 from .building.description import TIE_DEFAULT
+from .records import G_STD
 from .wall import Wall
 
 ENGINES = ("exact", "fmi2sim", "fmpy")
@@ -34,6 +35,8 @@ class Result:
     impacts: int
     history: pd.DataFrame
     scene: scenes.Scene = None
+    pga_g: float = float("nan")   # the record's PGA as run [g]
+    ensemble: object = None       # an ensemble.Summary where simulate(..., ensemble=...) ran one
 
     @property
     def s1_over_delta_u(self):
@@ -46,15 +49,33 @@ class Result:
                 "s1_over_Delta_u": self.s1_over_delta_u,
                 "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
 
+    def summary(self, fmt="md"):
+        """The report table of this run (fmt 'md' or 'text'): PGA, peaks, s1/0.6 Delta_u, limit
+        states reached, the ensemble's collapse probability and spread if one ran, the scene."""
+        from . import report_table
+        return report_table.result_summary(self, fmt)
+
 
 def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8,
-             diaphragm=None, tie=TIE_DEFAULT):
+             diaphragm=None, tie=TIE_DEFAULT, ensemble=None):
     """Simulate `wall` (a Wall) under `record` (a Record, accelerations in m/s^2).
     stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
     process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode).
     diaphragm: a building.description.Diaphragm (its stiffness, mass, damping): the wall tied to it
     by `tie` [N/m per m] (the scene solver; engine is then ignored); None: the paper's scene, the
-    wall's top spring K_d ending at a fixed point."""
+    wall's top spring K_d ending at a fixed point.
+    ensemble: an ensemble.Ensemble (or its size): the run's robustness, the same case for walls
+    perturbed within the inputs' uncertainty (on the exact engine or the scene solver, whatever
+    `engine`), summarised in the result's `ensemble` (rockingwall.ensemble)."""
+    result = _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diaphragm, tie)
+    result.pga_g = record.pga / G_STD
+    if ensemble is not None:
+        t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)
+        result.ensemble = robustness.of_result(result, record, t_end, ensemble, diaphragm, tie)
+    return result
+
+
+def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diaphragm, tie):
     if engine not in ENGINES:
         raise ValueError(f"engine {engine!r}: choose one of {', '.join(ENGINES)}")
     t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)

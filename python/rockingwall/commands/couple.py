@@ -32,14 +32,13 @@ Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms), results
 results/couple.json (the summary: peaks, step, step limit, energy residual share and flags).
 """
 import argparse
-import json
 import math
 import pathlib
 import sys
 
 import numpy as np
 
-from .. import paths
+from .. import paths, strict_json
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
@@ -171,7 +170,8 @@ def main(argv=None):
         report(m, results[m], a)
     info = output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning)
     summary_path = pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
-    summary_path.write_text(json.dumps(info, indent=1) + "\n")
+    with open(summary_path, "w") as fh:
+        strict_json.dump(info, fh)
     print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
           f"max |ground work| {info['ground_work_max']:.4g} J/m")
     if not info["energy_ok"]:

@@ -2,6 +2,8 @@
 of the time histories and a plot per record (and --json for programs)."""
 import sys
 
+from tqdm import tqdm
+
 from .. import run_report, strict_json
 from ..api import ENGINES, simulate
 from . import common as cc
@@ -23,6 +25,8 @@ def parser(sub=None):
     p.add_argument("--rtol", type=float, default=1e-8, help="relative tolerance of fmi2sim and fmpy (default 1e-8)")
     p.add_argument("--out", help="folder for <record>.csv and <record>.png (created if missing)")
     p.add_argument("--json", action="store_true", help="print the results as JSON instead of a table")
+    cc.add_ensemble_arguments(p, default=0)
+    cc.add_strict_argument(p)
     p.set_defaults(command=main)
     return p
 
@@ -34,8 +38,11 @@ def main(args):
         return run_building(args.building, args)
     wall = cc.wall_from_args(args)
     diaphragm, tie = cc.diaphragm_from_args(args, wall)
+    ensemble = cc.ensemble_from_args(args)
+    records = tqdm(args.records, desc="records", unit="record", file=sys.stderr, delay=2)
     results = [simulate(wall, cc.record_from_args(spec, args), engine=args.engine, stop_time=args.stop_time,
-                        tail=args.tail, rtol=args.rtol, diaphragm=diaphragm, tie=tie) for spec in args.records]
+                        tail=args.tail, rtol=args.rtol, diaphragm=diaphragm, tie=tie, ensemble=ensemble)
+               for spec in records]
     if args.out:  # files first: a closed pipe on standard output cannot lose them
         out = cc.output_dir(args.out)
         for r in results:
@@ -45,7 +52,9 @@ def main(args):
             print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
     if args.json:
         strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
-                          "runs": [dict(record=r.record, engine=r.engine, **r.peaks()) for r in results]}, sys.stdout)
+                          "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
+                                        **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}))
+                                   for r in results]}, sys.stdout)
     else:
         print(run_report.table(wall, results))
     return 0

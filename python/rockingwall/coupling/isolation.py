@@ -13,6 +13,7 @@ import tempfile
 
 import numpy as np
 
+from .. import strict_json
 from . import libcosim, monolithic
 from .slaves import CouplingError
 from .wall_diaphragm import CoupledResult, ground_motion, parse_settings, run_fmpy, wall_start_values
@@ -88,12 +89,18 @@ def run_child(master, a):
         if proc.returncode != 0 or not out_json.exists():
             raise CouplingError(child_failure(master, proc, (a.wall_fmu, a.diaphragm_fmu)))
         data = json.loads(out_json.read_text())
-    r = CoupledResult({k: np.asarray(v) for k, v in data.items() if k != "collapsed_at"})
+    r = CoupledResult({k: _array(v) for k, v in data.items() if k != "collapsed_at"})
     r["collapsed_at"] = data.get("collapsed_at")
     return r
 
 
+def _array(values):
+    """An array read back from the child's JSON: null (a non-finite number) becomes NaN."""
+    a = np.asarray(values)
+    return np.asarray(values, dtype=float) if a.dtype == object else a
+
+
 def write_result(r, path):
-    """The child's result arrays (and collapsed_at) as JSON, for run_child."""
-    pathlib.Path(path).write_text(json.dumps({k: (np.asarray(v).tolist() if v is not None else None)
-                                              for k, v in r.items()}))
+    """The child's result arrays (and collapsed_at) as strict JSON (NaN written as null), for run_child."""
+    with open(path, "w") as fh:
+        strict_json.dump({k: (np.asarray(v).tolist() if v is not None else None) for k, v in r.items()}, fh)

@@ -7,11 +7,14 @@ import numpy as np
 
 from .types import FLOAT, G_STD, Record, RecordError, number
 
+CSV_UNITS = {"g": G_STD, "m/s2": 1.0, "cm/s2": 0.01}  # the accelerations' unit -> m/s^2 (g: of g=G_STD)
+
+
 def read_csv(path, units="g", g=G_STD):
     """Two columns, time [s] and acceleration (comma, semicolon, tab or blank separated); '#'
-    lines and one header line are skipped. units: 'g' or 'm/s2'."""
-    if units not in ("g", "m/s2"):
-        raise ValueError(f"units must be 'g' or 'm/s2', got {units!r}")
+    lines and one header line are skipped. units: 'g', 'm/s2' or 'cm/s2' (gal)."""
+    if units not in CSV_UNITS:
+        raise ValueError(f"units must be one of {', '.join(CSV_UNITS)}, got {units!r}")
     path = os.fspath(path)
     times, accs = [], []
     try:
@@ -34,7 +37,7 @@ def read_csv(path, units="g", g=G_STD):
             accs.append(a)
     if len(times) < 2:
         raise RecordError(f"{path}: need at least 2 rows of numbers, found {len(times)}")
-    factor = g if units == "g" else 1.0
+    factor = g if units == "g" else CSV_UNITS[units]
     return Record(pathlib.Path(path).stem, np.array(times), np.array(accs) * factor, source=path)
 
 
