@@ -7,7 +7,7 @@ import tempfile
 import numpy as np
 import pandas as pd
 
-from . import fmi2sim, names, paths
+from . import bounds, fmi2sim, names, paths
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .records import Record
 from .wall import Wall
@@ -49,8 +49,8 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
     process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode)."""
     if engine not in ENGINES:
         raise ValueError(f"engine {engine!r}: choose one of {', '.join(ENGINES)}")
-    t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)
-    grid = np.arange(float(record.t[0]), t_end + output_interval / 2, output_interval)
+    t_end = run_end(record, stop_time, tail)
+    grid = output_grid(float(record.t[0]), t_end, output_interval)
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
@@ -58,8 +58,45 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
                   collapsed, t_collapse, impacts, history)
 
 
+def run_end(record, stop_time, tail):
+    """The run's end [s]: stop_time, else the record's end plus `tail` (>= 0). The run starts at
+    t = 0, so a record must too (or later: the FMU holds its first value until then)."""
+    where = record.source or record.name
+    if record.t[0] < 0:
+        raise ValueError(f"{where}: the record starts at t = {record.t[0]:g} s, before the run starts (t = 0): "
+                         "shift its times")
+    if stop_time is None:
+        if not (np.isfinite(tail) and tail >= 0):
+            raise ValueError(f"--tail {tail!r} s: the free vibration after the record must be a finite number >= 0")
+        t_end = float(record.t[-1] + tail)
+    else:
+        t_end = float(stop_time)
+    bounds.run_length(0.0, t_end, f"{where}: stop time")
+    return t_end
+
+
+def output_grid(t0, t_end, interval):
+    """Output times every `interval` from t0, the last one exactly t_end (never past it: the
+    engine refuses an output time after the end, and float steps can overshoot)."""
+    if not (np.isfinite(interval) and interval > 0):
+        raise ValueError(f"output interval {interval!r} s: must be a finite number > 0")
+    n = int(np.floor((t_end - t0) / interval * (1 + 1e-12)))  # whole intervals inside [t0, t_end]
+    if n + 2 > bounds.MAX_OUTPUT_ROWS:
+        raise ValueError(f"output grid of {n + 1} rows (every {interval:g} s over {t_end - t0:g} s): more than "
+                         f"{bounds.MAX_OUTPUT_ROWS} rows; give a larger output interval")
+    grid = t0 + np.arange(n + 1) * interval
+    grid = grid[grid < t_end - 1e-9 * interval]  # the end is appended exactly, once
+    return np.append(grid, t_end)
+
+
 def _exact(wall, record, t_end, grid, rtol, output_interval):
-    r = engine_module.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    try:
+        r = engine_module.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    except engine_module.EngineError as exc:
+        if exc.code != engine_module.UNSUPPORTED:
+            raise
+        raise engine_module.EngineError(exc.code, f"{exc.detail}: run it with --engine fmi2sim "
+                                                  "(engine='fmi2sim' in Python)") from None
     return r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts, r.s1, r.s2
 
 

@@ -4,9 +4,9 @@ import importlib
 import os
 import sys
 
-from . import __version__
+from . import __version__, outputs
 from .commands import common as cc
-from .records import RecordError
+from .errors import RockingWallError
 
 # commands with their own argument parser: name -> (module, one-line help)
 DELEGATED = {
@@ -33,23 +33,49 @@ def build_parser():
     return p
 
 
+def dispatch(argv):
+    if argv and argv[0] in DELEGATED:
+        return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+    args = build_parser().parse_args(argv)
+    if not hasattr(args, "command"):
+        build_parser().print_help()
+        return 2
+    return args.command(args)
+
+
 def main(argv=None):
+    """Every command. Errors of the package's own kinds (ValueError, RockingWallError: refused
+    input, a run that cannot be made) are one line and exit status 2; a file that cannot be read
+    or written (a full disk, no permission) one line naming it and exit status 1. What is left is
+    a bug and keeps its traceback."""
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        if argv and argv[0] in DELEGATED:
-            return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
-        args = build_parser().parse_args(argv)
-        if not hasattr(args, "command"):
-            build_parser().print_help()
-            return 2
-        return args.command(args)
-    except (ValueError, RecordError, FileNotFoundError) as exc:
+        with outputs.session():  # the inputs this command reads, never overwritten by its outputs
+            status = dispatch(argv)
+        sys.stdout.flush()  # here, not at exit: a full disk behind standard output is named
+        return status
+    except (ValueError, RockingWallError) as exc:
         return cc.fail(str(exc))
     except KeyboardInterrupt:
         return cc.fail("interrupted", 130)
     except BrokenPipeError:  # the reader of standard output went away (| head): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except OSError as exc:
+        if exc.filename is None and stdout_failed():
+            return cc.fail(f"standard output: {exc.strerror or exc}", 1)
+        return cc.fail(outputs.describe_os_error(exc), 1)
+
+
+def stdout_failed():
+    """True when standard output cannot take what is buffered for it; what is buffered is then
+    dropped, so that the interpreter's own flush at exit does not fail a second time."""
+    try:
+        sys.stdout.flush()
+        return False
+    except OSError:
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        return True
 
 
 if __name__ == "__main__":

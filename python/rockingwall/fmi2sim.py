@@ -8,9 +8,10 @@ import subprocess
 import tempfile
 
 from . import paths
+from .errors import RockingWallError
 
 
-class Fmi2simError(RuntimeError):
+class Fmi2simError(RockingWallError, RuntimeError):
     """fmi2sim refused or failed a run; the message is its one-line error."""
 
     def __init__(self, returncode, message):

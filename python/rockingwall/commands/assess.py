@@ -23,9 +23,9 @@ def parser(sub):
     p.add_argument("records", nargs="+", help="records: files, elcentro, gaussian[:D,T] or fema")
     p.add_argument("--csv-units", default="g", choices=["g", "m/s2"])
     level = p.add_mutually_exclusive_group(required=True)
-    level.add_argument("--pga", type=float, nargs="+", help="target PGAs [g]")
-    level.add_argument("--sa", type=float, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
-    level.add_argument("--scale", type=float, nargs="+", help="factors on the records as given")
+    level.add_argument("--pga", type=cc.intensity_g, nargs="+", help="target PGAs [g]")
+    level.add_argument("--sa", type=cc.intensity_g, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
+    level.add_argument("--scale", type=cc.scale_factor, nargs="+", help="factors on the records as given")
     p.add_argument("--sa-period", type=float, help="T [s] of Sa (e.g. the diaphragm's period); also reported")
     p.add_argument("--kd-values", nargs="+", help="diaphragm stiffnesses (default: the wall's K_d), e.g. 30kN/m/m")
     p.add_argument("--limit", action="append", metavar="'NAME: Q >= VALUE'",

@@ -43,6 +43,7 @@ from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
                                        check_options, macro_step, parse_settings, wall_start_values)
 from ..names import HINGE_LAWS as LAWS
+from .common import scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 
@@ -58,7 +59,7 @@ def parse_args(argv):
     ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
     ap.add_argument("--diaphragm-fmu", help="default: the installed Diaphragm.fmu")
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")
-    ap.add_argument("--scale", type=float, default=0.5)
+    ap.add_argument("--scale", type=scale_factor, default=0.5, help="factor on the record (> 0, default 0.5)")
     ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
     ap.add_argument("--Kd", type=_stiffness, default=1e5,
                     help="wall-to-diaphragm spring, N/m per m of wall, or with a unit (100kN/m/m)")

@@ -36,6 +36,7 @@ from ..building.scene import default_scene, run
 from ..coupling.slaves import CouplingError
 from ..names import HINGE_LAWS
 from ..sweep import suites
+from .common import scale_factor
 
 
 def parse_args(argv):
@@ -49,7 +50,7 @@ def parse_args(argv):
     ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2],
                     help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber)")
     ap.add_argument("--record", default="elcentro", help="'elcentro', 'gaussian[:D,T]' or an .AT2/.csv file")
-    ap.add_argument("--scale", type=float, default=0.5)
+    ap.add_argument("--scale", type=scale_factor, default=0.5, help="factor on the record (> 0, default 0.5)")
     ap.add_argument("--macro-step", type=float, default=1e-3, help="H [s]")
     ap.add_argument("--t-end", type=float, default=None, help="[s], default the record's duration")
     ap.add_argument("--order", type=int, default=2, choices=[1, 2],
