@@ -2,12 +2,11 @@
 (CVODE) or fmpy, with the peaks, the collapse and the time history in SI units."""
 import dataclasses
 import os
-import tempfile
 
 import numpy as np
 import pandas as pd
 
-from . import bounds, fmi2sim, names, paths
+from . import bounds, fmi2sim, names, paths, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .records import Record
 from .wall import Wall
@@ -105,7 +104,7 @@ def _sets(wall):
 
 
 def _fmi2sim(wall, record, t_end, grid, rtol, output_interval):
-    with tempfile.TemporaryDirectory(prefix="rw_simulate_") as tmp:
+    with scratch.folder("rw_simulate_") as tmp:
         table = os.path.join(tmp, "input.csv")
         pd.DataFrame({"time": record.t, "ag": record.ag}).to_csv(table, index=False, float_format="%.17g")
         out = os.path.join(tmp, "out.csv")

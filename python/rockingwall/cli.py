@@ -50,10 +50,8 @@ def main(argv=None):
     a bug and keeps its traceback."""
     argv = sys.argv[1:] if argv is None else list(argv)
     try:
-        with outputs.session():  # the inputs this command reads, never overwritten by its outputs
-            status = dispatch(argv)
-        sys.stdout.flush()  # here, not at exit: a full disk behind standard output is named
-        return status
+        with outputs.session(), outputs.named_stdout():  # inputs never overwritten; stdout's errors named
+            return dispatch(argv)
     except (ValueError, RockingWallError) as exc:
         return cc.fail(str(exc))
     except KeyboardInterrupt:
@@ -62,20 +60,7 @@ def main(argv=None):
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
     except OSError as exc:
-        if exc.filename is None and stdout_failed():
-            return cc.fail(f"standard output: {exc.strerror or exc}", 1)
         return cc.fail(outputs.describe_os_error(exc), 1)
-
-
-def stdout_failed():
-    """True when standard output cannot take what is buffered for it; what is buffered is then
-    dropped, so that the interpreter's own flush at exit does not fail a second time."""
-    try:
-        sys.stdout.flush()
-        return False
-    except OSError:
-        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
-        return True
 
 
 if __name__ == "__main__":

@@ -12,6 +12,7 @@ import contextlib
 import os
 import pathlib
 import stat
+import sys
 import tempfile
 
 _PROTECTED = {}  # (device, inode) -> (what, path) of every input of the current command
@@ -50,11 +51,17 @@ def protect(path, what="input"):
         _PROTECTED[key] = (what, os.fspath(path))
 
 
-def _input_at(path):
-    """(what, path) of the registered input `path` is (by device and inode), or None. An input
-    that is gone, or whose path now names another file, no longer counts (inodes are reused)."""
+def _input_at(path, inputs=()):
+    """(what, path) of the input `path` is (by device and inode): a registered one or one of
+    `inputs` ((path, what) pairs), or None. A registered input that is gone, or whose path now
+    names another file, no longer counts (inodes are reused)."""
     key = _identity(path)
-    if key is None or key not in _PROTECTED:
+    if key is None:
+        return None
+    for original, what in inputs:
+        if _identity(original) == key:
+            return what, os.fspath(original)
+    if key not in _PROTECTED:
         return None
     what, original = _PROTECTED[key]
     return (what, original) if _identity(original) == key else None
@@ -73,8 +80,9 @@ def check_targets(targets, label="output"):
         seen[ident] = seen[key] = target
 
 
-def check_target(target, label="output"):
-    found = _input_at(target)
+def check_target(target, label="output", inputs=()):
+    """Refuse `target` when it is an input (registered, or one of `inputs`: (path, what) pairs)."""
+    found = _input_at(target, inputs)
     if found:
         what, original = found
         same = "" if os.path.abspath(original) == os.path.abspath(os.fspath(target)) else f" (the same file as {original})"
@@ -95,6 +103,15 @@ def current_umask():
     return mask
 
 
+def mode_for(path):
+    """The permissions a plain open() leaves `path` with: an existing file's own, else 0666 less
+    the umask."""
+    try:
+        return stat.S_IMODE(os.stat(path).st_mode)
+    except OSError:
+        return 0o666 & ~current_umask()
+
+
 def describe_os_error(exc, path=None):
     """'PATH: what went wrong' from an OSError (the path it names, else `path`)."""
     name = exc.filename if exc.filename is not None else path
@@ -102,25 +119,24 @@ def describe_os_error(exc, path=None):
     return f"{name}: {reason}" if name is not None else reason
 
 
-def write_atomic(path, write, label="output"):
-    """write(tmp_path) into a temporary file beside `path`, renamed into place when it succeeded.
-    The file gets the mode a plain open() would give it: an existing target's, else 0666 less
-    the umask (not mkstemp's private 0600). An OSError names `path`."""
+def write_atomic(path, write, label="output", inputs=()):
+    """write(tmp_path) into a temporary file beside `path`, renamed into place when it succeeded;
+    refused when `path` is an input (registered, or one of `inputs`: (path, what) pairs). The
+    file gets the mode a plain open() would give it: an existing target's, else 0666 less the
+    umask (not mkstemp's private 0600). An OSError names `path`."""
     path = pathlib.Path(path)
-    check_target(path, label)
+    check_target(path, label, inputs)
+    mode = mode_for(path)
     try:
-        mode = stat.S_IMODE(os.stat(path).st_mode)
-    except OSError:
-        mode = 0o666 & ~current_umask()
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        # the suffix kept: writers that pick the format from the name (PIL) see the target's
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent)
         os.close(fd)
     except OSError as exc:
         raise OSError(exc.errno, f"cannot write into its folder: {exc.strerror}", str(path)) from None
     try:
         write(tmp)
         os.chmod(tmp, mode)
-        check_target(path, label)  # an input may have appeared at the path during the write
+        check_target(path, label, inputs)  # an input may have appeared at the path during the write
         os.replace(tmp, path)
     except OSError as exc:
         raise OSError(exc.errno, f"cannot write: {exc.strerror or exc}", str(path)) from None
@@ -128,3 +144,45 @@ def write_atomic(path, write, label="output"):
         if os.path.exists(tmp):
             os.unlink(tmp)
     return path
+
+
+class NamedStream:
+    """A text stream whose write errors name it ('standard output: No space left on device'):
+    an OSError of print() carries no file name of its own. A closed pipe stays BrokenPipeError."""
+
+    def __init__(self, stream, name):
+        self._stream, self._name = stream, name
+
+    def _named(self, call, *args):
+        try:
+            return call(*args)
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise OSError(exc.errno, exc.strerror or str(exc), self._name) from None
+
+    def write(self, text):
+        return self._named(self._stream.write, text)
+
+    def flush(self):
+        return self._named(self._stream.flush)
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
+
+
+@contextlib.contextmanager
+def named_stdout():
+    """sys.stdout as a NamedStream for the duration; on a failed write what is still buffered is
+    dropped (standard output pointed at /dev/null), so the interpreter's flush at exit is quiet."""
+    original = sys.stdout
+    sys.stdout = NamedStream(original, "standard output")
+    try:
+        yield
+        sys.stdout.flush()  # here, not at exit: a full disk behind standard output is named
+    except OSError as exc:
+        if exc.filename == "standard output" and not isinstance(exc, BrokenPipeError):
+            os.dup2(os.open(os.devnull, os.O_WRONLY), original.fileno())
+        raise
+    finally:
+        sys.stdout = original

@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import rockingwall as rw
-from rockingwall import bounds, limits
+from rockingwall import limits
 from cli_harness import assert_refused, cli, pulse, write_csv_record
 
 
@@ -65,6 +65,7 @@ def test_finding_output_grid_never_overshoots_the_end(tmp_path):
 
 
 def test_finding_run_length_is_bounded_with_the_bound_in_the_message(tmp_path, rec):
+    from rockingwall import bounds
     bound = f"{bounds.MAX_RUN_S:g} s"
     huge = write_csv_record(tmp_path / "huge.csv", [0.0, 1e9], [0.1, 0.1])
     assert_refused(cli("run", huge), bound)
@@ -90,6 +91,7 @@ def test_finding_a_record_starting_before_zero_is_one_clear_line(tmp_path):
 
 
 def test_finding_physically_meaningless_magnitudes_are_refused_with_the_bound(tmp_path, rec):
+    from rockingwall import bounds
     big = write_csv_record(tmp_path / "big.csv", [0.0, 1.0, 2.0], [0.1, 1e300, 0.0])
     assert_refused(cli("run", big), "big.csv", f"{bounds.MAX_AG_G:g} g")
     assert_refused(cli("run", rec, "--pga", "1e6"), f"{bounds.MAX_AG_G:g} g")

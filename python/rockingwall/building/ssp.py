@@ -18,10 +18,11 @@ component's `source` at it: it must have the variables the connections name.
 import atexit
 import pathlib
 import shutil
-import tempfile
 import xml.etree.ElementTree as ET
 import zipfile
 
+from .. import scratch
+from ..outputs import write_atomic
 from .scene import FLOOR_OUT, Scene, WallSpec
 
 NS = {"ssd": "http://ssp-standard.org/SSP1/SystemStructureDescription",
@@ -119,11 +120,15 @@ def write(scene, path):
     sources = {"building": "resources/" + pathlib.Path(scene.building_fmu).name}
     sources.update({w.name: "resources/" + pathlib.Path(scene.wall_fmu).name for w in scene.walls})
     root = ssd_xml(scene, sources)
-    with zipfile.ZipFile(path, "w", zipfile.ZIP_DEFLATED) as z:
-        z.writestr("SystemStructure.ssd", ET.tostring(root, encoding="UTF-8", xml_declaration=True))
-        for src, arc in {scene.building_fmu: sources["building"], scene.wall_fmu: "resources/" +
-                         pathlib.Path(scene.wall_fmu).name}.items():
-            z.write(src, arc)
+    members = {scene.building_fmu: sources["building"], scene.wall_fmu: "resources/" + pathlib.Path(scene.wall_fmu).name}
+
+    def zip_into(tmp):
+        with zipfile.ZipFile(tmp, "w", zipfile.ZIP_DEFLATED) as z:
+            z.writestr("SystemStructure.ssd", ET.tostring(root, encoding="UTF-8", xml_declaration=True))
+            for src, arc in members.items():
+                z.write(src, arc)
+    write_atomic(path, zip_into, "the SSP file", inputs=[(scene.building_fmu, "the building FMU"),
+                                                         (scene.wall_fmu, "the wall FMU")])
     return path
 
 
@@ -163,7 +168,7 @@ def _check_end(inst, var, declared, fmu_vars, where):
 
 def _temporary_folder():
     """A folder removed when the process ends (the scene's FMUs live there while it runs)."""
-    folder = tempfile.mkdtemp(prefix="rw_ssp_")
+    folder = scratch.make("rw_ssp_")
     atexit.register(shutil.rmtree, folder, True)
     return folder
 

@@ -8,11 +8,15 @@ per limit state a fragility with its uncertainty; IDA 'resurrections' reported.
 Records: .AT2 or .csv files, 'elcentro', 'gaussian[:D,T]', or 'fema' (the 44 FEMA P695 far-field
 components). Intensities: --pga (each record scaled to each PGA, g), --sa with --sa-period (to
 each Sa(T, 5 %), g) or --scale (factors on the records as given). Each run lasts its record.
-Writes cases.csv, one IDA plot per record (<record>.png), fragility.png and fragility.csv."""
+Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv and
+manifest.json (the run's files; "complete": true once all are in place). The folder then holds
+this run's files only: those of an earlier assessment it does not write again are removed (unless
+edited since), other files are left alone."""
 import sys
 
 from .. import assessment, limits, units
 from ..api import ENGINES
+from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
 
 
@@ -37,6 +41,21 @@ def parser(sub):
     return p
 
 
+def output_names(recs):
+    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+
+
+def write_outputs(out, recs, cases, frag, wall, states, im_name):
+    """The tables and plots into the OutputFolder `out`."""
+    out.write("cases.csv", lambda tmp: cases.to_csv(tmp, index=False, float_format="%.6g"))
+    out.write("fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
+    from .. import assessment_plots  # matplotlib: imported when the plots are drawn
+    for rec in recs:
+        out.write(f"{cc.file_stem(rec.name)}.png",
+                  lambda tmp, rec=rec: assessment_plots.ida(cases[cases.record == rec.name], wall, states, im_name, tmp))
+    out.write("fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp))
+
+
 def main(args):
     wall = cc.wall_from_args(args)
     if args.sa and not args.sa_period:
@@ -45,17 +64,14 @@ def main(args):
     walls = {kd: wall.replace(Kd=kd) for kd in kds}  # each K_d checked (range, plausibility) before any run
     states = limits.parse_all(args.limit, wall)
     recs = assessment.load_records(args.records, args.csv_units)
-    out = cc.output_dir(args.out)
+    out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
+    out.check(output_names(recs))  # before the runs: no output replaces an input
     cases = assessment.run_cases(walls, recs, args, states)
     frag = assessment.fragilities(cases, states)
     im_name = "PGA [g]" if args.pga else (f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]")
-    cc.write_atomic(out / "cases.csv", lambda tmp: cases.to_csv(tmp, index=False, float_format="%.6g"))
-    cc.write_atomic(out / "fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
-    from .. import assessment_plots  # matplotlib: imported when the plots are drawn
-    for rec in recs:
-        cc.write_atomic(out / f"{cc.file_stem(rec.name)}.png",
-                        lambda tmp, rec=rec: assessment_plots.ida(cases[cases.record == rec.name], wall, states, im_name, tmp))
-    cc.write_atomic(out / "fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp))
-    print(f"wrote {out}/cases.csv, fragility.csv, fragility.png and {len(recs)} IDA plots", file=sys.stderr)
+    with out:  # the folder holds this run's files only, swapped in when all are written
+        write_outputs(out, recs, cases, frag, wall, states, im_name)
+    print(f"wrote {out.path}/cases.csv, fragility.csv, fragility.png, {MANIFEST} and {len(recs)} IDA plots",
+          file=sys.stderr)
     print(assessment.report(wall, kds, states, cases, frag, im_name))  # last: a closed pipe cannot lose the files
     return 0

@@ -37,7 +37,7 @@ import sys
 
 import numpy as np
 
-from .. import paths
+from .. import outputs, paths, records
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
@@ -117,6 +117,19 @@ def resolve_macro_step(a):
     return limit, warning
 
 
+def summary_file(a):
+    return pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
+
+
+def check_files(a):
+    """Before the run: the FMUs and the record are inputs the outputs never replace, and the three
+    outputs are three files."""
+    outputs.protect(a.wall_fmu, "the wall FMU")
+    outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
+    outputs.protect(records.split_spec(a.record)[0], "the record")
+    outputs.check_targets([a.out, a.plot, summary_file(a)], "output")
+
+
 def main(argv=None):
     a = parse_args(argv)
     step_warning = None
@@ -130,6 +143,7 @@ def main(argv=None):
         if a.monolithic and a.master != "fmpy":
             raise ValueError("--monolithic runs one CVODE over both FMUs: it takes no --master")
         check_options(a.t_end, a.macro_step if a.macro_step is not None else min(a.t_end, 1e-3), a.rtol)
+        check_files(a)
         limit, step_warning = resolve_macro_step(a)
         check_options(a.t_end, a.macro_step, a.rtol)
         masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
@@ -150,8 +164,9 @@ def main(argv=None):
     for m in masters:
         report(m, results[m], a)
     info = output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning)
-    summary_path = pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
-    summary_path.write_text(json.dumps(info, indent=1) + "\n")
+    summary_path = summary_file(a)
+    outputs.write_atomic(summary_path, lambda tmp: pathlib.Path(tmp).write_text(json.dumps(info, indent=1) + "\n"),
+                         "--summary")
     print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
           f"max |ground work| {info['ground_work_max']:.4g} J/m")
     if not info["energy_ok"]:

@@ -30,7 +30,7 @@ import sys
 
 import numpy as np
 
-from .. import records
+from .. import outputs, records
 from ..building import ssp
 from ..building.scene import default_scene, run
 from ..coupling.slaves import CouplingError
@@ -70,6 +70,10 @@ def main(argv=None):
         if a.example:
             from ..building import example  # scipy and the engine: only the example needs them
             return example.main(a.records_cache or suites.fema_cache())
+        outputs.protect(a.from_ssp, "the --from-ssp file")
+        outputs.protect(records.split_spec(a.record)[0], "the record")
+        if a.ssp:
+            outputs.check_target(a.ssp, "--ssp")
         if a.from_ssp:
             scene = ssp.read(a.from_ssp)
         else:
@@ -81,9 +85,9 @@ def main(argv=None):
         rec = records.load(a.record).scaled(a.scale)
         t_end = a.t_end or float(rec.t[-1])
         r = run(scene, rec, t_end, a.macro_step, a.order)
-    except (ValueError, OSError, CouplingError) as exc:
+    except (ValueError, OSError, CouplingError) as exc:  # refused input: 2; a failed run or file: 1
         print(f"couple-building: error: {exc}", file=sys.stderr)
-        return 1
+        return 2 if isinstance(exc, ValueError) else 1
     for w in scene.walls:
         print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
     e = r.energy_terms()

@@ -163,7 +163,7 @@ def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol
     check_options(t_end, H, rtol)
     scene = WallAndDiaphragm(wall_fmu, dia_fmu, wall or wall_start_values(), dia or {})
     history = jacobi.run(scene, t_in, ag_in, t_end, H, order=1, rtol=rtol,
-                         progress="fmpy master" if progress else None, prefix="couple_fmus_")
+                         progress="fmpy master" if progress else None)
     r = assemble([p.t for p in history.points], [[p.outputs["wall"][x] for x in WALL_OUT] for p in history.points],
                  [[p.outputs["diaphragm"][x] for x in DIA_OUT] for p in history.points])
     r["collapsed_at"] = history.fallen.get("wall")
