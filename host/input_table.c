@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static char *trim(char *s)
 {
@@ -86,16 +87,31 @@ static int has_nul(const char *s, ssize_t len)
     return 0;
 }
 
+/* The input file opened for reading; a folder is named as one (reading it would look empty). */
+static FILE *open_input(const char *path, input_table *tab, char *err, size_t n)
+{
+    struct stat st;
+    FILE *f = fopen(path, "r");
+    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return NULL; }
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(err, n, "%s: is a folder, not an input file", path);
+        fclose(f);
+        return NULL;
+    }
+    if (!(tab->source = strdup(path))) { snprintf(err, n, "%s: out of memory", path); fclose(f); return NULL; }
+    return f;
+}
+
 int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
 {
-    FILE *f = fopen(path, "r");
+    FILE *f;
     char *line = NULL;
     size_t linecap = 0, cap = 0;
     ssize_t len;
     long lineno = 0;
     int rc = -1;
     memset(tab, 0, sizeof *tab);
-    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    if (!(f = open_input(path, tab, err, n))) return -1;
     /* header */
     while ((len = getline(&line, &linecap, f)) >= 0) {
         lineno++;
@@ -187,7 +203,7 @@ static int parse_at2_header(char *line, long *npts, double *dt)
 int input_read_at2(const char *path, const char *name, double g, double scale, input_table *tab,
                    char *err, size_t n)
 {
-    FILE *f = fopen(path, "r");
+    FILE *f;
     char *line = NULL;
     size_t linecap = 0;
     size_t cap = 0;
@@ -196,7 +212,7 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
     double dt = 0.0;
     int rc = -1;
     memset(tab, 0, sizeof *tab);
-    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    if (!(f = open_input(path, tab, err, n))) return -1;
     for (lineno = 1; lineno <= 4; lineno++) {
         if ((len = getline(&line, &linecap, f)) < 0) {
             snprintf(err, n, "%s:%ld: file ends inside the 4-line AT2 header", path, lineno);
@@ -274,5 +290,6 @@ void input_free(input_table *tab)
     for (size_t c = 0; c < tab->ncols; c++) { free(tab->cols[c].name); free(tab->cols[c].values); }
     free(tab->cols);
     free(tab->t);
+    free(tab->source);
     memset(tab, 0, sizeof *tab);
 }

@@ -10,6 +10,7 @@ typedef struct {
 } input_column;
 
 typedef struct {
+    char *source;    /* the file it was read from */
     double *t;       /* strictly increasing sample times */
     size_t n;        /* samples */
     input_column *cols;

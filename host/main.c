@@ -150,12 +150,14 @@ static int in_range(const char *opt, double x, double lo, double hi)
     return -1;
 }
 
-/* The options that depend on the start and stop times, once those are known. */
-static int check_times(const sim_options *o, double max_step, double interval)
+/* The options that depend on the start and stop times, once those are known; the times' labels
+ * say where each came from (an option, the inputs, the model description). */
+static int check_times(const sim_options *o, const char *start_label, const char *stop_label, double max_step,
+                       double interval)
 {
     const double span = o->stop_time - o->start_time;
     const double scale = fmax(1.0, fmax(fabs(o->start_time), fabs(o->stop_time)));
-    if (in_range("start time", o->start_time, -TIME_MAX, TIME_MAX) || in_range("stop time", o->stop_time, -TIME_MAX, TIME_MAX))
+    if (in_range(start_label, o->start_time, -TIME_MAX, TIME_MAX) || in_range(stop_label, o->stop_time, -TIME_MAX, TIME_MAX))
         return -1;
     if (!(span >= SPAN_MIN_REL * scale)) {
         die("stop time %.17g - start time %.17g = %g is out of range: it must be >= 1e-6 x max(1, |start|, |stop|) = %g",
@@ -251,26 +253,35 @@ static double inputs_end_time(const input_table *tabs, size_t ntab)
     return end;
 }
 
+#define FROM_MD(attribute) "DefaultExperiment " attribute " of the FMU's modelDescription.xml"
+
 /* The stop time: --stop-time if given; else the end of the inputs, so that a record is run to its
  * end rather than cut at the FMU's DefaultExperiment (RockingWall's 10 s of a 40-s record); else
- * DefaultExperiment stopTime, else 1. A given stop time before the inputs' end gets a note. */
-static double choose_stop_time(double requested, const model_description *md, const input_table *tabs, size_t ntab)
+ * DefaultExperiment stopTime, else 1. A given stop time before the inputs' end gets a note.
+ * *label says where it came from. */
+static double choose_stop_time(double requested, const model_description *md, const input_table *tabs, size_t ntab,
+                               const char **label)
 {
     const double inputs_end = inputs_end_time(tabs, ntab);
     if (!isnan(requested)) {
         if (ntab > 0 && requested < inputs_end)
             fprintf(stderr, "fmi2sim: note: the run stops at t = %.10g s (--stop-time), before the inputs end at "
                             "t = %.10g s\n", requested, inputs_end);
+        *label = "--stop-time";
         return requested;
     }
-    if (ntab > 0) return inputs_end;
+    if (ntab > 0) {
+        *label = "stop time (the inputs' last sample)";
+        return inputs_end;
+    }
+    *label = md->has_stop_time ? "stop time (" FROM_MD("stopTime") ")" : "stop time (the default)";
     return md->has_stop_time ? md->stop_time : 1.0;
 }
 
 int main(int argc, char **argv)
 {
     const char *fmu_path = NULL, *csv_path = NULL, *at2_path = NULL, *out_path = NULL;
-    const char *summary_path = NULL;
+    const char *summary_path = NULL, *start_label, *stop_label;
     sim_summary summary = {0};
     double ag_scale = 1.0, g = 9.81;
     int stats_on = 0, status = 1;
@@ -354,8 +365,15 @@ int main(int argc, char **argv)
     if (fmu_unpack(fmu_path, &archive, err, sizeof err) != 0) { status = die("%s", err); goto out; }
     snprintf(mdpath, sizeof mdpath, "%s/modelDescription.xml", archive.dir);
     if (md_parse(mdpath, &md, err, sizeof err) != 0) { status = die("%s: %s", fmu_path, without_temp_dir(err, &archive)); goto out; }
-    for (size_t i = 0; i < nsets; i++)
+    for (size_t i = 0; i < nsets; i++) {
+        for (size_t j = 0; j < i; j++)
+            if (strcmp(sets[i].name, sets[j].name) == 0) {
+                status = die("--set %s is given twice (%s and %s): give each variable once", sets[i].name,
+                             sets[j].value, sets[i].value);
+                goto out;
+            }
         if ((status = check_start_value(&md, sets[i].name, sets[i].value)) != 0) goto out;
+    }
     if (csv_path) {
         if (input_read_csv(csv_path, &tabs[ntab], err, sizeof err) != 0) { status = die("%s", err); goto out; }
         tab_files[ntab++] = csv_path;
@@ -368,9 +386,14 @@ int main(int argc, char **argv)
     status = 2;
 
     opt.start_time = !isnan(start) ? start : (md.has_start_time ? md.start_time : 0.0);
-    opt.stop_time = choose_stop_time(stop, &md, tabs, ntab);
-    if (!(opt.stop_time > opt.start_time)) { die("stop time %g is not after start time %g", opt.stop_time, opt.start_time); goto out; }
-    if (check_times(&opt, opt.max_step, interval) != 0) goto out;
+    start_label = !isnan(start) ? "--start-time" : md.has_start_time ? "start time (" FROM_MD("startTime") ")"
+                                                                      : "start time (the default)";
+    opt.stop_time = choose_stop_time(stop, &md, tabs, ntab, &stop_label);
+    if (!(opt.stop_time > opt.start_time)) {
+        die("%s %g is not after %s %g", stop_label, opt.stop_time, start_label, opt.start_time);
+        goto out;
+    }
+    if (check_times(&opt, start_label, stop_label, opt.max_step, interval) != 0) goto out;
     opt.output_interval = !isnan(interval) ? interval : (opt.stop_time - opt.start_time) / 500.0;
     opt.start_values = sets;
     opt.n_start_values = nsets;

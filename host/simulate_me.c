@@ -90,11 +90,31 @@ static void cvode_error_handler(int code, const char *module, const char *functi
     snprintf(s->cvode_msg, sizeof s->cvode_msg, "%s: %s", function, msg);
 }
 
+/* " (the inputs there: ag = 1e+99 from rec.csv, ...)": a solver that fails at an input's value
+ * (a unit slip, a corrupt file) is then traced to the file that gave it. */
+static const char *inputs_at(const sim *s, double t, char *buf, size_t n)
+{
+    size_t used = 0;
+    buf[0] = '\0';
+    for (size_t i = 0; i < s->n_in && used + 1 < n; i++) {
+        const input_table *tab = s->in_tab[i];
+        int w = snprintf(buf + used, n - used, "%s%s = %g from %s", i ? ", " : " (the inputs there: ",
+                         tab->cols[s->in_col[i]].name, input_value(tab, s->in_col[i], t),
+                         tab->source ? tab->source : "the inputs");
+        if (w < 0) break;
+        used += (size_t)w < n - used ? (size_t)w : n - used - 1;
+    }
+    if (s->n_in && used + 2 < n) snprintf(buf + used, n - used, ")");
+    return buf;
+}
+
 /* CVodeGetReturnFlagName returns a string allocated with malloc (SUNDIALS 6): free it. */
 static void cvode_failed(sim *s, int flag, double t)
 {
     char *name = CVodeGetReturnFlagName(flag);
-    fail(s, "CVODE failed at t = %.10g: %s (%s)", t, name ? name : "?", s->cvode_msg);
+    char inputs[768];
+    fail(s, "CVODE failed at t = %.10g: %s (%s)%s", t, name ? name : "?", s->cvode_msg,
+         inputs_at(s, t, inputs, sizeof inputs));
     free(name);
 }
 
@@ -360,7 +380,9 @@ static int integrator_step(sim *s, const integrator *I, double t_stop, N_Vector 
         flag = ERKStepEvolve(I->mem, t_stop, y, tret, ARK_ONE_STEP);
         if (flag < 0) {
             char *name = ERKStepGetReturnFlagName(flag); /* malloc'ed, like CVODE's */
-            fail(s, "ARKODE ERKStep failed at t = %.10g: %s (%s)", *tret, name ? name : "?", s->cvode_msg);
+            char inputs[768];
+            fail(s, "ARKODE ERKStep failed at t = %.10g: %s (%s)%s", *tret, name ? name : "?", s->cvode_msg,
+                 inputs_at(s, *tret, inputs, sizeof inputs));
             free(name);
             return -1;
         }
