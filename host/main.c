@@ -15,6 +15,7 @@
 #include "cleanup.h"
 #include "fmu_archive.h"
 #include "fmu_binary.h"
+#include "fmu_inputs.h"
 #include "input_table.h"
 #include "model_description.h"
 #include "output_file.h"
@@ -43,7 +44,9 @@ static const char *usage =
     "                           (default (stop - start)/500)\n"
     "  --set NAME=VALUE         start value by variable name (repeatable; type-checked)\n"
     "  --input FILE.csv         inputs: header 'time,NAME,...', rows of numbers, times increasing;\n"
-    "                           linearly interpolated, ends held\n"
+    "                           Real continuous inputs linear between rows, discrete ones (Real\n"
+    "                           discrete, Integer, Boolean 0/1, tunable parameters) held and set\n"
+    "                           at events; two rows of one time are a step; ends held\n"
     "  --ag FILE.AT2            PEER NGA acceleration record (in g) for the input 'ag' [m/s2]\n"
     "  --ag-scale S             factor on the record (default 1)\n"
     "  --g G                    gravity used to convert g to m/s2, in [0.1, 100] (default 9.81)\n"
@@ -116,15 +119,33 @@ static int check_start_value(const model_description *md, const char *name, cons
     return 0;
 }
 
+/* The values of an Integer or Boolean column: whole numbers in range, 0 or 1. */
+static int check_column_values(const input_table *tab, size_t c, input_kind kind, const char *file)
+{
+    const char *name = tab->cols[c].name;
+    for (size_t r = 0; r < tab->n; r++) {
+        const double v = tab->cols[c].values[r];
+        if (kind == IN_INTEGER && !(v == floor(v) && v >= -2147483648.0 && v <= 2147483647.0))
+            return die("%s: the row at time %g: input '%s' is an Integer: %g is not a whole number in [-2^31, 2^31 - 1]",
+                       file, tab->t[r], name, v);
+        if (kind == IN_BOOLEAN && v != 0.0 && v != 1.0)
+            return die("%s: the row at time %g: input '%s' is a Boolean: %g is not 0 or 1", file, tab->t[r], name, v);
+    }
+    return 0;
+}
+
 static int check_inputs(const model_description *md, const input_table *tabs, size_t ntab, const char *const *files)
 {
     for (size_t i = 0; i < ntab; i++)
         for (size_t c = 0; c < tabs[i].ncols; c++) {
-            const char *name = tabs[i].cols[c].name;
+            const char *name = tabs[i].cols[c].name, *why;
             const md_variable *v = md_find(md, name);
+            int kind;
             if (!v) return die("%s:1: column '%s' is not a variable of the model", files[i], name);
-            if (strcmp(v->causality, "input") != 0) return die("%s:1: '%s' is not an input of the model (causality %s)", files[i], name, v->causality);
-            if (v->type != MD_REAL) return die("%s:1: input '%s' is a %s; only Real inputs can be read from files", files[i], name, md_type_name(v->type));
+            if ((kind = fmu_input_kind(v, &why)) < 0)
+                return die("%s:1: '%s' %s (a %s of causality %s)", files[i], name, why, md_type_name(v->type),
+                           v->causality);
+            if (check_column_values(&tabs[i], c, (input_kind)kind, files[i]) != 0) return 2;
             for (size_t j = 0; j <= i; j++)
                 for (size_t d = 0; d < tabs[j].ncols; d++)
                     if ((j < i || d < c) && strcmp(tabs[j].cols[d].name, name) == 0)
