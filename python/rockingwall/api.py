@@ -60,7 +60,7 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
 def run_end(record, stop_time, tail):
     """The run's end [s]: stop_time, else the record's end plus `tail` (>= 0). The run starts at
     t = 0, so a record must too (or later: the FMU holds its first value until then)."""
-    where = record.source or record.name
+    where = record.label
     if record.t[0] < 0:
         raise ValueError(f"{where}: the record starts at t = {record.t[0]:g} s, before the run starts (t = 0): "
                          "shift its times")

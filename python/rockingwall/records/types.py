@@ -4,6 +4,7 @@ record file that cannot be read raises, with the file, line and problem."""
 import dataclasses
 import hashlib
 import math
+import os
 
 import numpy as np
 
@@ -27,7 +28,7 @@ class Record:
     def __post_init__(self):
         """Every Record is one the model can run: finite, increasing times, finite accelerations of
         at most bounds.MAX_AG_G (a unit slip or a corrupt file is refused here, with its name)."""
-        where = self.source or self.name
+        where = self.label
         t, ag = np.asarray(self.t), np.asarray(self.ag)
         if t.ndim != 1 or ag.shape != t.shape or t.size < 1:
             raise RecordError(f"{where}: times and accelerations must be two 1-D arrays of one length")
@@ -39,6 +40,11 @@ class Record:
             bounds.peak_ag(float(np.max(np.abs(ag))), where)
         except ValueError as exc:
             raise RecordError(str(exc)) from None
+
+    @property
+    def label(self):
+        """What messages call the record: its file when it has one, else its name."""
+        return self.source if self.source and os.path.isfile(self.source) else self.name
 
     @property
     def pga(self):
