@@ -4,7 +4,7 @@ import importlib
 import os
 import sys
 
-from . import __version__, outputs
+from . import __version__, outputs, scratch
 from .commands import common as cc
 from .errors import RockingWallError
 
@@ -49,6 +49,7 @@ def main(argv=None):
     or written (a full disk, no permission) one line naming it and exit status 1. What is left is
     a bug and keeps its traceback."""
     argv = sys.argv[1:] if argv is None else list(argv)
+    scratch.reclaim_once()  # the temporary folders killed runs of this program left
     try:
         with outputs.session(), outputs.named_stdout():  # inputs never overwritten; stdout's errors named
             return dispatch(argv)

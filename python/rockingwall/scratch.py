@@ -63,10 +63,17 @@ def make(kind, parent=None):
     if kind not in KINDS:
         raise ValueError(f"{kind!r} is not a temporary-folder kind of this package ({', '.join(KINDS)})")
     parent = os.fspath(parent or tempfile.gettempdir())
+    reclaim_once(parent)
+    return tempfile.mkdtemp(prefix=f"{kind}{os.getpid()}_", dir=parent)
+
+
+def reclaim_once(parent=None):
+    """reclaim() in `parent` (default: the system's temporary folder), once per process: every
+    command calls it as it starts, so what a killed run left goes at the next run of any kind."""
+    parent = os.fspath(parent or tempfile.gettempdir())
     if parent not in _RECLAIMED:
         _RECLAIMED.add(parent)
         reclaim(parent)
-    return tempfile.mkdtemp(prefix=f"{kind}{os.getpid()}_", dir=parent)
 
 
 @contextlib.contextmanager

@@ -71,7 +71,7 @@ def test_finding_temporary_folders_of_killed_processes_are_reclaimed(tmp_path, p
     else:
         keep.pop(next(n for n in keep if n.endswith("_nobody")))
         os.rmdir(next(p for p in private_tmp.iterdir() if p.name.endswith("_nobody")))
-    assert cli("run", rec, "--engine", "fmi2sim", env=env).returncode == 0
+    assert cli("run", rec, env=env).returncode == 0  # any next run: this one makes no folder of its own
     assert sorted(p.name for p in private_tmp.iterdir()) == sorted(keep)
     assert (tmp_path / "target" / "f").read_text() == "x"
 
