@@ -12,7 +12,7 @@ import pandas as pd
 from tqdm import tqdm
 
 from . import ensemble as ens
-from . import intensity, records, robustness
+from . import intensity, outputs, records, robustness
 from .api import simulate
 from .sweep import fragility
 
@@ -27,6 +27,7 @@ def load_records(specs, csv_units):
             out += [records.read_at2(r.path) for r in suites.fema_farfield(suites.fema_cache())]
         else:
             out.append(records.load(spec, units=csv_units))
+            outputs.protect(records.split_spec(spec)[0], "the record")
     names = [r.name for r in out]
     if len(set(names)) != len(names):
         raise ValueError(f"records with the same name: {sorted({n for n in names if names.count(n) > 1})}")

@@ -17,6 +17,9 @@ import numpy as np
 from . import units
 
 QUANTITIES = {"s1": ("m", "peak_s1"), "s2": ("m", "peak_s2"), "F_top": ("N/m", "peak_F_top")}
+# The largest force threshold [N/m]: 100 MN per metre of wall is beyond any wall-to-floor tie (a
+# 10 m masonry wall weighs about 200 kN/m). Displacements are bounded by the wall's height.
+MAX_FORCE = 1e8
 DEFAULTS = ("0.6 Delta_u: s1 >= 0.6*Delta_u", "Delta_u: s1 >= 1.0*Delta_u")
 _FORM = re.compile(r"^\s*(?:(?P<name>[^:]+):)?\s*(?P<q>s1|s2|F_top)\s*>=\s*(?P<value>.+?)\s*$")
 _MULTIPLE = re.compile(r"^(?P<k>[0-9.eE+-]+)\s*\*\s*(?P<ref>Delta_u|b)$")
@@ -61,14 +64,27 @@ def parse(text, wall):
     if multiple:
         if quantity == "F_top":
             raise ValueError(f"limit state {text!r}: a force cannot be a multiple of {multiple.group('ref')}")
-        reference, k = multiple.group("ref"), float(multiple.group("k"))
+        reference = multiple.group("ref")
+        k = units.parse(multiple.group("k"), "1", f"limit state {text!r}")
         threshold = k * (wall.delta_u if reference == "Delta_u" else wall.params["b"])
     else:
         reference, k = None, None
         threshold = units.parse(value, QUANTITIES[quantity][0], quantity)
     if not threshold > 0:
         raise ValueError(f"limit state {text!r}: the threshold must be > 0")
+    check_reachable(text, quantity, threshold, wall)
     return LimitState((m.group("name") or text).strip(), quantity, threshold, k, reference)
+
+
+def check_reachable(text, quantity, threshold, wall):
+    """A threshold no run can reach is a typing error, not a limit state: a displacement beyond the
+    wall's height, a force beyond MAX_FORCE."""
+    if QUANTITIES[quantity][0] == "m" and threshold > wall.params["h"]:
+        raise ValueError(f"limit state {text!r}: {threshold:g} m is beyond the wall's height h = "
+                         f"{wall.params['h']:g} m, which no displacement of the wall reaches")
+    if QUANTITIES[quantity][0] == "N/m" and threshold > MAX_FORCE:
+        raise ValueError(f"limit state {text!r}: {threshold:g} N/m is above {MAX_FORCE:g} N/m, the largest "
+                         "force threshold this program accepts")
 
 
 def parse_all(texts, wall):

@@ -7,12 +7,13 @@ import math
 import numpy as np
 
 from .. import scene_engine
+from ..errors import RockingWallError
 from ..coupling.rules import ENERGY_SHARE_MAX
 
 SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
 
 
-class BuildingError(RuntimeError):
+class BuildingError(RockingWallError, RuntimeError):
     """A run whose numbers cannot be trusted (the energy balance does not close): never a result."""
 
 

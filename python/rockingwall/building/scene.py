@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from .. import paths
+from .. import bounds, paths
 from ..coupling import energy_guard, jacobi, rules
 from ..coupling.slaves import fmi_call
 from ..names import HINGE_LAWS, SUPPORTS, paper_wall
@@ -39,6 +39,7 @@ from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 WALL_OUT = ["s1", "s2", "F_top", "F_base", "energy", "P_ground", "dissipated"]
 FLOOR_OUT = ["u_diaph", "a_diaph", "u_top", "u_floor", "v_floor", "v_diaph", "work_storey", "work_diaph"]
 MAX_STOREYS = 5
+MAX_STEPS = 1e7  # macro steps of one run: each keeps a row of every output
 
 
 @dataclasses.dataclass
@@ -256,14 +257,18 @@ def run(scene, record, t_end, H, order=2, rtol=1e-8, energy_stop=rules.ENERGY_ST
     then only. The run stops with CouplingUnstable (its cause and the remedy in the message) once
     its energy residual passes energy_stop of the input work (None: never; for studies of the
     scheme itself). Any other failure raises CouplingError."""
+    bounds.run_length(0.0, t_end, "the coupled scene's end time")
     if not (math.isfinite(H) and 1e-6 <= H <= t_end):
         raise ValueError(f"macro step {H!r} is outside [1e-6, t_end = {t_end:g}] s")
+    if t_end / H > MAX_STEPS:
+        raise ValueError(f"{t_end:g} s in macro steps of {H:g} s are {t_end / H:.3g} steps, more than {MAX_STEPS:g}: "
+                         "a larger --macro-step or a shorter --t-end")
     if order not in (1, 2):
         raise ValueError(f"coupling order {order!r}: 1 (inputs held) or 2 (inputs ramped)")
     guard = None if energy_stop is None else _guard(scene, H, order, energy_stop)
     history = jacobi.run(scene, record.t, record.ag, t_end, H, order=order, rtol=rtol,
                          read_at_end=lambda slaves: _building_meta(slaves["building"], scene.n_storeys),
-                         prefix="building_scene_", monitor=guard)
+                         monitor=guard)
     rows = [_row(p) for p in history.points]
     r = SceneResult({key: np.asarray([row.get(key, np.nan) for row in rows]) for key in rows[0]})
     r["collapsed_at"] = min(history.fallen.values()) if history.fallen else None

@@ -12,7 +12,10 @@ uncertainty; IDA 'resurrections' reported.
 Records: .AT2 or .csv files, 'elcentro', 'gaussian[:D,T]', or 'fema' (the 44 FEMA P695 far-field
 components). Intensities: --pga (each record scaled to each PGA, g), --sa with --sa-period (to
 each Sa(T, 5 %), g) or --scale (factors on the records as given). Each run lasts its record.
-Writes cases.csv, one IDA plot per record (<record>.png), fragility.png and fragility.csv."""
+Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv and
+manifest.json (the run's files; "complete": true once all are in place). The folder then holds
+this run's files only: those of an earlier assessment it does not write again are removed (unless
+edited since), other files are left alone."""
 import dataclasses
 import sys
 
@@ -21,6 +24,7 @@ from tqdm import tqdm
 from .. import assessment, assessment_building, assessment_report, intensity, limits, records, scenes, units
 from ..api import ENGINES
 from ..names import SUPPORTS
+from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
 
 
@@ -35,9 +39,9 @@ def parser(sub):
     p.add_argument("--csv-units", default="g", choices=list(records.CSV_UNITS),
                    help="units of a CSV record's accelerations (default g)")
     level = p.add_mutually_exclusive_group(required=True)
-    level.add_argument("--pga", type=float, nargs="+", help="target PGAs [g]")
-    level.add_argument("--sa", type=float, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
-    level.add_argument("--scale", type=float, nargs="+", help="factors on the records as given")
+    level.add_argument("--pga", type=cc.intensity_g, nargs="+", help="target PGAs [g]")
+    level.add_argument("--sa", type=cc.intensity_g, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
+    level.add_argument("--scale", type=cc.scale_factor, nargs="+", help="factors on the records as given")
     p.add_argument("--sa-period", type=float, help="T [s] of Sa (e.g. the diaphragm's period); also reported")
     p.add_argument("--kd-values", nargs="+", help="diaphragm stiffnesses (default: the wall's K_d), e.g. 30kN/m/m")
     p.add_argument("--limit", action="append", metavar="'NAME: Q >= VALUE'",
@@ -74,16 +78,24 @@ def main(args):
     study.head.append(f"ensemble: {ensemble.describe()}; FLIPS: the nominal outcome differs in at least 5 % of it"
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
+def output_names(recs):
+    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+
+
     lvs = assessment.levels(recs, args)
     for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
         if message:
             cc.warn(message, args)  # --strict: refused before any run
-    out = cc.output_dir(args.out)
+    out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
+    out.check(output_names(recs))  # before the runs: no output replaces an input
     cases, outcomes = study.run(lvs, ensemble)
     states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
     frag = assessment.fragilities(cases, states, study.column, outcomes)
     im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
-    write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
+    with out:  # the folder holds this run's files only, swapped in when all are written
+        write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
+    print(f"wrote {out.path}/cases.csv, fragility.csv, fragility.png, {MANIFEST} and {len(recs)} IDA plots",
+          file=sys.stderr)
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
                                    args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
@@ -140,12 +152,11 @@ def building_study(args):
 
 def write_files(out, cases, frag, recs, states, im_name, study):
     csv = cases.replace([float("inf"), float("-inf")], float("nan"))  # a collapsed percentile: empty, not inf
-    cc.write_atomic(out / "cases.csv", lambda tmp: csv.to_csv(tmp, index=False, float_format="%.6g"))
-    cc.write_atomic(out / "fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
+    out.write("cases.csv", lambda tmp: csv.to_csv(tmp, index=False, float_format="%.6g"))
+    out.write("fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
     from .. import assessment_plots  # matplotlib: imported when the plots are drawn
     for rec in tqdm(recs, desc="plots", unit="plot", file=sys.stderr, delay=2):
         d = cases[cases.record == rec.name]
-        cc.write_atomic(out / f"{cc.file_stem(rec.name)}.png", lambda tmp, d=d, rec=rec: assessment_plots.ida(
+        out.write(f"{cc.file_stem(rec.name)}.png", lambda tmp, d=d, rec=rec: assessment_plots.ida(
             d, f"{rec.name}: {study.title}", states, im_name, tmp, study.column))
-    cc.write_atomic(out / "fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp, study.column))
-    print(f"wrote {out}/cases.csv, fragility.csv, fragility.png and {len(recs)} IDA plots", file=sys.stderr)
+    out.write("fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp, study.column))

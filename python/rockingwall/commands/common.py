@@ -1,12 +1,10 @@
 """What every command shares: a wall from the command line, a record, errors as one line."""
 import argparse
-import os
 import pathlib
 import sys
-import tempfile
 import warnings
 
-from .. import intensity, records, units
+from .. import bounds, intensity, outputs, records, units
 from ..building.description import DAMPING_DEFAULT, TIE_DEFAULT, Diaphragm
 from ..names import SUPPORTS
 from ..wall import Wall
@@ -117,12 +115,36 @@ def add_record_arguments(parser, many=False):
     parser.add_argument("--csv-units", default="g", choices=list(records.CSV_UNITS),
                         help="units of a CSV record's accelerations (default g)")
     level = parser.add_mutually_exclusive_group()
-    level.add_argument("--scale", type=float, help="factor on the record as given")
-    level.add_argument("--pga", type=float, help="scale the record to this PGA [g]")
+    level.add_argument("--scale", type=scale_factor, help="factor on the record as given (> 0)")
+    level.add_argument("--pga", type=intensity_g, help="scale the record to this PGA [g] (> 0)")
+
+
+def scale_factor(text):
+    """An argparse type: a factor on a record, finite and > 0."""
+    try:
+        return bounds.positive(text, "scale factor")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def intensity_g(text):
+    """An argparse type: a target PGA or Sa [g], finite, > 0 and at most bounds.MAX_AG_G."""
+    try:
+        return bounds.intensity_g(text, "intensity")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def load_record(spec, units="g"):
+    """records.load, the file (if it is one) registered as an input no output may replace."""
+    record = records.load(spec, units=units)
+    path, _ = records.split_spec(spec)
+    outputs.protect(path, "the record")  # a name (elcentro, gaussian) is no file: nothing registered
+    return record
 
 
 def record_from_args(spec, args):
-    record = records.load(spec, units=args.csv_units)
+    record = load_record(spec, units=args.csv_units)
     if args.pga is not None:
         record = record.to_pga(args.pga)
     elif args.scale is not None:
@@ -130,12 +152,15 @@ def record_from_args(spec, args):
     return check_record(record, args)
 
 
-def output_dir(path):
+def output_dir(path, option="--out"):
     """The output folder, created if missing (its parents too); an error if it is a file."""
     out = pathlib.Path(path)
     if out.exists() and not out.is_dir():
-        raise ValueError(f"--out {out}: exists and is not a folder")
-    out.mkdir(parents=True, exist_ok=True)
+        raise ValueError(f"{option} {out}: exists and is not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"{option} {out}: cannot create the folder: {exc.strerror}") from None
     return out
 
 
@@ -145,16 +170,8 @@ def file_stem(name):
 
 
 def write_atomic(path, write):
-    """write(tmp_path) into a temporary file beside `path`, renamed into place when it succeeded."""
-    path = pathlib.Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    os.close(fd)
-    try:
-        write(tmp)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    """outputs.write_atomic: whole or not at all, never over an input, the umask's mode."""
+    return outputs.write_atomic(path, write, "--out")
 
 
 def fail(message, code=2):

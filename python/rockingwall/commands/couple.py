@@ -38,13 +38,14 @@ import sys
 
 import numpy as np
 
-from .. import paths, strict_json
+from .. import outputs, paths, records, strict_json
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
                                        check_options, macro_step, parse_settings, unstable_message,
                                        wall_start_values)
 from ..names import HINGE_LAWS as LAWS
+from .common import scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 
@@ -60,7 +61,7 @@ def parse_args(argv):
     ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
     ap.add_argument("--diaphragm-fmu", help="default: the installed Diaphragm.fmu")
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")
-    ap.add_argument("--scale", type=float, default=0.5)
+    ap.add_argument("--scale", type=scale_factor, default=0.5, help="factor on the record (> 0, default 0.5)")
     ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
     ap.add_argument("--Kd", type=_stiffness, default=1e5,
                     help="wall-to-diaphragm spring, N/m per m of wall, or with a unit (100kN/m/m)")
@@ -132,6 +133,19 @@ def unstable_masters(results, a):
     return None
 
 
+def summary_file(a):
+    return pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
+
+
+def check_files(a):
+    """Before the run: the FMUs and the record are inputs the outputs never replace, and the three
+    outputs are three files."""
+    outputs.protect(a.wall_fmu, "the wall FMU")
+    outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
+    outputs.protect(records.split_spec(a.record)[0], "the record")
+    outputs.check_targets([a.out, a.plot, summary_file(a)], "output")
+
+
 def main(argv=None):
     a = parse_args(argv)
     step_warning = None
@@ -145,6 +159,7 @@ def main(argv=None):
         if a.monolithic and a.master != "fmpy":
             raise ValueError("--monolithic runs one CVODE over both FMUs: it takes no --master")
         check_options(a.t_end, a.macro_step if a.macro_step is not None else min(a.t_end, 1e-3), a.rtol)
+        check_files(a)
         limit, step_warning = resolve_macro_step(a)
         check_options(a.t_end, a.macro_step, a.rtol)
         masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
@@ -169,9 +184,8 @@ def main(argv=None):
     for m in masters:
         report(m, results[m], a)
     info = output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning)
-    summary_path = pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
-    with open(summary_path, "w") as fh:
-        strict_json.dump(info, fh)
+    summary_path = summary_file(a)
+    outputs.write_atomic(summary_path, lambda tmp: strict_json.write(info, tmp), "--summary")
     print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
           f"max |ground work| {info['ground_work_max']:.4g} J/m")
     if not info["energy_ok"]:

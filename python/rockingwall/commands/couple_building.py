@@ -37,12 +37,13 @@ import sys
 
 import numpy as np
 
-from .. import records
+from .. import outputs, records
 from ..building import building_file, cosim, ssp
 from ..building.scene import default_scene, run
 from ..coupling.slaves import CouplingError, CouplingUnstable
 from ..names import HINGE_LAWS
 from ..sweep import suites
+from .common import intensity_g, scale_factor
 
 
 def parse_args(argv):
@@ -59,8 +60,8 @@ def parse_args(argv):
     ap.add_argument("--building", metavar="FILE.toml",
                     help="the building file (docs/your-building.md): the Building FMU's parameters from its storeys, "
                          "a RockingWall FMU per wall (instead of --storeys, --walls, --wall, --Kd, --diaphragm-law)")
-    ap.add_argument("--scale", type=float, default=None, help="multiplies the record (default 0.5)")
-    ap.add_argument("--pga", type=float, default=None, help="scales the record to this PGA [g] instead")
+    ap.add_argument("--scale", type=scale_factor, default=None, help="factor on the record (> 0, default 0.5)")
+    ap.add_argument("--pga", type=intensity_g, default=None, help="scales the record to this PGA [g] instead")
     ap.add_argument("--macro-step", type=float, default=1e-3, help="H [s]")
     ap.add_argument("--t-end", type=float, default=None, help="[s], default the record's duration")
     ap.add_argument("--order", type=int, default=2, choices=[1, 2],
@@ -93,6 +94,11 @@ def main(argv=None):
         if a.example:
             from ..building import example  # scipy and the engine: only the example needs them
             return example.main(a.records_cache or suites.fema_cache())
+        outputs.protect(a.from_ssp, "the --from-ssp file")
+        outputs.protect(a.building, "the building file")
+        outputs.protect(records.split_spec(a.record)[0], "the record")
+        if a.ssp:
+            outputs.check_target(a.ssp, "--ssp")
         if a.limits:
             from ..building import limits
             return limits.main()
@@ -115,9 +121,9 @@ def main(argv=None):
         remedy = f"`rockingwall building {a.building}`" if a.building else "`rockingwall building FILE.toml`"
         print(f"couple-building: error: {str(exc).replace('`rockingwall building FILE.toml`', remedy)}", file=sys.stderr)
         return 1
-    except (ValueError, OSError, CouplingError) as exc:
+    except (ValueError, OSError, CouplingError) as exc:  # refused input: 2; a failed run or file: 1
         print(f"couple-building: error: {exc}", file=sys.stderr)
-        return 1
+        return 2 if isinstance(exc, ValueError) else 1
     for w in scene.walls:
         print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
     e = r.energy_terms()

@@ -9,11 +9,10 @@ import pathlib
 import signal
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
-from .. import strict_json
+from .. import scratch, strict_json
 from . import libcosim, monolithic
 from .slaves import CouplingError
 from .wall_diaphragm import CoupledResult, ground_motion, parse_settings, run_fmpy, wall_start_values
@@ -24,7 +23,7 @@ def run_master_subprocess(master, args_list, out_json):
     ends that process only) with its own temporary folder, removed afterwards with whatever the
     child unpacked, even when it was killed. Returns the CompletedProcess."""
     cmd = [sys.executable, "-m", "rockingwall", "couple", "--master", master, "--json", str(out_json)]
-    with tempfile.TemporaryDirectory(prefix="couple_") as tmp:
+    with scratch.folder("rw_couple_") as tmp:
         return subprocess.run(cmd + list(args_list), capture_output=True, text=True, errors="replace",
                               timeout=1800, env=dict(os.environ, TMPDIR=tmp))
 
@@ -83,7 +82,7 @@ def _passthrough(a):
 
 def run_child(master, a):
     """A master's result, run in a child process; CouplingError with the child's real error."""
-    with tempfile.TemporaryDirectory(prefix="couple_result_") as tmp:
+    with scratch.folder("rw_couple_result_") as tmp:
         out_json = pathlib.Path(tmp) / f"{master}.json"
         proc = run_master_subprocess(master, _passthrough(a), out_json)
         if proc.returncode != 0 or not out_json.exists():

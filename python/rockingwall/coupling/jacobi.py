@@ -31,10 +31,10 @@ fallen) -> {(slave, input): value} (outputs: {slave: {output: value}}, fallen: {
 ground_inputs() -> the (slave, input) pairs that take ag; may_fall(name); and
 jumps_when_a_slave_falls((slave, input)) -> bool."""
 import dataclasses
-import tempfile
 
 import numpy as np
 
+from .. import scratch
 from .slaves import FmuLog, close_slaves, failure, fmi_call, initialise, load_slave
 
 
@@ -76,15 +76,14 @@ class _Slopes:
         return out
 
 
-def run(scene, t_in, ag_in, t_end, H, order=1, rtol=1e-6, progress=None, read_at_end=None, prefix="coupling_",
-        monitor=None):
+def run(scene, t_in, ag_in, t_end, H, order=1, rtol=1e-6, progress=None, read_at_end=None, monitor=None):
     """Load and initialise the scene's slaves (their FMUs unpacked into one temporary folder,
     removed however the run ends), run the scheme of the module's docstring from 0 to t_end with
     macro step H, and free the slaves. progress: a label for a progress bar (None: no bar);
     monitor: see the module's docstring. Returns a History; read_at_end(slaves) is called before
     the slaves are freed."""
     log, slaves = FmuLog(), {}
-    with tempfile.TemporaryDirectory(prefix=prefix) as unzip_root:
+    with scratch.folder("rw_jacobi_") as unzip_root:
         try:
             for name, path, start in scene.slaves():
                 slaves[name] = load_slave(path, name, unzip_root, log)  # listed first: always freed

@@ -6,8 +6,10 @@ Each instance carries what the failure messages need: `vr` (value references by 
 import os
 import sys
 
+from ..errors import RockingWallError
 
-class CouplingError(Exception):
+
+class CouplingError(RockingWallError):
     """A slave failed (the FMU, the FMI call and the FMU's own message) or the run did not reach
     its end: never a silent, shortened result."""
 

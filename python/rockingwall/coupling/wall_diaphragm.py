@@ -192,7 +192,7 @@ def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol
     guard = None if energy_stop is None else energy_guard.EnergyGuard(
         lambda slaves: None, _point_energy, unstable_message(scene.wall, scene.dia, H), energy_stop)
     history = jacobi.run(scene, t_in, ag_in, t_end, H, order=1, rtol=rtol,
-                         progress="fmpy master" if progress else None, prefix="couple_fmus_", monitor=guard)
+                         progress="fmpy master" if progress else None, monitor=guard)
     r = assemble([p.t for p in history.points], [[p.outputs["wall"][x] for x in WALL_OUT] for p in history.points],
                  [[p.outputs["diaphragm"][x] for x in DIA_OUT] for p in history.points])
     r["collapsed_at"] = history.fallen.get("wall")
