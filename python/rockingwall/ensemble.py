@@ -17,7 +17,6 @@ import numpy as np
 
 from . import engine
 from .building import monolithic
-from .building.description import Diaphragm
 
 FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
 TRUNCATE = 3.0
