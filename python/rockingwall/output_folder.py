@@ -15,7 +15,7 @@ import pathlib
 import shutil
 import sys
 
-from . import outputs, scratch
+from . import outputs, scratch, strict_json
 
 MANIFEST = "manifest.json"
 STAGING = ".rockingwall-staging-"
@@ -82,8 +82,8 @@ class OutputFolder:
             shutil.rmtree(self.stage, ignore_errors=True)
 
     def _manifest(self, files, complete):
-        text = json.dumps({"command": self.command, "complete": complete, "files": files}, indent=1) + "\n"
-        outputs.write_atomic(self.path / MANIFEST, lambda tmp: pathlib.Path(tmp).write_text(text), "--out")
+        manifest = {"command": self.command, "complete": complete, "files": files}
+        outputs.write_atomic(self.path / MANIFEST, lambda tmp: strict_json.write(manifest, tmp), "--out")
 
     def _swap(self):
         earlier = read_manifest(self.path)

@@ -72,11 +72,15 @@ def test_finding3_a_record_in_cm_s2_is_read_with_its_unit_or_warned_about(tmp_pa
     assert in_g.splitlines()[-1].split()[1:] == in_cms2.splitlines()[-1].split()[1:]  # same PGA and peaks
     pga = record.pga / 9.81
     assert f"{pga:.3g}" in in_g.splitlines()[-1]  # the record's PGA printed with --scale
-    # the slip: cm/s^2 read as g, PGA about 100 x 9.81 x pga g
-    assert main([*args, str(tmp_path / "pulse_cms2.csv")]) == 0
+    # the slip: cm/s^2 read as g, PGA about 100 x 9.81 x pga g: above 100 g it is refused, units named
+    assert main([*args, str(tmp_path / "pulse_cms2.csv")]) == 2
+    assert "units" in capsys.readouterr().err
+    # a record ten times weaker in cm/s^2, read as g (25 g): it runs with the warning, --strict refuses it
+    write_csv(tmp_path / "weak_cms2.csv", record, 10.0)
+    assert main([*args, str(tmp_path / "weak_cms2.csv")]) == 0
     captured = capsys.readouterr()
-    assert "cm/s^2" in captured.err and f"{100 * 9.81 * pga:.3g} g" in captured.err
-    assert main([*args, "--strict", str(tmp_path / "pulse_cms2.csv")]) == 2
+    assert "cm/s^2" in captured.err and f"{10 * 9.81 * pga:.3g} g" in captured.err
+    assert main([*args, "--strict", str(tmp_path / "weak_cms2.csv")]) == 2
     assert "--strict" in capsys.readouterr().err
 
 

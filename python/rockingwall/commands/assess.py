@@ -70,6 +70,10 @@ class Study:
     column: str
 
 
+def output_names(recs):
+    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+
+
 def main(args):
     if args.sa and not args.sa_period:
         raise ValueError("--sa needs --sa-period")
@@ -78,10 +82,6 @@ def main(args):
     study.head.append(f"ensemble: {ensemble.describe()}; FLIPS: the nominal outcome differs in at least 5 % of it"
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
-def output_names(recs):
-    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
-
-
     lvs = assessment.levels(recs, args)
     for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
         if message:
