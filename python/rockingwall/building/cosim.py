@@ -7,22 +7,23 @@ the ground) by storey springs of RIGID_STOREY_K under floors of RIGID_FLOOR_MASS
 damped by their dashpots (an undamped floor mode of 1e4 rad/s would take the Jacobi exchange's
 negative damping and grow; damped, the floor follows the ground within nanometres); a diaphragm's
 damping ratio by the dashpot beside its spring (cd_i = 2 zeta sqrt(k m)), the in-plane walls' by
-cs_i; no Rayleigh damping. The Bouc-Wen shape is the scene solver's (n = 1, beta = 0.5, no
-pinching), so both run the same law."""
+cs_i; no Rayleigh damping. The Bouc-Wen shape and pinching are the building's
+(description.Building.hysteresis), as the scene solver's, so both run the same law."""
 import math
 
+from .description import FMU_HYSTERESIS_NAMES
 from .scene import Scene, WallSpec
 
 RIGID_STOREY_K = 1e11       # N/m per m: the in-plane walls of a storey taken as rigid
 RIGID_FLOOR_MASS = 1000.0   # kg/m: the floor on them (it moves by F/k: nanometres)
 DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
-SCENE_BOUC_WEN = {"nBW": 1.0, "betaBW": 0.5, "pinchSize": 0.0, "pinchWidth": 1.0, "pinchCentre": 0.0}
 
 
 def building_start_values(building):
     """(Real, Integer) start values of the Building FMU for a description.Building."""
     n = len(building.storeys)
-    real = dict(SCENE_BOUC_WEN, rayleighMass=0.0, rayleighStiffness=0.0)
+    real = {FMU_HYSTERESIS_NAMES[k]: v for k, v in building.hysteresis().items()}
+    real.update(rayleighMass=0.0, rayleighStiffness=0.0)
     for i, s in enumerate(building.storeys, 1):
         d = s.diaphragm
         if not d.stiffness > 0:
