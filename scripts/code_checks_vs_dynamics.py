@@ -50,7 +50,7 @@ def main(argv=None):
     fig = cvd.plot(panels, checks, wall.delta_u, f"{wall.describe(with_kd=False)}; records scaled to PGA {PGA:g} g")
     fig.savefig(a.out, dpi=110)
     print(f"wrote {a.out}", file=sys.stderr)
-    for line in assessment_codes.head_lines(checks)[:-1]:
+    for line in assessment_codes.checks_lines(checks):
         print(line)
     for panel in panels:
         print(f"\n{panel.title}")

@@ -2,21 +2,27 @@
 wall (or parapet) at the site the options describe, as columns of every case, with a flag where a
 code says the wall is fine and the time history says it collapses or passes the code's own limit.
 
-The codes assume stiff diaphragms: their verdict does not change with K_d or with the record, so
-every case of one wall carries the same code columns; the time history is what changes."""
+The codes assume stiff diaphragms: their verdict does not change with K_d or with the record. The
+site's hazard comes from the options (hazard 'site': every case carries the same code columns), or
+from each case's PGA (hazard 'pga': C8's C(0) and NTC's a_g S equal the PGA the record is run at,
+so the code and the time history answer the same ground motion)."""
 import dataclasses
 import math
 
 import numpy as np
+import pandas as pd
+from scipy.optimize import brentq
 
 from . import units
 from .codes import FaceLoadedWall, NtcSite, NzSite, Parapet, TopLoad, asce41, ntc, nzsee
-from .codes.common import PASS
+from .codes.common import PASS, choice
+from .codes.nzs1170 import SHAPE_AT_ZERO, SOILS
 from .names import SUPPORTS
 
 CODES = ("nzsee", "ntc", "asce41")
 LABELS = {"nzsee": "NZSEE C8", "ntc": "NTC 2018", "asce41": "ASCE 41-17"}
 NTC_T1_COEFFICIENT = 0.05   # T1 = 0.05 H^0.75 for masonry buildings (NTC 2018 Eq. 7.3.6; unconfirmed)
+HAZARDS = ("site", "pga")
 
 # option -> (attribute, SI unit for units.parse, default, help); None: derived from the wall (help says how)
 OPTIONS = {
@@ -32,6 +38,8 @@ OPTIONS = {
                    "thickness b - 2 pointing (default 0); the codes only"),
     "--e-base": ("e_base", "m", None, "the base reaction's distance from the centreline [m] (default: the face)"),
     "--e-hinge": ("e_hinge", "m", None, "the hinge reaction's distance from the centreline [m] (default: the face)"),
+    "--code-hazard": ("code_hazard", None, "site", "where the codes' ground motion comes from: 'site' (default: "
+                      "the options below) or 'pga' (each case's PGA is C8's C(0) and NTC's a_g S)"),
     "--nz-Z": ("nz_Z", "1", 0.4, "NZS 1170.5 hazard factor Z (default 0.4)"),
     "--nz-soil": ("nz_soil", None, "C", "NZS 1170.5 site subsoil class A-E (default C)"),
     "--nz-R": ("nz_R", "1", 1.0, "NZS 1170.5 return period factor R (default 1.0, 500 years)"),
@@ -70,11 +78,14 @@ def option_values(args):
 @dataclasses.dataclass(frozen=True)
 class CodeChecks:
     """The requested codes' results on one element; usable: the code's usable displacement at the
-    time history's control point (s1 for a wall, s2 for a parapet) [m], or None (ASCE 41: collapse only)."""
+    time history's control point (s1 for a wall, s2 for a parapet) [m], or None (ASCE 41: collapse
+    only); pga [g]: the case PGA the hazard was set to (None: the options' site)."""
     element: str
     results: dict
     usable: dict
     site: list
+    pga: float = None
+    ntc_ag: float = None
 
     @property
     def codes(self):
@@ -127,11 +138,52 @@ FLAG_OF = {"Z": "--nz-Z", "soil class": "--nz-soil", "R": "--nz-R", "N": "--nz-N
            "e_hinge": "--e-hinge"}
 
 
-def check(wall, codes, values):
-    """CodeChecks of `codes` (a subset of CODES) on the model's wall, values from option_values; a
-    value a code refuses is a ValueError naming its option."""
+def checks_by_hazard(wall, codes, values, pgas=(), given=()):
+    """{None: CodeChecks} at the options' site, or with values['code_hazard'] 'pga' {pga_key(PGA):
+    CodeChecks} for every PGA [g] in pgas; given: the options the user gave (a site's Z or a_g
+    clashes with the hazard 'pga')."""
+    hazard = choice("--code-hazard", values["code_hazard"], HAZARDS)
+    if hazard == "site":
+        return {None: check(wall, codes, values)}
+    clash = [flag for flag in ("--nz-Z", "--ntc-ag") if flag in given]
+    if clash:
+        raise ValueError(f"{clash[0]}: with --code-hazard pga each case's PGA sets the codes' ground motion; "
+                         "give one or the other")
+    return {key: check(wall, codes, values, pga=key) for key in sorted({pga_key(p) for p in pgas})}
+
+
+def nz_Z_for(pga, values):
+    """The hazard factor Z that makes NZS 1170.5's C(0) = C_h(0) Z R N equal `pga` [g]."""
+    soil = choice("soil class", values["nz_soil"], SOILS)
+    z = pga / (SHAPE_AT_ZERO[soil] * values["nz_R"] * values["nz_N"])
+    if not 0 < z <= 0.6 or z * values["nz_R"] > 0.7:
+        raise ValueError(f"--code-hazard pga: PGA {pga:g} g on soil {soil} needs Z = {z:.3g} (R = {values['nz_R']:g}, "
+                         f"N = {values['nz_N']:g}), outside NZS 1170.5's Z <= 0.6, Z R <= 0.7")
+    return z
+
+
+def ntc_ag_for(pga, values):
+    """The a_g [g] whose a_g S (S = S_S S_T, S_S depending on a_g) equals `pga` [g]."""
+    def site(ag):
+        return NtcSite(ag=ag, F0=values["ntc_F0"], Tc_star=values["ntc_Tc"], soil=values["ntc_soil"],
+                       topography=values["ntc_topography"])
+    high = 1.5
+    top = site(high)
+    if pga > high * top.S:
+        raise ValueError(f"--code-hazard pga: PGA {pga:g} g is above a_g S = {high * top.S:.3g} g, NTC 2018's "
+                         f"largest a_g ({high:g} g) on soil {top.soil}")
+    return brentq(lambda ag: ag * site(ag).S - pga, 1e-9, high, xtol=1e-14, rtol=1e-13)
+
+
+def check(wall, codes, values, pga=None):
+    """CodeChecks of `codes` (a subset of CODES) on the model's wall, values from option_values; with
+    pga [g], C8's Z and NTC's a_g set so that C(0) and a_g S equal it. A value a code refuses is a
+    ValueError naming its option."""
     try:
-        return _check(wall, codes, values)
+        if pga is not None:
+            values = dict(values, nz_Z=nz_Z_for(pga, values) if "nzsee" in codes else values["nz_Z"],
+                          ntc_ag=ntc_ag_for(pga, values) if "ntc" in codes else values["ntc_ag"])
+        return dataclasses.replace(_check(wall, codes, values), pga=pga, ntc_ag=values["ntc_ag"])
     except ValueError as exc:
         text = str(exc)
         for name, flag in sorted(FLAG_OF.items(), key=lambda item: -len(item[0])):
@@ -185,11 +237,11 @@ def columns(checks):
     out = {}
     for code, r in checks.results.items():
         if code == "nzsee":
-            out.update(nzsee_delta_i_mm=r.delta_i * 1e3, nzsee_delta_m_mm=r.delta_m * 1e3, nzsee_Tp_s=r.Tp,
+            out.update(nzsee_C0_g=r.C0, nzsee_delta_i_mm=r.delta_i * 1e3, nzsee_delta_m_mm=r.delta_m * 1e3, nzsee_Tp_s=r.Tp,
                        nzsee_C_Hi=r.C_Hi, nzsee_Cp_g=r.Cp, nzsee_demand_mm=r.demand * 1e3, nzsee_nbs=r.nbs,
                        nzsee_verdict=r.verdict)
         elif code == "ntc":
-            out.update(ntc_a0_star_g=r.a0_star / 9.81, ntc_linear_demand_g=r.linear_demand / 9.81,
+            out.update(ntc_ag_g=checks.ntc_ag, ntc_a0_star_g=r.a0_star / 9.81, ntc_linear_demand_g=r.linear_demand / 9.81,
                        ntc_linear_verdict=r.linear_verdict, ntc_du_star_mm=r.du_star * 1e3, ntc_Ts_s=r.Ts,
                        ntc_SDe_mm=r.nonlinear_demand * 1e3, ntc_nonlinear_verdict=r.nonlinear_verdict,
                        ntc_verdict=r.verdict)
@@ -209,21 +261,39 @@ def unconservative(checks, peak_m, collapsed):
     return out
 
 
-def add_to_cases(cases, checks):
-    """cases (assess's DataFrame) with the code columns and <code>_unconservative per row."""
-    out = cases.copy()
-    for name, value in columns(checks).items():
-        out[name] = value
-    peak_column = "peak_s2_mm" if checks.element == "parapet" else "peak_s1_mm"
-    flags = [unconservative(checks, peak / 1e3 if np.isfinite(peak) else math.nan, c)
-             for peak, c in zip(out[peak_column], out["collapsed"])]
-    for code in checks.codes:
-        out[f"{code}_unconservative"] = [f[code] for f in flags]
-    return out
+def pga_key(pga_g):
+    """The key of a case's PGA [g] in the checks per PGA (the same PGA computed twice may differ in
+    its last bits)."""
+    return round(float(pga_g), 9)
 
 
-def head_lines(checks):
-    """The report's lines on the codes: the site, each code's capacity, demand and verdict."""
+def add_to_cases(cases, by_pga):
+    """cases (assess's DataFrame) with the code columns and <code>_unconservative per row; by_pga:
+    {None: CodeChecks} for the options' site, or {pga_key(PGA): CodeChecks} per case PGA."""
+    rows = []
+    for r in cases.to_dict("records"):
+        checks = by_pga[None] if None in by_pga else by_pga[pga_key(r["pga_g"])]
+        peak = r["peak_s2_mm"] if checks.element == "parapet" else r["peak_s1_mm"]
+        flags = unconservative(checks, peak / 1e3 if np.isfinite(peak) else math.nan, r["collapsed"])
+        rows.append({**columns(checks), **{f"{code}_unconservative": flags[code] for code in checks.codes}})
+    extra = pd.DataFrame(rows, index=cases.index)
+    return pd.concat([cases, extra], axis=1)
+
+
+def head_lines(by_pga):
+    """The report's lines on the codes: the site, each code's capacity, demand and verdict (per case
+    PGA with the hazard 'pga')."""
+    lines = []
+    for key, checks in by_pga.items():
+        lines += ([f"code hazard at PGA {key:g} g (each case's):"] if key is not None else []) + checks_lines(checks)
+    lines.append("the codes assume stiff diaphragms: their columns do not change with K_d; UNCONSERVATIVE: the "
+                 "code passes, the time history collapses or passes the code's usable displacement (C8 Delta_m; "
+                 "NTC du* at the control point; ASCE 41 collapse only)")
+    return lines
+
+
+def checks_lines(checks):
+    """The site and each code's capacity, demand and verdict of one CodeChecks."""
     lines = list(checks.site)
     for code, r in checks.results.items():
         if code == "nzsee":
@@ -236,15 +306,17 @@ def head_lines(checks):
                          f"mm against S_De({r.Ts:.2f} s) = {r.nonlinear_demand * 1e3:.1f} mm, {r.nonlinear_verdict}")
         else:
             lines.append(f"ASCE 41-17: h/t = {r.h_over_t:.2f} against {r.limit:g} ({r.band}): {r.verdict}")
-    lines.append("the codes assume stiff diaphragms: their columns do not change with K_d or the record; "
-                 "UNCONSERVATIVE: the code passes, the time history collapses or passes the code's usable "
-                 "displacement (C8 Delta_m; NTC du* at the control point; ASCE 41 collapse only)")
     return lines
 
 
-def to_json(checks):
-    """The checks as plain data: per code every reported quantity, its clauses and notes."""
-    out = {"element": checks.element, "site": checks.site}
+def to_json(by_pga):
+    """The checks as plain data: a list, one per hazard (the options' site, or each case PGA), with
+    per code every reported quantity, its clauses and notes."""
+    return [checks_json(checks) for checks in by_pga.values()]
+
+
+def checks_json(checks):
+    out = {"element": checks.element, "hazard_pga_g": checks.pga, "site": checks.site}
     for code, r in checks.results.items():
         data = dataclasses.asdict(r)
         data["refs"] = [str(ref) for ref in r.refs]

@@ -74,7 +74,7 @@ def test_code_columns_equal_the_procedures_by_hand(tmp_path, e_top):
         assert row.nzsee_delta_i_mm < 230 * (1 + 0.75 * 0.2) / 1.2 - 3
     assert (row.nzsee_verdict, row.ntc_linear_verdict, row.asce41_verdict) == ("fail", "pass", "pass")
     assert row.ntc_nonlinear_verdict == ("pass" if expected["ntc_du_star_mm"] >= expected["ntc_SDe_mm"] else "fail")
-    codes = json.loads((tmp_path / "codes.json").read_text())
+    codes = json.loads((tmp_path / "codes.json").read_text())[0]
     assert codes["nzsee"]["direction"] == "outward"
     assert any(n.startswith("UNCONFIRMED") for n in codes["nzsee"]["notes"])
 
@@ -100,6 +100,29 @@ def test_a_code_passing_a_wall_that_collapses_is_flagged_unconservative(tmp_path
     assert rows[1].endswith(f"| {nbs:.0f} pass | 15.7/16 pass | C8, ASCE 41 |")
 
 
+def test_the_hazard_of_each_case_is_its_pga(tmp_path, capsys):
+    """--code-hazard pga: C8's C(0) and NTC's a_g S equal each case's PGA. By hand: D_ph scales with
+    C(0), so %NBS = (the Z = 0.4, soil C value) x 0.532 / PGA; NTC's linear demand a_g S / q = PGA / 2
+    whatever the soil; soil B at 0.2 g: S_S = 1.2 (1.40 - 0.40 F0 a_g >= 1.2 there), a_g = 0.2/1.2."""
+    assert assess(tmp_path, "--code", "nzsee", "ntc", "--code-hazard", "pga", "--nz-soil", "C",
+                  "--ntc-soil", "B") == 0
+    cases = pd.read_csv(tmp_path / "cases.csv").sort_values("pga_g")
+    hand = by_hand(0.0)
+    for row, pga in zip(cases.to_dict("records"), (0.2, 0.5)):
+        assert row["nzsee_C0_g"] == pytest.approx(pga, rel=1e-5)
+        assert row["nzsee_nbs"] == pytest.approx(hand["nzsee_nbs"] * 0.532 / pga, rel=1e-5)
+        assert row["ntc_linear_demand_g"] == pytest.approx(pga / 2, rel=1e-5)
+    assert cases.ntc_ag_g.iloc[0] == pytest.approx(0.2 / 1.2, rel=1e-5)
+    # at 0.2 g C8 passes (118 %NBS) and the wall stands; at 0.5 g C8 fails (47 %NBS) and it collapses
+    assert list(cases.nzsee_verdict) == ["pass", "fail"] and list(cases.collapsed) == [False, True]
+    assert list(cases.ntc_linear_verdict) == ["pass", "fail"]
+    assert not cases.nzsee_unconservative.any() and not cases.ntc_unconservative.any()
+    out = capsys.readouterr().out
+    assert "code hazard at PGA 0.2 g (each case's):" in out and "code hazard at PGA 0.5 g (each case's):" in out
+    codes = json.loads((tmp_path / "codes.json").read_text())
+    assert [c["hazard_pga_g"] for c in codes] == [0.2, 0.5]
+
+
 def test_without_code_the_table_has_no_code_columns(tmp_path, capsys):
     assert assess(tmp_path, "--table", "md") == 0
     assert "C8 %NBS" not in capsys.readouterr().out
@@ -117,6 +140,10 @@ def test_without_code_the_table_has_no_code_columns(tmp_path, capsys):
     (["--code", "nzsee", "--top-eccentricity", "200mm"], "--top-eccentricity: top load eccentricity = 0.2 m"),
     (["--code", "nzsee", "--attachment-height", "10", "--building-height", "5"], "--attachment-height = 10 m"),
     (["--nz-Z", "0.3"], "--nz-Z is an input of the code checks: give --code too"),
+    (["--code", "nzsee", "--code-hazard", "pga", "--nz-Z", "0.3"], "--nz-Z: with --code-hazard pga"),
+    (["--code", "nzsee", "--code-hazard", "pgv"], "--code-hazard = 'pgv' is not one of site, pga"),
+    (["--code", "nzsee", "--code-hazard", "pga", "--nz-soil", "A", "--nz-R", "0.5"],
+     "--code-hazard pga: PGA 0.5 g on soil A needs Z = 1"),
 ])
 def test_bad_code_options_are_refused_before_any_run(tmp_path, capsys, args, message):
     assert assess(tmp_path / "out", *args) == 2

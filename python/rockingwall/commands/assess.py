@@ -88,13 +88,13 @@ def main(args):
         raise ValueError("--sa needs --sa-period")
     ensemble = cc.ensemble_from_args(args)
     study = building_study(args) if args.building else wall_study(args)
-    codes = code_checks(args, study.wall)
-    if codes is not None:
-        study.head.extend(assessment_codes.head_lines(codes))
     study.head.append(f"ensemble: {ensemble.describe()}; FLIPS: the nominal outcome differs in at least 5 % of it"
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
     lvs = assessment.levels(recs, args)
+    codes = code_checks(args, study.wall, [lv.record.pga / intensity.G for lv in lvs])
+    if codes is not None:
+        study.head.extend(assessment_codes.head_lines(codes))
     for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
         if message:
             cc.warn(message, args)  # --strict: refused before any run
@@ -112,8 +112,9 @@ def main(args):
     return 0  # the report last: a closed pipe cannot lose the files
 
 
-def code_checks(args, wall):
-    """The code checks of --code on the wall (None without it), every option checked before any run."""
+def code_checks(args, wall, pgas):
+    """The code checks of --code on the wall, per hazard (None without --code; assessment_codes.
+    checks_by_hazard), every option checked before any run; pgas [g]: the cases' PGAs."""
     given = [flag for flag, (attr, *_) in assessment_codes.OPTIONS.items() if getattr(args, attr) is not None]
     if not args.code:
         if given:
@@ -122,7 +123,7 @@ def code_checks(args, wall):
     if args.building:
         raise ValueError("--code checks one wall: with --building it is not implemented")
     values = assessment_codes.option_values(args)
-    return assessment_codes.check(wall, args.code, values)
+    return assessment_codes.checks_by_hazard(wall, args.code, values, pgas, given)
 
 
 def _dump_json(data, tmp):
