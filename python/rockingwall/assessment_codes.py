@@ -30,7 +30,8 @@ OPTIONS = {
                             "C8's h_i and the Circolare's z (default 0: a wall at ground level; for a parapet "
                             "the roof)"),
     "--building-height": ("building_height", "m", None, "the building's height h_n (C8) and H (NTC) [m] "
-                          "(default: the attachment height plus the wall's h, a wall in the top storey)"),
+                          "(default: the attachment height plus the wall's h, a wall in the top storey; for a "
+                          "parapet the attachment height, the roof)"),
     "--top-eccentricity": ("top_eccentricity", "m", 0.0, "the top load's eccentricity from the wall's "
                            "centreline, positive toward the inner face (joists bearing on it) [m] (default 0); "
                            "the codes only: the time histories run the model's wall"),
@@ -111,7 +112,9 @@ def heights(wall, values):
     h_i = values["attachment_height"]
     h_n = values["building_height"]
     if h_n is None:
-        h_n = h_i + (0.0 if int(wall.params["support"]) == SUPPORTS["parapet"] else wall.params["h"])
+        parapet = int(wall.params["support"]) == SUPPORTS["parapet"]
+        # a parapet stands on the roof (the building's top) or, at the ground, is the building
+        h_n = (h_i if h_i > 0 else wall.params["h"]) if parapet else h_i + wall.params["h"]
     if not 0.0 <= h_i <= h_n or h_n <= 0.0 or h_n > 300.0:
         raise ValueError(f"--attachment-height = {h_i:g} m and --building-height = {h_n:g} m: need "
                          "0 <= attachment height <= building height <= 300 m, building height > 0")

@@ -174,3 +174,35 @@ def test_parapet_gets_c8s_parapet_check():
     assert r.nbs == pytest.approx(100 * 0.6 * 0.23 / (1.5 * (tp / (2 * math.pi)) ** 2 * cp * G), rel=1e-9)
     with pytest.raises(ValueError, match="parapet check is not implemented"):
         ac.check(wall, ["asce41"], values)
+
+
+def test_parapet_from_the_command_line_is_flagged_where_it_topples(tmp_path):
+    """A 1.2-m parapet of 230-mm brick on the ground at Z = 0.13, soil A: C8 passes it (by hand:
+    Tp = 2 pi sqrt(M / (4B/3)), Cp = 0.13 x 0.5, D_ph = 1.5 (Tp/2 pi)^2 Cp g = 117 mm < Delta_m =
+    138 mm); El Centro at 0.5 g topples it (fmi2sim: the exact engine does not run parapets)."""
+    from rockingwall.cli import main
+    args = ["assess", "elcentro", "--b", "230mm", "--h", "1.2", "--W", "4.968kN/m", "--psi", "0", "--support",
+            "parapet", "--pga", "0.3", "0.5", "--ensemble", "0", "--engine", "fmi2sim", "--code", "nzsee",
+            "--nz-Z", "0.13", "--nz-soil", "A", "--out", str(tmp_path)]
+    assert main(args) == 0
+    cases = pd.read_csv(tmp_path / "cases.csv").sort_values("pga_g")
+    tp = 2 * math.pi * math.sqrt((4968 / (3 * G)) / (4 / 3 * 4968 / (4 * 1.2)))
+    demand = 1.5 * (tp / (2 * math.pi)) ** 2 * 0.13 * 0.5 * G
+    assert tp > 1.5 and cases.nzsee_delta_i_mm.iloc[0] == pytest.approx(230, rel=1e-6)
+    assert cases.nzsee_demand_mm.iloc[0] == pytest.approx(demand * 1e3, rel=1e-5)
+    assert list(cases.nzsee_verdict) == ["pass", "pass"] and list(cases.collapsed) == [False, True]
+    assert list(cases.nzsee_unconservative) == [False, True]
+
+
+def test_a_parapet_is_judged_by_its_top_and_a_wall_by_its_mid_height():
+    """s2 = 150 mm, s1 = 75 mm standing: past C8's Delta_m = 0.6 t = 138 mm at a parapet's top,
+    within Delta_m = 132 mm at a wall's hinge."""
+    from rockingwall import Wall, assessment_codes as ac
+    values = dict(ac.option_values(type("Args", (), {})()), nz_Z=0.13, nz_soil="A")
+    cases = pd.DataFrame([dict(pga_g=0.3, peak_s1_mm=75.0, peak_s2_mm=150.0, collapsed=False)])
+    parapet = Wall.make(b=0.23, h=1.2, W=4968.0, psi=0.0, support="parapet", warn=False)
+    wall = Wall.make(b=0.23, h=3.6, W=14904.0, psi=0.2, support="simplySupported", warn=False)
+    for element, flagged in ((parapet, True), (wall, False)):
+        checks = ac.checks_by_hazard(element, ["nzsee"], values)
+        assert checks[None].results["nzsee"].verdict == "pass"
+        assert ac.add_to_cases(cases, checks).nzsee_unconservative.iloc[0] == flagged
