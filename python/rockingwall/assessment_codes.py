@@ -23,11 +23,12 @@ CODES = ("nzsee", "ntc", "asce41")
 LABELS = {"nzsee": "NZSEE C8", "ntc": "NTC 2018", "asce41": "ASCE 41-17"}
 NTC_T1_COEFFICIENT = 0.05   # T1 = 0.05 H^0.75 for masonry buildings (NTC 2018 Eq. 7.3.6; unconfirmed)
 HAZARDS = ("site", "pga")
+METAVARS = {"m": "LENGTH", "g": "ACCELERATION", "s": "PERIOD", "1": "NUMBER", None: "NAME"}
 
 # option -> (attribute, SI unit for units.parse, default, help); None: derived from the wall (help says how)
 OPTIONS = {
-    "--attachment-height": ("attachment_height", "m", 0.0, "height above the ground of the part's attachment: "
-                            "C8's h_i and the Circolare's z (default 0: a wall at ground level; for a parapet "
+    "--attachment-height": ("attachment_height", "m", 0.0, "height above the ground of the part's attachment "
+                            "[m]: C8's h_i and the Circolare's z (default 0: a wall at ground level; for a parapet "
                             "the roof)"),
     "--building-height": ("building_height", "m", None, "the building's height h_n (C8) and H (NTC) [m] "
                           "(default: the attachment height plus the wall's h, a wall in the top storey; for a "
@@ -200,39 +201,51 @@ def _check(wall, codes, values):
     if unknown or not codes:
         raise ValueError(f"--code {' '.join(unknown)}: one or more of {', '.join(CODES)}")
     element = element_of(wall, values)
-    parapet = isinstance(element, Parapet)
     h_i, h_n = heights(wall, values)
     results, usable, site = {}, {}, [f"codes at height {h_i:g} m of a {h_n:g}-m building"]
     for code in dict.fromkeys(codes):
-        if code == "nzsee":
-            nz = NzSite(Z=values["nz_Z"], soil=values["nz_soil"], R=values["nz_R"], N=values["nz_N"])
-            fn = nzsee.check_parapet if parapet else nzsee.check_wall
-            results[code] = fn(element, nz, h_i=h_i, h_n=h_n, Rp=values["nz_Rp"])
-            usable[code] = results[code].delta_m
-            site.append(f"NZSEE C8 site: Z = {nz.Z:g}, soil {nz.soil}, R = {nz.R:g}, N = {nz.N:g}, "
-                        f"R_p = {values['nz_Rp']:g}, C(0) = {nz.C0:.3g} g")
-        elif code == "ntc":
-            it = NtcSite(ag=values["ntc_ag"], F0=values["ntc_F0"], Tc_star=values["ntc_Tc"],
-                         soil=values["ntc_soil"], topography=values["ntc_topography"])
-            floor = {}
-            if h_i > 0:
-                t1 = values["ntc_T1"] if values["ntc_T1"] is not None else NTC_T1_COEFFICIENT * h_n ** 0.75
-                floor = dict(z=h_i, H=h_n, T1=t1)
-            r = ntc.check_mechanism(element, it, FC=values["ntc_FC"], q=values["ntc_q"], **floor)
-            results[code] = r
-            usable[code] = r.du_star * element.mechanism(r.direction).delta_i / r.d0_star  # du* at the control point
-            site.append(f"NTC 2018 site: a_g = {it.ag:g} g, F0 = {it.F0:g}, T*_C = {it.Tc_star:g} s, soil "
-                        f"{it.soil}, {it.topography}, S = {it.S:.3g}, FC = {values['ntc_FC']:g}, q = {values['ntc_q']:g}"
-                        + (f", floor spectrum with T1 = {floor['T1']:.3g} s" if floor else ""))
-        else:
-            if parapet:
-                raise ValueError("--code asce41: ASCE 41's h/t table is for walls between floors; its parapet "
-                                 "check is not implemented")
-            storey = asce_storey(wall, values, h_i, h_n)
-            results[code] = asce41.check_wall(wall.params["h"], element.t, storey, values["asce_SX1"])
-            usable[code] = None
-            site.append(f"ASCE 41-17: S_X1 = {values['asce_SX1']:g} g, {storey.replace('_', ' ')}")
-    return CodeChecks("parapet" if parapet else "wall", results, usable, site)
+        results[code], usable[code], line = CHECKS[code](wall, element, values, h_i, h_n)
+        site.append(line)
+    return CodeChecks("parapet" if isinstance(element, Parapet) else "wall", results, usable, site)
+
+
+def _nzsee(wall, element, values, h_i, h_n):
+    """(result, usable displacement, site line) of C8's wall or parapet check."""
+    nz = NzSite(Z=values["nz_Z"], soil=values["nz_soil"], R=values["nz_R"], N=values["nz_N"])
+    fn = nzsee.check_parapet if isinstance(element, Parapet) else nzsee.check_wall
+    r = fn(element, nz, h_i=h_i, h_n=h_n, Rp=values["nz_Rp"])
+    return r, r.delta_m, (f"NZSEE C8 site: Z = {nz.Z:g}, soil {nz.soil}, R = {nz.R:g}, N = {nz.N:g}, "
+                          f"R_p = {values['nz_Rp']:g}, C(0) = {nz.C0:.3g} g")
+
+
+def _ntc(wall, element, values, h_i, h_n):
+    """(result, usable displacement, site line) of the Circolare's kinematic checks; above the
+    ground with the floor spectrum."""
+    it = NtcSite(ag=values["ntc_ag"], F0=values["ntc_F0"], Tc_star=values["ntc_Tc"],
+                 soil=values["ntc_soil"], topography=values["ntc_topography"])
+    floor = {}
+    if h_i > 0:
+        t1 = values["ntc_T1"] if values["ntc_T1"] is not None else NTC_T1_COEFFICIENT * h_n ** 0.75
+        floor = dict(z=h_i, H=h_n, T1=t1)
+    r = ntc.check_mechanism(element, it, FC=values["ntc_FC"], q=values["ntc_q"], **floor)
+    usable = r.du_star * element.mechanism(r.direction).delta_i / r.d0_star  # du* at the control point
+    line = (f"NTC 2018 site: a_g = {it.ag:.4g} g, F0 = {it.F0:g}, T*_C = {it.Tc_star:g} s, soil {it.soil}, "
+            f"{it.topography}, S = {it.S:.3g}, FC = {values['ntc_FC']:g}, q = {values['ntc_q']:g}"
+            + (f", floor spectrum with T1 = {floor['T1']:.3g} s" if floor else ""))
+    return r, usable, line
+
+
+def _asce41(wall, element, values, h_i, h_n):
+    """(result, None: no usable displacement, site line) of ASCE 41's h/t check."""
+    if isinstance(element, Parapet):
+        raise ValueError("--code asce41: ASCE 41's h/t table is for walls between floors; its parapet "
+                         "check is not implemented")
+    storey = asce_storey(wall, values, h_i, h_n)
+    r = asce41.check_wall(wall.params["h"], element.t, storey, values["asce_SX1"])
+    return r, None, f"ASCE 41-17: S_X1 = {values['asce_SX1']:g} g, {storey.replace('_', ' ')}"
+
+
+CHECKS = {"nzsee": _nzsee, "ntc": _ntc, "asce41": _asce41}
 
 
 def columns(checks):

@@ -65,8 +65,8 @@ def add_code_arguments(p):
                    help="add each code's capacity, demand and verdict to every case: nzsee (NZSEE C8 with "
                         "NZS 1170.5; a parapet's check for --support parapet), ntc (NTC 2018, Circolare C8.7.1), "
                         "asce41 (ASCE 41-17 h/t); writes codes.json")
-    for flag, (attr, _, _, text) in assessment_codes.OPTIONS.items():
-        g.add_argument(flag, dest=attr, help=text)
+    for flag, (attr, unit, _, text) in assessment_codes.OPTIONS.items():
+        g.add_argument(flag, dest=attr, metavar=assessment_codes.METAVARS[unit], help=text)
 
 
 @dataclasses.dataclass
