@@ -6,6 +6,9 @@ import math
 
 COLUMNS = ("record", "PGA [g]", "Sa [g]", "case", "peak s1 [mm]", "peak s2 [mm]", "s1/0.6Δu",
            "limit states reached", "P(collapse)", "s1 16/50/84 % [mm]", "flag")
+# the code checks' columns (assess --code), each shown when its code was checked
+CODE_COLUMNS = ("C8 %NBS", "NTC lin/nonlin", "ASCE 41 h/t", "code unconservative")
+CODE_NAMES = {"nzsee": "C8", "ntc": "NTC", "asce41": "ASCE 41"}
 
 
 def _number(x, fmt):
@@ -33,7 +36,22 @@ def cells(row):
             "s1/0.6Δu": "-" if collapsed else _number(row["s1_over_0.6Delta_u"], ".2f"),
             "limit states reached": ", ".join(row["reached"]) or "none",
             "P(collapse)": _number(row.get("collapse_probability"), ".2f"), "s1 16/50/84 % [mm]": spread,
-            "flag": "FLIPS" if row.get("flips") else ""}
+            "flag": "FLIPS" if row.get("flips") else "", **code_cells(row)}
+
+
+def code_cells(row):
+    """The code checks' cells of a row with assess --code's columns (nothing without them)."""
+    out = {}
+    if row.get("nzsee_verdict") is not None:
+        out["C8 %NBS"] = f"{_number(row['nzsee_nbs'], '.0f')} {row['nzsee_verdict']}"
+    if row.get("ntc_verdict") is not None:
+        out["NTC lin/nonlin"] = f"{row['ntc_linear_verdict']}/{row['ntc_nonlinear_verdict']}"
+    if row.get("asce41_verdict") is not None:
+        out["ASCE 41 h/t"] = f"{_number(row['asce41_h_over_t'], '.1f')}/{row['asce41_limit']:g} {row['asce41_verdict']}"
+    if out:
+        flagged = [name for code, name in CODE_NAMES.items() if row.get(f"{code}_unconservative")]
+        out["code unconservative"] = ", ".join(flagged) if flagged else "none"
+    return out
 
 
 def _columns(rows, sa_period):
@@ -42,7 +60,8 @@ def _columns(rows, sa_period):
         drop.add("Sa [g]")
     if all(not r.get("case") for r in rows):
         drop.add("case")
-    return [c for c in COLUMNS if c not in drop]
+    codes = [c for c in CODE_COLUMNS if any(c in code_cells(r) for r in rows)]
+    return [c for c in COLUMNS if c not in drop] + codes
 
 
 def _title(column, sa_period):

@@ -15,6 +15,8 @@ _SPELLINGS = {
     "rad/s": {"rad/s": 1.0},
     "kg/m": {"kg/m": 1.0, "t/m": 1e3},
     "N/m3": {"n/m3": 1.0, "kn/m3": 1e3},
+    "g": {"g": 1.0, "m/s/s": 1.0 / 9.81},   # an acceleration as a fraction of g (the codes' hazard)
+    "s": {"s": 1.0, "ms": 1e-3},
 }
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 

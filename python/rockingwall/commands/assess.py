@@ -12,16 +12,18 @@ uncertainty; IDA 'resurrections' reported.
 Records: .AT2 or .csv files, 'elcentro', 'gaussian[:D,T]', or 'fema' (the 44 FEMA P695 far-field
 components). Intensities: --pga (each record scaled to each PGA, g), --sa with --sa-period (to
 each Sa(T, 5 %), g) or --scale (factors on the records as given). Each run lasts its record.
-Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv and
-manifest.json (the run's files; "complete": true once all are in place). The folder then holds
-this run's files only: those of an earlier assessment it does not write again are removed (unless
-edited since), other files are left alone."""
+--code nzsee ntc asce41 adds each code's capacity, demand and verdict to every case (docs/codes.md).
+Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv (codes.json
+with --code) and manifest.json (the run's files; "complete": true once all are in place). The
+folder then holds this run's files only: those of an earlier assessment it does not write again are
+removed (unless edited since), other files are left alone."""
 import dataclasses
 import sys
 
 from tqdm import tqdm
 
-from .. import assessment, assessment_building, assessment_report, intensity, limits, records, scenes, units
+from .. import (assessment, assessment_building, assessment_codes, assessment_report, intensity, limits, records,
+               scenes, strict_json, units)
 from ..api import ENGINES
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
@@ -54,24 +56,39 @@ def parser(sub):
     p.add_argument("--out", default="results/assess", help="output folder (created if missing)")
     cc.add_ensemble_arguments(p, default=100)
     cc.add_strict_argument(p)
+    add_code_arguments(p)
     p.set_defaults(command=main)
     return p
+
+
+def add_code_arguments(p):
+    g = p.add_argument_group("code checks beside the time histories (docs/codes.md; values with units, "
+                             "e.g. '5.8m', '0.25g', '0.3s')")
+    g.add_argument("--code", nargs="+", choices=assessment_codes.CODES, metavar="CODE",
+                   help="add each code's capacity, demand and verdict to every case: nzsee (NZSEE C8 with "
+                        "NZS 1170.5; a parapet's check for --support parapet), ntc (NTC 2018, Circolare C8.7.1), "
+                        "asce41 (ASCE 41-17 h/t); writes codes.json")
+    for flag, (attr, unit, _, text) in assessment_codes.OPTIONS.items():
+        g.add_argument(flag, dest=attr, metavar=assessment_codes.METAVARS[unit], help=text)
 
 
 @dataclasses.dataclass
 class Study:
     """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
-    storey for a building), the report's head lines, the scene, the plots' title, the group column."""
+    storey for a building), the report's head lines, the scene, the plots' title, the group column,
+    the wall (None for a building)."""
     run: object
     states: list
     head: list
     scene_text: str
     title: str
     column: str
+    wall: object = None
 
 
-def output_names(recs):
-    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+def output_names(recs, codes):
+    names = ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+    return names + (["codes.json"] if codes is not None else [])
 
 
 def main(args):
@@ -83,22 +100,43 @@ def main(args):
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
     lvs = assessment.levels(recs, args)
+    codes = code_checks(args, study.wall, [lv.record.pga / intensity.G for lv in lvs])
+    if codes is not None:
+        study.head.extend(assessment_codes.head_lines(codes))
     for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
         if message:
             cc.warn(message, args)  # --strict: refused before any run
     out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
-    out.check(output_names(recs))  # before the runs: no output replaces an input
+    out.check(output_names(recs, codes))  # before the runs: no output replaces an input
     cases, outcomes = study.run(lvs, ensemble)
+    if codes is not None:
+        cases = assessment_codes.add_to_cases(cases, codes)
     states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
     frag = assessment.fragilities(cases, states, study.column, outcomes)
     im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
     with out:  # the folder holds this run's files only, swapped in when all are written
         write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
+        if codes is not None:
+            out.write("codes.json", lambda tmp: strict_json.write(assessment_codes.to_json(codes), tmp))
     print(f"wrote {out.path}/cases.csv, fragility.csv, fragility.png, {MANIFEST} and {len(recs)} IDA plots",
           file=sys.stderr)
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
                                    args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
+
+
+def code_checks(args, wall, pgas):
+    """The code checks of --code on the wall, per hazard (None without --code; assessment_codes.
+    checks_by_hazard), every option checked before any run; pgas [g]: the cases' PGAs."""
+    given = [flag for flag, (attr, *_) in assessment_codes.OPTIONS.items() if getattr(args, attr) is not None]
+    if not args.code:
+        if given:
+            raise ValueError(f"{given[0]} is an input of the code checks: give --code too")
+        return None
+    if args.building:
+        raise ValueError("--code checks one wall: with --building it is not implemented")
+    values = assessment_codes.option_values(args)
+    return assessment_codes.checks_by_hazard(wall, args.code, values, pgas, given)
 
 
 def wall_study(args):
@@ -127,7 +165,7 @@ def wall_study(args):
 
     def run(lvs, ensemble):
         return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
-    return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN)
+    return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall)
 
 
 def building_study(args):
