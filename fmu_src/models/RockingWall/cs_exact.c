@@ -117,6 +117,23 @@ static int step_over_record(rw_data *S, rw_engine *engine, const rw_linear_input
     }
 }
 
+/* Without agFile the FMU sees only the master's ag: warn once when the master holds a changing ag
+ * (no derivative) over a step longer than RW_HELD_AG_STEP, for a record held so is step-wise */
+static void warn_held_ag(rw_data *S, double t, double h, double ag_slope, const fmu_logger *log)
+{
+    char buf[512];
+    const int changed = S->stepped && S->ag_input != S->ag_step_end;
+    S->stepped = 1;
+    if (S->record || S->held_ag_warned || ag_slope != 0.0 || !changed || !(h > RW_HELD_AG_STEP * (1 + 1e-9))) return;
+    S->held_ag_warned = 1;
+    if (!log || !log->warning) return;
+    snprintf(buf, sizeof buf, "the input ag is held over a communication step of %g s (from t = %.9g s) and changes "
+             "between steps: a ground-motion record held over steps longer than %g s loses its peaks. Give the record "
+             "as agFile (the FMU then follows it exactly), or take steps no longer than its sample interval "
+             "(fmpy: output_interval)", h, t, RW_HELD_AG_STEP);
+    log->warning(log->ctx, buf);
+}
+
 int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const double *slope, size_t n_in,
                   const fmu_logger *log, double *t_reached, char *msg, size_t n)
 {
@@ -130,6 +147,8 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
         S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
         if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */
     }
+    warn_held_ag(S, t, h, slope_of(RW_VR_ag, slope_vr, slope, n_in), log);
+    S->ag_step_end = S->ag_input + slope_of(RW_VR_ag, slope_vr, slope, n_in) * h; /* as the CVODE path leaves it */
     if (S->engine_state < 0) return FMU_NOT_EXACT;
     *t_reached = t;
     S->log = log;

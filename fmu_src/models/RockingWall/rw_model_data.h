@@ -12,6 +12,10 @@
  * time event that requests terminateSimulation */
 #define RW_TERMINATE_DELAY 1e-6
 
+/* A master that holds a changing ag over communication steps longer than this [s] gets a warning
+ * (once): an accelerogram held over coarse steps loses its peaks. The DefaultExperiment's stepSize. */
+#define RW_HELD_AG_STEP 0.005
+
 /* the longest agFile this FMU takes, with its terminating zero */
 #define RW_AG_FILE_MAX 1024
 
@@ -32,6 +36,10 @@ typedef struct {
     double ag_scale;
     double ag_input;
     int initialized; /* exit_init read the record (if any): an FMU state must then fit it */
+    /* Co-Simulation without agFile: ag where the last step left it, and whether the warning about
+     * a changing ag held over long steps was given (cs_exact.c) */
+    int stepped, held_ag_warned;
+    double ag_step_end;
     rw_ground_motion *record; /* NULL without agFile; the instance's, not an FMU state's (rw_model.c) */
     /* for messages from the physics: the logger and the time of the current event */
     const fmu_logger *log;
