@@ -74,6 +74,7 @@ static void hostile_files(void)
     refused("gmr_units.AT2", "a\nb\nCM/S/S\nNPTS= 3, DT= 0.01\n0 0 0\n", "gmr_units.AT2:3:", "in G");
     refused("gmr_more.AT2", "a\nb\nG\nNPTS= 2, DT= 0.01\n0 0 0\n", "gmr_more.AT2:5:", "more values than NPTS = 2");
     refused("gmr_absent.csv", NULL, "gmr_absent.csv", "cannot open");
+    refused(".", NULL, ".:1:", "cannot read"); /* a folder: fopen succeeds, reading fails */
 }
 
 static void interpolation(void)

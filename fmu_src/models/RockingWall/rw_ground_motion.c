@@ -27,7 +27,10 @@ static int next_line(reader *r, char *err, size_t n)
 {
     const unsigned char *p;
     size_t len;
-    if (!fgets(r->line, sizeof r->line, r->f)) return 0;
+    if (!fgets(r->line, sizeof r->line, r->f)) {
+        if (!ferror(r->f)) return 0;
+        return snprintf(err, n, "%s:%ld: cannot read: %s", r->path, r->lineno + 1, strerror(errno)), -1;
+    }
     r->lineno++;
     len = strlen(r->line);
     if (len + 1 == sizeof r->line && r->line[len - 1] != '\n' && !feof(r->f))
