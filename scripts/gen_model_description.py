@@ -40,7 +40,7 @@ MODELS = {
                  "rw_events.c", "rw_engine_indicators.c", "rw_engine_search.c", "rw_engine_peaks.c",
                  "rw_engine_events.c", "rw_engine_resolve.c", "rw_engine_band.c", "rw_engine_stepper.c",
                  "rw_engine_object.c", "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c",
-                 "cs_exact.c"] + SHARED_SOURCES,
+                 "cs_exact.c", "rw_ground_motion.c"] + SHARED_SOURCES,
         log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
     "Diaphragm": dict(
         header=MODELS_DIR / "Diaphragm" / "diaphragm_variables.h",
@@ -192,6 +192,8 @@ def _fmt_start(v):
         return repr(float(value))
     if v["type"] == "Integer":
         return str(int(float(value)))
+    if v["type"] == "String":
+        return escape(value, {chr(34): "&quot;"})
     return "true" if float(value) != 0 else "false"
 
 
@@ -281,7 +283,7 @@ def generate(name="RockingWall"):
     return "\n".join(out) + "\n"
 
 
-FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean"}
+FMI3_TYPES = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
 
 
 def _fmi3_variable(v):
@@ -300,6 +302,8 @@ def _fmi3_variable(v):
             attrs += f' derivative="{v["derivative_of"]}"'
     if "min" in v:
         attrs += f' min="{_fmt_number(v["min"], v["type"])}" max="{_fmt_number(v["max"], v["type"])}"'
+    if v["type"] == "String":  # FMI 3.0: a String's start value is a <Start> element
+        return f'    <String {attrs}><Start value="{_fmt_start(v)}"/></String>'
     if v["initial"] != "calculated":
         attrs += f' start="{_fmt_start(v)}"'
     return f'    <{FMI3_TYPES[v["type"]]} {attrs}/>'

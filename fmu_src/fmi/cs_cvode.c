@@ -47,6 +47,7 @@ static void apply_inputs(cs_solver *s, double t)
 {
     char unused[8];
     size_t i;
+    if (s->model->set_time) s->model->set_time(s->M, t); /* inputs of the model's own (a record) first */
     for (i = 0; i < s->n_in; i++)
         s->model->set_real(s->M, s->in[i].vr, s->in[i].value + s->in[i].slope * (t - s->t_in), unused, sizeof unused);
 }

@@ -93,7 +93,7 @@ static const fmu_api FMI2 = {
     .prefix = "fmi2",
     .state_names = {"instantiated", "initializationMode", "eventMode", "continuousTimeMode", "terminated", "error",
                     "instantiated", "initializationMode", "eventMode", "stepComplete", "terminated", "error"},
-    .type_names = {"Real", "Integer", "Boolean"},
+    .type_names = {"Real", "Integer", "Boolean", "String"},
     .vr_argument = "vr",
     .values_argument = "value",
     .nx_argument = "nx",
@@ -229,9 +229,12 @@ fmi2Status fmi2GetBoolean(fmi2Component instance, const fmi2ValueReference vr[],
 
 fmi2Status fmi2GetString(fmi2Component instance, const fmi2ValueReference vr[], size_t nvr, fmi2String value[])
 {
+    size_t i;
     ENTER(fmi2GetString);
-    (void)value;
-    LEAVE(fmu_no_such_type(S, "String", vr, nvr));
+    if (!fmu_has_strings(S)) LEAVE(fmu_no_such_type(S, "String", vr, nvr));
+    REQUIRE_OK(fmu_check_vrs(S, vr, nvr, value, FMU_STRING));
+    for (i = 0; i < nvr; i++) value[i] = fmu_get_string(S, vr[i]);
+    LEAVE(FMU_OK);
 }
 
 fmi2Status fmi2SetReal(fmi2Component instance, const fmi2ValueReference vr[], size_t nvr, const fmi2Real value[])
@@ -263,9 +266,12 @@ fmi2Status fmi2SetBoolean(fmi2Component instance, const fmi2ValueReference vr[],
 
 fmi2Status fmi2SetString(fmi2Component instance, const fmi2ValueReference vr[], size_t nvr, const fmi2String value[])
 {
+    size_t i;
     ENTER(fmi2SetString);
-    (void)value;
-    LEAVE(fmu_no_such_type(S, "String", vr, nvr));
+    if (!fmu_has_strings(S)) LEAVE(fmu_no_such_type(S, "String", vr, nvr));
+    REQUIRE_OK(fmu_check_vrs(S, vr, nvr, value, FMU_STRING));
+    for (i = 0; i < nvr; i++) REQUIRE_OK(fmu_set_string(S, vr[i], value[i]));
+    LEAVE(FMU_OK);
 }
 
 /* ---- FMU state (canGetAndSetFMUstate, canSerializeFMUstate) -------------------------------- */

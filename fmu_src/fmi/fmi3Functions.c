@@ -89,7 +89,7 @@ static const fmu_api FMI3 = {
     .prefix = "fmi3",
     .state_names = {"Instantiated", "InitializationMode", "EventMode", "ContinuousTimeMode", "Terminated", "error",
                     "Instantiated", "InitializationMode", "EventMode", "StepMode", "Terminated", "error"},
-    .type_names = {"Float64", "Int32", "Boolean"},
+    .type_names = {"Float64", "Int32", "Boolean", "String"},
     .vr_argument = "valueReferences",
     .values_argument = "values",
     .nx_argument = "nContinuousStates",
@@ -302,6 +302,28 @@ fmi3Status fmi3SetBoolean(fmi3Instance instance, const fmi3ValueReference valueR
     LEAVE(FMU_OK);
 }
 
+fmi3Status fmi3GetString(fmi3Instance instance, const fmi3ValueReference valueReferences[], size_t nValueReferences,
+                         fmi3String values[], size_t nValues)
+{
+    size_t i;
+    ENTER_AS("fmi3GetString", MASK_fmi3GetOtherType);
+    if (!fmu_has_strings(S)) LEAVE(fmu_no_such_type(S, "String", valueReferences, nValueReferences));
+    REQUIRE_OK(scalars(S, valueReferences, nValueReferences, values, nValues, FMU_STRING));
+    for (i = 0; i < nValueReferences; i++) values[i] = fmu_get_string(S, valueReferences[i]);
+    LEAVE(FMU_OK);
+}
+
+fmi3Status fmi3SetString(fmi3Instance instance, const fmi3ValueReference valueReferences[], size_t nValueReferences,
+                         const fmi3String values[], size_t nValues)
+{
+    size_t i;
+    ENTER_AS("fmi3SetString", MASK_fmi3SetOtherType);
+    if (!fmu_has_strings(S)) LEAVE(fmu_no_such_type(S, "String", valueReferences, nValueReferences));
+    REQUIRE_OK(scalars(S, valueReferences, nValueReferences, values, nValues, FMU_STRING));
+    for (i = 0; i < nValueReferences; i++) REQUIRE_OK(fmu_set_string(S, valueReferences[i], values[i]));
+    LEAVE(FMU_OK);
+}
+
 /* ---- the types, clocks and features the models do not have -------------------------------- */
 
 /* A getter or setter of a type no variable of this FMU has: every value reference is unknown for
@@ -330,7 +352,6 @@ NO_SUCH_GETTER(UInt16, fmi3UInt16)
 NO_SUCH_GETTER(UInt32, fmi3UInt32)
 NO_SUCH_GETTER(Int64, fmi3Int64)
 NO_SUCH_GETTER(UInt64, fmi3UInt64)
-NO_SUCH_GETTER(String, fmi3String)
 NO_SUCH_SETTER(Float32, fmi3Float32)
 NO_SUCH_SETTER(Int8, fmi3Int8)
 NO_SUCH_SETTER(UInt8, fmi3UInt8)
@@ -339,7 +360,6 @@ NO_SUCH_SETTER(UInt16, fmi3UInt16)
 NO_SUCH_SETTER(UInt32, fmi3UInt32)
 NO_SUCH_SETTER(Int64, fmi3Int64)
 NO_SUCH_SETTER(UInt64, fmi3UInt64)
-NO_SUCH_SETTER(String, fmi3String)
 
 fmi3Status fmi3GetBinary(fmi3Instance instance, const fmi3ValueReference valueReferences[], size_t nValueReferences,
                          size_t valueSizes[], fmi3Binary values[], size_t nValues)

@@ -201,6 +201,7 @@ void fmu_state_write(const fmu_core *core, void *block)
     make_header(core, &h);
     memcpy(block, &h, sizeof h);
     memcpy(p, core->M, core->model.data_size);
+    memset(p + core->model.instance_offset, 0, core->model.instance_size); /* the instance's, not the state's */
     p += core->model.data_size;
     for (k = 0; k < core->n_inputs; k++, p += sizeof(double)) memcpy(p, &core->inputs[k].slope, sizeof(double));
     if (core->cs) cs_get_state(core->cs, p);
@@ -256,8 +257,9 @@ int fmu_state_check(const fmu_core *core, const void *block, size_t n, char *msg
     return 0;
 }
 
-/* Can the instance take this compatible state now (same interface type, same phase)? */
-static int applicable(const fmu_core *core, const state_header *h, char *msg, size_t msg_n)
+/* Can the instance take this compatible state now (same interface type, same phase, what the
+ * model holds outside its states)? data: the model's data in the state. */
+static int applicable(const fmu_core *core, const state_header *h, const void *data, char *msg, size_t msg_n)
 {
     state_header mine;
     make_header(core, &mine);
@@ -271,7 +273,18 @@ static int applicable(const fmu_core *core, const state_header *h, char *msg, si
     if (h->solver_size != mine.solver_size)
         return snprintf(msg, msg_n, "the FMU state's integrator part has %llu bytes, expected %llu", h->solver_size,
                         mine.solver_size), 1;
+    if (core->model.state_fits && core->model.state_fits(core->M, data, msg, msg_n))
+        return 1;
     return 0;
+}
+
+/* The model's data from a state, but for the part that belongs to the instance (fmu_model.h). */
+static void restore_data(fmu_core *core, const unsigned char *data)
+{
+    unsigned char *const M = (unsigned char *)core->M;
+    const size_t at = core->model.instance_offset, n = core->model.instance_size;
+    memcpy(M, data, at);
+    memcpy(M + at + n, data + at + n, core->model.data_size - at - n);
 }
 
 int fmu_state_read(fmu_core *core, const void *block, char *msg, size_t msg_n)
@@ -281,10 +294,10 @@ int fmu_state_read(fmu_core *core, const void *block, char *msg, size_t msg_n)
     size_t k;
     if (fmu_state_check(core, block, fmu_state_bytes(block), msg, msg_n)) return 1;
     memcpy(&h, block, sizeof h);
-    if (applicable(core, &h, msg, msg_n)) return 1;
+    if (applicable(core, &h, p, msg, msg_n)) return 1;
     if (core->cs && cs_set_state(core->cs, p + h.data_size + h.n_inputs * sizeof(double), (size_t)h.solver_size, msg, msg_n))
         return 1;
-    memcpy(core->M, p, core->model.data_size);
+    restore_data(core, p);
     p += core->model.data_size;
     for (k = 0; k < core->n_inputs; k++, p += sizeof(double)) memcpy(&core->inputs[k].slope, p, sizeof(double));
     core->time = h.time;

@@ -65,6 +65,7 @@ void fmu_reset(fmu_instance *I)
     I->core.terminated = 0;
     I->core.initialized = 0;
     I->core.time = 0.0;
+    if (I->core.model.release) I->core.model.release(I->core.M);
     I->core.model.reset(I->core.M);
     I->state = PHASE(I, INSTANTIATED);
 }
@@ -143,6 +144,7 @@ fmu_status fmu_set_time(fmu_instance *I, double time)
 {
     if (!isfinite(time)) return fmu_fail(I, "time = %g is not finite", time);
     I->core.time = time;
+    if (I->core.model.set_time) I->core.model.set_time(I->core.M, time);
     return FMU_OK;
 }
 

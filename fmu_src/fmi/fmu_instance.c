@@ -140,6 +140,7 @@ static void release(fmu_instance *I, void *p)
 
 void fmu_instance_free(fmu_instance *I)
 {
+    if (I->core.M && I->core.model.release) I->core.model.release(I->core.M);
     cs_free(I->core.cs);
     release(I, I->core.inputs);
     release(I, I->core.M);
@@ -322,4 +323,17 @@ fmu_status fmu_set_boolean(fmu_instance *I, unsigned vr)
 {
     if (settable(I, vr) != FMU_OK) return FMU_ERROR;
     return fmu_fail(I, "no Boolean of this FMU can be set"); /* no model of this repository has one */
+}
+
+int fmu_has_strings(const fmu_instance *I) { return I->core.model.get_string != NULL; }
+
+const char *fmu_get_string(fmu_instance *I, unsigned vr) { return I->core.model.get_string(I->core.M, vr); }
+
+fmu_status fmu_set_string(fmu_instance *I, unsigned vr, const char *v)
+{
+    char msg[512];
+    if (settable(I, vr) != FMU_OK) return FMU_ERROR;
+    if (!v) return fmu_fail(I, "the value of %s must not be NULL", fmu_find_var(&I->core.model, vr)->name);
+    if (I->core.model.set_string(I->core.M, vr, v, msg, sizeof msg)) return fmu_fail(I, "%s", msg);
+    return FMU_OK;
 }

@@ -57,7 +57,7 @@ typedef struct fmu_instance fmu_instance;
 typedef struct {
     const char *prefix;                        /* "fmi2", "fmi3": function names in the messages */
     const char *state_names[FMU_N_STATES];     /* by the bit of the state */
-    const char *type_names[3];                 /* of FMU_REAL, FMU_INTEGER, FMU_BOOLEAN */
+    const char *type_names[4];                 /* of FMU_REAL, FMU_INTEGER, FMU_BOOLEAN, FMU_STRING */
     const char *vr_argument, *values_argument; /* the getters' and setters' argument names */
     const char *nx_argument, *nz_argument;     /* the sizes of states and of event indicators */
     const char *fmu_state;                     /* "FMUstate" (FMI 2.0), "FMUState" (FMI 3.0) */
@@ -99,6 +99,9 @@ struct fmu_instance {
 #define fmu_set_real FMU_SYMBOL(fmu_set_real)
 #define fmu_set_integer FMU_SYMBOL(fmu_set_integer)
 #define fmu_set_boolean FMU_SYMBOL(fmu_set_boolean)
+#define fmu_has_strings FMU_SYMBOL(fmu_has_strings)
+#define fmu_get_string FMU_SYMBOL(fmu_get_string)
+#define fmu_set_string FMU_SYMBOL(fmu_set_string)
 #define fmu_set_debug_logging FMU_SYMBOL(fmu_set_debug_logging)
 #define fmu_setup FMU_SYMBOL(fmu_setup)
 #define fmu_exit_init FMU_SYMBOL(fmu_exit_init)
@@ -182,6 +185,11 @@ int fmu_get_boolean(fmu_instance *I, unsigned vr);
 fmu_status fmu_set_real(fmu_instance *I, unsigned vr, double v);
 fmu_status fmu_set_integer(fmu_instance *I, unsigned vr, int v);
 fmu_status fmu_set_boolean(fmu_instance *I, unsigned vr);
+/* Strings: only a model with String variables has them (else the getter and setter say why
+ * not with fmu_no_such_type). A NULL text is refused. */
+int fmu_has_strings(const fmu_instance *I);
+const char *fmu_get_string(fmu_instance *I, unsigned vr);
+fmu_status fmu_set_string(fmu_instance *I, unsigned vr, const char *v);
 
 /* ---- the functions both versions have ------------------------------------------------------ */
 

@@ -11,7 +11,7 @@
 
 #include "fmu_symbol.h"
 
-typedef enum { FMU_REAL, FMU_INTEGER, FMU_BOOLEAN } fmu_type;
+typedef enum { FMU_REAL, FMU_INTEGER, FMU_BOOLEAN, FMU_STRING } fmu_type;
 
 /* One row of the model's variable table. The wrapper derives from causality and initial when a
  * variable may be set (FMI 2.0 section 2.2.7): inputs always, parameters and variables with
@@ -68,6 +68,10 @@ typedef struct {
     /* Setters for one settable variable with a finite value: 0 = stored, else msg says why not. */
     int (*set_real)(void *M, unsigned vr, double v, char *msg, size_t n);   /* optional */
     int (*set_integer)(void *M, unsigned vr, int v, char *msg, size_t n);   /* optional */
+    /* Strings (optional, both or neither): the getter's text stays valid until the next call into
+     * the FMU; the setter gets a checked non-NULL text, 0 = stored (copied), else msg says why not. */
+    const char *(*get_string)(void *M, unsigned vr);
+    int (*set_string)(void *M, unsigned vr, const char *v, char *msg, size_t n);
     /* fmi2ExitInitializationMode: validate the parameters together, decide the discrete states.
      * 0 = ok, else msg says why not. Optional. */
     int (*exit_init)(void *M, double time, const fmu_logger *log, char *msg, size_t n);
@@ -80,6 +84,18 @@ typedef struct {
     void (*nominals)(double x[]);  /* optional: x holds 1 for every state on entry */
     /* one event-mode update at `time`; optional (no events: nothing changes) */
     void (*event_update)(void *M, double time, const fmu_logger *log, fmu_event_result *r);
+    /* Optional: the model's inputs depend on time itself (a record it reads): the time of the
+     * next evaluation, set before the inputs (Model Exchange's SetTime, the CVODE step's
+     * right-hand side). */
+    void (*set_time)(void *M, double time);
+    /* Optional: the part of the data, at instance_offset with instance_size bytes, that belongs to
+     * the instance and not to an FMU state (RockingWall: the record it read); a restored state
+     * keeps the instance's own, and the model releases it (release, optional) at reset and free.
+     * state_fits (optional) says whether a state's data (of this model) fits what the instance
+     * holds there: 0 = yes, else msg says why not and the state is refused. */
+    size_t instance_offset, instance_size;
+    void (*release)(void *M);
+    int (*state_fits)(const void *M, const void *state_data, char *msg, size_t n);
 
     /* Optional (NULL, or FMU_NOT_EXACT returned: the CVODE step of cs_cvode.c). A Co-Simulation
      * step from t to t + h done exactly by the model over inputs linear in time: their values are

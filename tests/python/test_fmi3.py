@@ -62,7 +62,7 @@ def test_the_binary_exports_only_the_fmi3_api(fmi3_dir, tmp_path, name):
     assert len(symbols) == 75 and "fmi3DoStep" in symbols and "fmi3UpdateDiscreteStates" in symbols
 
 
-FMI3_TYPE = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean"}
+FMI3_TYPE = {"Real": "Float64", "Integer": "Int32", "Boolean": "Boolean", "String": "String"}
 
 
 def _unknowns(unknowns):

@@ -114,3 +114,44 @@ def test_fmpy_simulation_of_the_asan_building_with_walls_is_clean(folder):
         assert report not in proc.stderr, proc.stderr[-4000:]
     assert proc.returncode == 0, proc.stderr[-4000:]
     assert proc.stdout.count("RUN ") == 2 and "REJECTED" in proc.stdout and "DONE" in proc.stdout
+
+
+CHILD_AGFILE = CHILD.split("import numpy as np")[0] + r"""
+import os, tempfile
+import numpy as np
+from fmpy import simulate_fmu
+folder = tempfile.mkdtemp()
+good, bad = os.path.join(folder, "rec.csv"), os.path.join(folder, "bad.csv")
+t = np.arange(0.0, 3.0, 0.005)
+np.savetxt(good, np.column_stack([t, 3.0 * np.sin(6.0 * t) * (t < 1.5)]), delimiter=",", header="time,ag", comments="")
+with open(bad, "w") as f:
+    f.write("time,ag\n0,0\n0.1,x\n")
+for fmi_type in ("ModelExchange", "CoSimulation"):
+    r = simulate_fmu({fmu!r}, fmi_type=fmi_type, stop_time=3.0, start_values=dict(Kd=5e4, agFile=good),
+                     output=["s1", "collapsed"])
+    assert np.all(np.isfinite(r["s1"])) and np.abs(r["s1"]).max() > 0
+    print("RUN", fmi_type, np.abs(r["s1"]).max())
+for path in (bad, os.path.join(folder, "missing.csv")):
+    try:
+        simulate_fmu({fmu!r}, stop_time=0.1, start_values=dict(agFile=path))
+    except Exception as exc:
+        print("REJECTED", type(exc).__name__)
+print("DONE")
+"""
+
+
+@pytest.mark.skipif(not ASAN_DIR, reason="set RW_ASAN_BUILD_DIR to the sanitizer build (scripts/run_tests.sh does)")
+@pytest.mark.parametrize("folder", ["", "fmi3"])
+def test_fmpy_simulation_of_the_asan_fmu_with_agFile_is_clean(folder):
+    """The record the FMU reads itself (agFile) under the sanitizers: runs, a bad and a missing file."""
+    fmu = pathlib.Path(ASAN_DIR) / folder / "RockingWall.fmu"
+    assert fmu.exists(), f"{fmu} is missing: build it with -DRW_SANITIZE=ON"
+    env = dict(os.environ, LD_PRELOAD=asan_runtime(), ASAN_OPTIONS="detect_leaks=0:abort_on_error=0",
+               UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1")
+    proc = subprocess.run([sys.executable, "-c", CHILD_AGFILE.format(fmu=str(fmu))], capture_output=True, text=True,
+                          env=env, timeout=600)
+    print(proc.stdout)
+    for report in ("AddressSanitizer", "runtime error:", "LeakSanitizer"):
+        assert report not in proc.stderr, proc.stderr[-4000:]
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    assert proc.stdout.count("RUN ") == 2 and proc.stdout.count("REJECTED") == 2 and "DONE" in proc.stdout

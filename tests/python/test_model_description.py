@@ -85,11 +85,15 @@ def test_diaphragm_variables_match_its_c_table(build_dir):
 
 
 def test_parameter_ranges_in_the_xml(rockingwall_fmu):
-    """Every parameter carries the C table's range as min/max, and its default lies inside."""
+    """Every wall parameter carries the C table's range as min/max, and its default lies inside; the
+    other parameters are the record's (agFile, agScale) of the variable table."""
     md = read_model_description(str(rockingwall_fmu))
     xml = {v.name: v for v in md.modelVariables}
     params = gen.parse_parameters()
-    assert {p["name"] for p in params} == {v.name for v in md.modelVariables if v.causality == "parameter"}
+    record_params = {v["name"] for v in gen.parse_header()[0] if v["causality"] == "parameter"}
+    assert record_params == {"agFile", "agScale"}
+    assert {p["name"] for p in params} | record_params == \
+        {v.name for v in md.modelVariables if v.causality == "parameter"}
     for p in params:
         v = xml[p["name"]]
         assert float(v.min) == p["min"] and float(v.max) == p["max"], p["name"]

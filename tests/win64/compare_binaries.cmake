@@ -1,7 +1,8 @@
 # The packaged RockingWall.dll run under wine against the packaged RockingWall.so on Linux (cmake -P,
 # see cmake/windows.cmake): fmu_binary_runner (one source, built for both) loads each binary out of
-# the unzipped FMU and runs free rocking through Model Exchange (explicit Euler) and through
-# Co-Simulation (the exact engine); it prints peak |s1|, peak |s2|, impacts and q1 at the end.
+# the unzipped FMU and runs free rocking through Model Exchange (explicit Euler), through
+# Co-Simulation (the exact engine) and through Co-Simulation under a record the binary reads itself
+# (agFile); it prints peak |s1|, peak |s2|, impacts and q1 at the end.
 # The impacts must be equal and the numbers agree to REL_TOL: both binaries do the same arithmetic
 # in the same order, only the C libraries' math functions may differ in the last bit.
 # -DFMU= -DWORK= -DLINUX_RUNNER= -DWIN_RUNNER= -DWINE= -DWINEPREFIX=
@@ -16,7 +17,7 @@ endif()
 # "peak_s1 peak_s2 impacts q1_end" of one run, as a list
 function(run_binary OUT)
   execute_process(COMMAND ${ARGN} OUTPUT_VARIABLE out ERROR_VARIABLE err RESULT_VARIABLE rc
-                  OUTPUT_STRIP_TRAILING_WHITESPACE)
+                  OUTPUT_STRIP_TRAILING_WHITESPACE WORKING_DIRECTORY ${WORK})
   if(NOT rc EQUAL 0)
     message(FATAL_ERROR "${ARGN} failed (${rc}): ${err}")
   endif()
@@ -29,7 +30,7 @@ function(run_binary OUT)
   set(${OUT} ${values} PARENT_SCOPE)
 endfunction()
 
-foreach(mode me cs)
+foreach(mode me cs csfile)
   run_binary(linux ${LINUX_RUNNER} ${WORK}/binaries/linux64/RockingWall.so ${mode})
   run_binary(windows ${CMAKE_COMMAND} -E env WINEPREFIX=${WINEPREFIX} WINEDEBUG=-all
              ${WINE} ${WIN_RUNNER} ${WORK}/binaries/win64/RockingWall.dll ${mode})

@@ -2,10 +2,12 @@
  * importer does, and runs free rocking of the default wall from a tilt through it:
  *   me  Model Exchange, explicit Euler (step DT) with the state events handled at the step ends
  *   cs  Co-Simulation, the exact engine's steps of CS_STEP
+ *   csfile  the same under a ground-motion record the FMU reads itself (agFile: a CSV the runner
+ *       writes into the working directory, so the binary's own reader and C library read it)
  * and prints "peak_s1 peak_s2 impacts q1_end" on one line. The same source is built for Linux and
  * for Windows: tests/win64/compare_binaries.cmake runs both on the binaries of the packaged FMU
  * and compares what they print.
- * Usage: fmu_binary_runner <RockingWall.so | RockingWall.dll> me|cs
+ * Usage: fmu_binary_runner <RockingWall.so | RockingWall.dll> me|cs|csfile
  *        fmu_binary_runner --compare A B REL_TOL   (exit 0 when |A - B| <= REL_TOL max(|A|, |B|)) */
 #include <math.h>
 #include <stdio.h>
@@ -42,6 +44,7 @@ typedef struct {
     fmi2EnterInitializationModeTYPE *enter_init;
     fmi2ExitInitializationModeTYPE *exit_init;
     fmi2SetRealTYPE *set_real;
+    fmi2SetStringTYPE *set_string;
     fmi2GetRealTYPE *get_real;
     fmi2GetIntegerTYPE *get_integer;
     fmi2EnterEventModeTYPE *enter_event_mode;
@@ -79,6 +82,7 @@ static int load_api(library lib, fmi2_api *f)
     LOAD(enter_init, "fmi2EnterInitializationMode");
     LOAD(exit_init, "fmi2ExitInitializationMode");
     LOAD(set_real, "fmi2SetReal");
+    LOAD(set_string, "fmi2SetString");
     LOAD(get_real, "fmi2GetReal");
     LOAD(get_integer, "fmi2GetInteger");
     LOAD(enter_event_mode, "fmi2EnterEventMode");
@@ -95,14 +99,28 @@ static int load_api(library lib, fmi2_api *f)
     return ok;
 }
 
-/* an initialized instance of the default wall tilted to q1 = 0.01, q2 = -0.01 rad */
-static fmi2Component start(const fmi2_api *f, fmi2Type type, const fmi2CallbackFunctions *cb)
+/* csfile's record: 1 s of a 2-Hz sine of 1 m/s2 at 0.005 s, as text the C library of each
+ * platform writes (CRLF line ends on Windows) */
+#define RECORD_FILE "runner_record.csv"
+static int write_record(void)
 {
-    const fmi2ValueReference vr_q[2] = {RW_VR_q1, RW_VR_q2};
+    FILE *fp = fopen(RECORD_FILE, "w");
+    int k;
+    if (!fp) return 1;
+    fprintf(fp, "time,ag\n");
+    for (k = 0; k <= 200; k++) fprintf(fp, "%.17g,%.17g\n", k * 0.005, sin(2 * 3.14159265358979323846 * 2.0 * k * 0.005));
+    return fclose(fp) != 0;
+}
+
+/* an initialized instance of the default wall tilted to q1 = 0.01, q2 = -0.01 rad (and the record
+ * file as agFile, if one is given) */
+static fmi2Component start(const fmi2_api *f, fmi2Type type, const fmi2CallbackFunctions *cb, const char *record)
+{
+    const fmi2ValueReference vr_q[2] = {RW_VR_q1, RW_VR_q2}, vr_file = RW_VR_agFile;
     const double q[2] = {0.01, -0.01};
     fmi2Component c = f->instantiate("runner", type, RW_GUID, "", cb, fmi2False, fmi2False);
     if (!c) return NULL;
-    if (f->set_real(c, vr_q, 2, q) != fmi2OK || f->setup_experiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
+    if ((record && f->set_string(c, &vr_file, 1, &record) != fmi2OK) || f->set_real(c, vr_q, 2, q) != fmi2OK || f->setup_experiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0) != fmi2OK ||
         f->enter_init(c) != fmi2OK || f->exit_init(c) != fmi2OK) {
         f->free_instance(c);
         return NULL;
@@ -203,19 +221,24 @@ int main(int argc, char **argv)
     run_result r = {0.0, 0.0, 0.0, 0};
     fmi2Component c;
     library lib;
-    int me, rc;
+    int me, file, rc;
     if (argc == 5 && !strcmp(argv[1], "--compare")) return compare(argv[2], argv[3], argv[4]);
-    if (argc != 3 || (strcmp(argv[2], "me") && strcmp(argv[2], "cs"))) {
-        fprintf(stderr, "usage: %s <FMU binary> me|cs\n", argv[0]);
+    if (argc != 3 || (strcmp(argv[2], "me") && strcmp(argv[2], "cs") && strcmp(argv[2], "csfile"))) {
+        fprintf(stderr, "usage: %s <FMU binary> me|cs|csfile\n", argv[0]);
         return 2;
     }
     me = !strcmp(argv[2], "me");
+    file = !strcmp(argv[2], "csfile");
+    if (file && write_record()) {
+        fprintf(stderr, "cannot write %s\n", RECORD_FILE);
+        return 1;
+    }
     lib = open_library(argv[1]);
     if (!lib) {
         fprintf(stderr, "cannot load %s\n", argv[1]);
         return 1;
     }
-    if (!load_api(lib, &f) || !(c = start(&f, me ? fmi2ModelExchange : fmi2CoSimulation, &cb))) {
+    if (!load_api(lib, &f) || !(c = start(&f, me ? fmi2ModelExchange : fmi2CoSimulation, &cb, file ? RECORD_FILE : NULL))) {
         fprintf(stderr, "%s: the fmi2 API is incomplete or the instance did not initialize\n", argv[1]);
         close_library(lib);
         return 1;

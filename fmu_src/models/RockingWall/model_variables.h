@@ -5,7 +5,7 @@
  *
  * RW_VARIABLES(X) lists one X(...) per line with the fields
  *   X(ID, VR, NAME, TYPE, CAUSALITY, VARIABILITY, INITIAL, START, UNIT, NOMINAL, DERIVATIVE_OF, DESCRIPTION)
- * TYPE: Real | Integer | Boolean. INITIAL "" = not given (inputs). UNIT "" = none. NOMINAL 0 = none.
+ * TYPE: Real | Integer | Boolean | String. INITIAL "" = not given (inputs). UNIT "" = none. NOMINAL 0 = none.
  * DERIVATIVE_OF: value reference of the state this variable is the derivative of, 0 = none.
  * Keep one entry per line (the generator parses the lines). */
 #ifndef RW_MODEL_VARIABLES_H
@@ -22,6 +22,8 @@
 #define RW_VARIABLES(X) \
 X(ag,         20, "ag",          Real,    "input",     "continuous", "",           0,      "m/s2",   0,    0,  "Ground acceleration, positive toward +x") \
 X(u_top,      21, "u_top",       Real,    "input",     "continuous", "",           0,      "m",      0,    0,  "Displacement of the diaphragm end of the top spring relative to the ground") \
+X(agFile,     60, "agFile",      String,  "parameter", "fixed",      "exact",      "",     "",       0,    0,  "Ground-motion record the FMU reads itself at initialization, so that its answer does not depend on the importer's communication step: a PEER .AT2 file (values in g, times the parameter g) or a CSV of time [s] and acceleration [m/s2]; the input ag adds to it. Empty: none") \
+X(agScale,    61, "agScale",     Real,    "parameter", "fixed",      "exact",      1,      "1",      0,    0,  "Factor on the accelerations of agFile") \
 X(s1,         30, "s1",          Real,    "output",    "continuous", "calculated", 0,      "m",      0,    0,  "Mid-height displacement q1*h/2") \
 X(s2,         31, "s2",          Real,    "output",    "continuous", "calculated", 0,      "m",      0,    0,  "Top displacement (q1+q2)*h/2 (simplySupported: 0)") \
 X(F_top,      32, "F_top",       Real,    "output",    "continuous", "calculated", 0,      "N/m",    0,    0,  "Force of the top spring on the diaphragm, Kd*(s2 - u_top) (flexibleTop only)") \

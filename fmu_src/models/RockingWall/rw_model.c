@@ -2,7 +2,9 @@
  * fmu_src/wall/). Holds the instance data (parameters, contact regime, inputs, states, counters); the FMI 2.0
  * API itself is the shared fmi2Functions.c. */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "fmu_model.h"
@@ -18,6 +20,7 @@ typedef char rw_check_nz[(RW_NUMBER_OF_EVENT_INDICATORS == RW_NZ) ? 1 : -1];
 #define FMU_Real FMU_REAL
 #define FMU_Integer FMU_INTEGER
 #define FMU_Boolean FMU_BOOLEAN
+#define FMU_String FMU_STRING
 #define RW_PARAM_VAR(ID, VR, TYPE, UNIT, DEF, LO, HI, DESC) {VR, FMU_##TYPE, #ID, "parameter", "exact"},
 #define RW_VAR(ID, VR, NAME, TYPE, CAUS, VARIAB, INIT, START, UNIT, NOM, DER, DESC) \
     {VR, FMU_##TYPE, NAME, CAUS, INIT},
@@ -46,6 +49,31 @@ static void reset(void *M)
     rw_params_default(&S->P);
     rw_derive(&S->P, &S->D);
     S->regime.side_b = S->regime.side_m = 1;
+    S->ag_scale = 1.0;
+}
+
+/* the record the instance read, at reset and free (the FMI layer calls it) */
+static void release(void *M)
+{
+    rw_data *S = (rw_data *)M;
+    if (!S->record) return;
+    rw_gm_free(S->record);
+    free(S->record);
+    S->record = NULL;
+}
+
+/* in.ag: the input plus the record at S->time */
+static void update_ground(rw_data *S)
+{
+    double slope, t_next;
+    S->in.ag = S->ag_input + (S->record ? rw_gm_at(S->record, S->time, &slope, &t_next) : 0.0);
+}
+
+static void set_time(void *M, double time)
+{
+    rw_data *S = (rw_data *)M;
+    S->time = time;
+    update_ground(S);
 }
 
 /* regime and states as seen by getters: before initialization ends the regime is not decided, so
@@ -83,7 +111,8 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
         if (param) { v[i] = rw_param_get(&S->P, param); continue; }
         if (k >= 0) { v[i] = x[k]; continue; }
         switch (vr[i]) {
-        case RW_VR_ag: v[i] = S->in.ag; break;
+        case RW_VR_ag: v[i] = S->ag_input; break;
+        case RW_VR_agScale: v[i] = S->ag_scale; break;
         case RW_VR_u_top: v[i] = S->in.u_top; break;
         case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
         case RW_VR_s2: v[i] = rw_s2(&S->P, x); break;
@@ -132,7 +161,10 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
     } else if ((k = state_index(vr)) >= 0) {
         S->x[k] = value;
     } else if (vr == RW_VR_ag) {
-        S->in.ag = value;
+        S->ag_input = value;
+        update_ground(S);
+    } else if (vr == RW_VR_agScale) {
+        S->ag_scale = value;
     } else { /* RW_VR_u_top, the only other settable Real */
         S->in.u_top = value;
     }
@@ -144,6 +176,61 @@ static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
     rw_data *S = (rw_data *)M;
     if (rw_param_set(&S->P, rw_param_by_vr(vr), value, msg, n)) return 1; /* the only settable Integers */
     rw_derive(&S->P, &S->D);
+    return 0;
+}
+
+static const char *get_string(void *M, unsigned vr)
+{
+    (void)vr; /* RW_VR_agFile, the only String */
+    return ((rw_data *)M)->ag_file;
+}
+
+static int set_string(void *M, unsigned vr, const char *value, char *msg, size_t n)
+{
+    rw_data *S = (rw_data *)M;
+    (void)vr; /* RW_VR_agFile, the only String */
+    if (strlen(value) >= sizeof S->ag_file)
+        return snprintf(msg, n, "agFile: a path of %lu characters, longer than the %d this FMU takes",
+                        (unsigned long)strlen(value), RW_AG_FILE_MAX - 1), 1;
+    strcpy(S->ag_file, value);
+    return 0;
+}
+
+/* The record of agFile (none if empty), read at the end of initialization. 0 = ok, else msg. */
+static int read_record(rw_data *S, char *msg, size_t n)
+{
+    char err[768];
+    release(S);
+    if (!S->ag_file[0]) return 0;
+    S->record = (rw_ground_motion *)malloc(sizeof *S->record);
+    if (!S->record) return snprintf(msg, n, "agFile: out of memory"), 1;
+    if (rw_gm_read(S->ag_file, S->P.g, S->ag_scale, S->record, err, sizeof err)) {
+        free(S->record);
+        S->record = NULL;
+        return snprintf(msg, n, "agFile: %s", err), 1;
+    }
+    if (S->log && S->log->event) {
+        snprintf(err, sizeof err, "agFile: read %lu samples from %.9g to %.9g s of %.600s (scaled by %g)",
+                 (unsigned long)S->record->n, S->record->t[0], S->record->t[S->record->n - 1], S->ag_file,
+                 S->ag_scale);
+        S->log->event(S->log->ctx, err);
+    }
+    return 0;
+}
+
+/* An FMU state restored into an initialized instance must have been taken with the record the
+ * instance read (the record is the instance's, not the state's). */
+static int state_fits(const void *M, const void *state_data, char *msg, size_t n)
+{
+    const rw_data *now = (const rw_data *)M;
+    const rw_data *then = (const rw_data *)state_data;
+    char file[RW_AG_FILE_MAX];
+    if (!now->initialized) return 0;
+    memcpy(file, then->ag_file, sizeof file);
+    file[sizeof file - 1] = '\0';
+    if (strcmp(file, now->ag_file) || then->ag_scale != now->ag_scale || (now->ag_file[0] && then->P.g != now->P.g))
+        return snprintf(msg, n, "the FMU state was taken with agFile \"%.200s\" (agScale %g), this instance read \"%.200s\" "
+                        "(agScale %g)", file, then->ag_scale, now->ag_file, now->ag_scale), 1;
     return 0;
 }
 
@@ -171,6 +258,9 @@ static int exit_init(void *M, double time, const fmu_logger *log, char *msg, siz
     if (rw_params_validate(&S->P, msg, n)) return 1;
     S->log = log;
     S->time = time;
+    if (read_record(S, msg, n)) return 1;
+    S->initialized = 1;
+    update_ground(S);
     rw_derive(&S->P, &S->D);
     rw_init_regime(&S->P, &S->D, &S->in, S->x, &S->regime, physics_log, S);
     S->impacts = 0;
@@ -264,6 +354,8 @@ const fmu_model FMU_MODEL = {
     .get_boolean = get_boolean,
     .set_real = set_real,
     .set_integer = set_integer,
+    .get_string = get_string,
+    .set_string = set_string,
     .exit_init = exit_init,
     .get_states = get_states,
     .set_states = set_states,
@@ -271,5 +363,10 @@ const fmu_model FMU_MODEL = {
     .event_indicators = event_indicators,
     .nominals = nominals,
     .event_update = event_update,
+    .set_time = set_time,
+    .instance_offset = offsetof(rw_data, record),
+    .instance_size = sizeof(rw_ground_motion *),
+    .release = release,
+    .state_fits = state_fits,
     .exact_step = rw_exact_step, /* Co-Simulation through the exact engine (cs_exact.c) */
 };

@@ -5,11 +5,19 @@
 
 #include "fmu_model.h"
 #include "rw_engine.h"
+#include "rw_ground_motion.h"
 #include "rw_physics.h"
 
 /* time between the collapse event (where `collapsed` becomes true and is recorded) and the
  * time event that requests terminateSimulation */
 #define RW_TERMINATE_DELAY 1e-6
+
+/* A master that holds a changing ag over communication steps longer than this [s] gets a warning
+ * (once): an accelerogram held over coarse steps loses its peaks. The DefaultExperiment's stepSize. */
+#define RW_HELD_AG_STEP 0.005
+
+/* the longest agFile this FMU takes, with its terminating zero */
+#define RW_AG_FILE_MAX 1024
 
 typedef struct {
     rw_params P;
@@ -21,6 +29,18 @@ typedef struct {
     int collapsed;
     double terminate_time;
     double dissipated;
+    /* The ground motion the FMU reads itself (agFile, agScale; rw_ground_motion.h), so that its
+     * answer does not depend on how an importer holds the input: the input `ag` (ag_input) adds
+     * to it, and in.ag is their sum at `time`. */
+    char ag_file[RW_AG_FILE_MAX];
+    double ag_scale;
+    double ag_input;
+    int initialized; /* exit_init read the record (if any): an FMU state must then fit it */
+    /* Co-Simulation without agFile: ag where the last step left it, and whether the warning about
+     * a changing ag held over long steps was given (cs_exact.c) */
+    int stepped, held_ag_warned;
+    double ag_step_end;
+    rw_ground_motion *record; /* NULL without agFile; the instance's, not an FMU state's (rw_model.c) */
     /* for messages from the physics: the logger and the time of the current event */
     const fmu_logger *log;
     double time;

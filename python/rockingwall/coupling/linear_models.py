@@ -108,10 +108,11 @@ def wall_slave(name, params, law=4):
 
 @functools.cache
 def fmu_start_values(path):
-    """{name: start value} of an FMU's parameters (its modelDescription.xml)."""
+    """{name: start value} of an FMU's numeric parameters (its modelDescription.xml)."""
     from fmpy import read_model_description
     md = read_model_description(str(path))
-    return {v.name: float(v.start) for v in md.modelVariables if v.causality == "parameter" and v.start is not None}
+    return {v.name: float(v.start) for v in md.modelVariables
+            if v.causality == "parameter" and v.start is not None and v.type in ("Real", "Integer")}
 
 
 def building_matrices(values, n, rigid=False):
