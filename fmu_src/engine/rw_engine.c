@@ -961,7 +961,7 @@ static void carry_point(rw_engine *e, const rw_point *pb, double t)
  * hinges are closed.) */
 static int q_fixes_region(const rw_engine *e, const rw_span *sp)
 {
-    return e->law->q_only && sp->aq.valid;
+    return rw_moments_of_q_alone(&e->P) && sp->aq.valid;
 }
 
 /* After an event of the base or mid-height hinge indicator under a law whose hinge moments depend

@@ -87,14 +87,16 @@ def _event_fn(ev, s, bias):
 
 
 def _base_uplift_rotation(p, model):
-    """The base rotation |q1| where a semi-rigid base leaves its elastic range (the law's first base
-    breakpoint: Delta_1 of the base displacement h q1/2 for the simply supported wall and
-    dohertyHinge, theta_y for semiRigidHinge and semiRigidPaper); None for rigid hinges."""
+    """The base rotation |q1| where a semi-rigid base leaves its elastic range, as a function of
+    q1 (the law's first base breakpoint, of the direction of q1: Delta_1 of the base displacement
+    h q1/2 for the simply supported wall and dohertyHinge, theta_y for semiRigidHinge and
+    semiRigidPaper); None for rigid hinges."""
     if getattr(model, "rigid", True):
         return None
+    dirs = {1.0: p.direction(1), -1.0: p.direction(-1)}
     if p.support == "simplySupported" or p.hinge_law == "dohertyHinge":
-        return 2 * p.Delta_1 / p.h
-    return p.theta_y
+        return lambda q1: 2 * dirs[-1.0 if q1 < 0 else 1.0].Delta_1 / p.h
+    return lambda q1: dirs[-1.0 if q1 < 0 else 1.0].theta_y
 
 
 def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK45", rtol=1e-5,
@@ -140,11 +142,12 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
     # base breakpoint, an event, so a step ends on it) since the previous crossing: before any
     # uplift the base oscillates elastically through q1 = 0, which is no impact.
     uplift_q1 = _base_uplift_rotation(p, model)
-    uplifted = uplift_q1 is not None and abs(y[0]) >= uplift_q1 * (1 - 1e-6)
+    uplifted = uplift_q1 is not None and abs(y[0]) >= uplift_q1(y[0]) * (1 - 1e-6)
 
     def note_uplift(q1_values):
         nonlocal uplifted
-        if uplift_q1 is not None and np.max(np.abs(q1_values)) >= uplift_q1 * (1 - 1e-6):
+        if uplift_q1 is not None and any(abs(q) >= uplift_q1(q) * (1 - 1e-6) for q in (np.max(q1_values),
+                                                                                        np.min(q1_values))):
             uplifted = True
 
     def note(tt, kinds):

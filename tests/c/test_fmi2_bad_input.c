@@ -318,7 +318,7 @@ static void test_invalid_parameters_and_inputs(void)
 
 static void test_value_references_and_sizes(void)
 {
-    const fmi2ValueReference unknown[] = {0, 15, 19, 22, 39, 46, 999, 0xFFFFFFFFu};
+    const fmi2ValueReference unknown[] = {0, 24, 29, 22, 39, 46, 999, 0xFFFFFFFFu};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; i++) {
         char num[32];
         double v = 0;

@@ -404,7 +404,7 @@ static void test_invalid_parameters_and_inputs(void)
 
 static void test_value_references_types_and_sizes(void)
 {
-    const fmi3ValueReference unknown[] = {15, 19, 22, 39, 46, 49, 58, 999, 0xFFFFFFFFu};
+    const fmi3ValueReference unknown[] = {24, 29, 22, 39, 46, 49, 58, 999, 0xFFFFFFFFu};
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; i++) {
         char num[32];
         double v = 0;
