@@ -146,6 +146,21 @@ void rw_derive(const rw_params *p, rw_derived *d)
     law(p)->breakpoints(d, d->breaks);
 }
 
+int rw_wall_statics(const rw_params *p, rw_statics *s, char *msg, size_t n)
+{
+    rw_derived d;
+    int i;
+    if (rw_params_validate(p, msg, n)) return 1;
+    rw_derive(p, &d);
+    for (i = 0; i < 2; i++) {
+        s->Du[i] = d.dir[i].Du;
+        s->Fr[i] = d.dir[i].Fr;
+        s->cap_b[i] = d.cap_bs[i];
+        s->cap_m[i] = d.cap_ms[i];
+    }
+    return 0;
+}
+
 int rw_is_rigid(const rw_params *p)
 {
     return p->support == RW_PARAPET || law(p)->set_valued;

@@ -194,6 +194,15 @@ typedef struct {
 int rw_params_validate(const rw_params *p, char *msg, size_t n);
 void rw_derive(const rw_params *p, rw_derived *d);
 
+/* The wall's statics as a user reads them (the package's Wall): per direction d of the
+ * mid-height's motion, [RW_SIDE(d)], Delta_u(d) (NZSEE C8's Delta_i) and F_r(d); per side s of a
+ * hinge, [RW_SIDE(s)], its capacity. */
+typedef struct {
+    double Du[2], Fr[2], cap_b[2], cap_m[2];
+} rw_statics;
+/* Checks the parameters (rw_params_validate), then fills s. 0 = ok, else msg filled. */
+int rw_wall_statics(const rw_params *p, rw_statics *s, char *msg, size_t n);
+
 /* Is the hinge law set-valued (rest / closed-hinge states)? */
 int rw_is_rigid(const rw_params *p);
 /* 1 when the hinge moments are a function of q alone, affine on the whole region between the law's

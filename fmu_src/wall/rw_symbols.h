@@ -63,5 +63,6 @@
 #define rw_s1 FMU_SYMBOL(rw_s1)
 #define rw_s2 FMU_SYMBOL(rw_s2)
 #define rw_sync_mid_side FMU_SYMBOL(rw_sync_mid_side)
+#define rw_wall_statics FMU_SYMBOL(rw_wall_statics)
 
 #endif
