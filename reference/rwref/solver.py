@@ -101,7 +101,7 @@ def _base_uplift_rotation(p, model):
 
 def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK45", rtol=1e-5,
              atol=1e-10, max_step=np.inf, t_out=None, progress=False, rest_dt=1e-3,
-             zeno_count=200, zeno_window=1e-6, max_events=200000):
+             zeno_count=200, zeno_window=1e-6, max_events=200000, stop_at_samples=False):
     """Simulate model `p` (a Params) under ground acceleration `ag` (callable t -> m/s^2 or
     inputs.Signal, positive toward +x) and top-spring far-end displacement `u_top` (flexibleTop
     only) from t = 0 to t_end.  Returns a Result (see its docstring).
@@ -109,6 +109,9 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
     rest_dt: while every hinge is closed (rigid rest) the opening test is scanned on a grid with
     this step (for Signal inputs: at every sample, which is exact for piecewise-linear inputs).
     A ZenoError is raised if more than `zeno_count` events occur within `zeno_window` seconds.
+    stop_at_samples: integrate from one sample of the Signal inputs to the next (where the input,
+    linear between samples, has its kinks), as the FMU's hosts and the exact engine do: slower,
+    and more accurate on records than steps that straddle the kinks.
     """
     if not isinstance(p, Params):
         raise TypeError("p must be an rwref.Params")
@@ -211,7 +214,8 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
                 st.side_m = s
         fns = [_event_fn(ev, s, 0.0 if certain else _BIAS) for ev, (s, certain) in zip(evs, orient)]
         t_start = t
-        sol = solve_ivp(lambda tt, yy: model.rhs(tt, yy, st), (t, t_end), y, method=method, rtol=rtol,
+        t_stop = _next_sample(agf, uf, t, t_end) if stop_at_samples else t_end
+        sol = solve_ivp(lambda tt, yy: model.rhs(tt, yy, st), (t, t_stop), y, method=method, rtol=rtol,
                         atol=atol, max_step=max_step, events=fns, dense_output=True)
         nfev += sol.nfev
         if sol.status == -1:
@@ -232,6 +236,8 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
         t, y = float(ts[-1]), ys[:, -1].copy()
         note_uplift(ys[0])
         if sol.status != 1:
+            if t < t_end:  # a sample of the inputs: on
+                continue
             break
         # which event fired (earliest)
         k_ev = min((i for i in range(len(evs)) if len(sol.t_events[i])), key=lambda i: sol.t_events[i][0])
@@ -274,6 +280,12 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
     res.peak_s2 = rec.peak2
     res.nfev = nfev
     return res
+
+
+def _next_sample(agf, uf, t, t_end):
+    """The first sample time of the Signal inputs after t (t_end if none)."""
+    after = [f.knots(t, t_end)[:1] for f in (agf, uf) if isinstance(f, _inputs.Signal)]
+    return float(min(np.concatenate(after + [np.array([t_end])])))
 
 
 def _scan_rest(model, st, t, t_end, agf, uf, rest_dt):
