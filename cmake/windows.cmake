@@ -1,4 +1,5 @@
-# The FMUs' Windows binaries (binaries/win64/RockingWall.dll, Diaphragm.dll, Building.dll), cross-compiled with
+# The FMUs' Windows binaries (binaries/win64/RockingWall.dll, Diaphragm.dll, Building.dll,
+# BuildingWithWalls.dll), cross-compiled with
 # Debian's mingw-w64 by the ExternalProject rw_win64 (cmake/win64/CMakeLists.txt with
 # cmake/toolchain-mingw-w64.cmake), and their tests, run under wine. Included by
 # fmu_src/CMakeLists.txt, whose rw_add_fmu (fmu_src/fmu_package.cmake) packs RW_WIN64_BINARY_DIR/NAME.dll into NAME.fmu.
@@ -44,7 +45,7 @@ ExternalProject_Add(rw_win64
   BUILD_ALWAYS ON # its own build decides what is out of date (the sources are outside its tree)
   INSTALL_COMMAND ""
   BUILD_BYPRODUCTS ${RW_WIN64_BINARY_DIR}/RockingWall.dll ${RW_WIN64_BINARY_DIR}/Diaphragm.dll
-                   ${RW_WIN64_BINARY_DIR}/Building.dll)
+                   ${RW_WIN64_BINARY_DIR}/Building.dll ${RW_WIN64_BINARY_DIR}/BuildingWithWalls.dll)
 message(STATUS "Windows binaries: on (${RW_MINGW_GCC})")
 
 if(NOT RW_BUILD_TESTS)
@@ -93,7 +94,7 @@ endforeach()
 # The packaged FMUs hold binaries/win64/NAME.dll that imports only Windows system DLLs and
 # exports exactly the functions the linux64 binary exports (the fmi2 API).
 find_program(RW_MINGW_OBJDUMP x86_64-w64-mingw32-objdump REQUIRED)
-foreach(_name RockingWall Diaphragm Building)
+foreach(_name RockingWall Diaphragm Building BuildingWithWalls)
   add_test(NAME win64_binary_${_name}
     COMMAND ${CMAKE_COMMAND} -DFMU=${CMAKE_BINARY_DIR}/${_name}.fmu -DNAME=${_name}
             -DOBJDUMP=${RW_MINGW_OBJDUMP} -DNM=${CMAKE_NM} -DWORK=${RW_WIN64_BINARY_DIR}/check_${_name}

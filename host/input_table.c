@@ -1,5 +1,7 @@
-/* Readers for input files (CSV and PEER NGA .AT2) and linear interpolation of the samples.
- * Every problem is reported as "FILE:LINE: what is wrong" so a user can fix the file. */
+/* Readers for input files (CSV and PEER NGA .AT2) and the inputs' values between samples: linear
+ * for continuous inputs, held for discrete ones; two rows of one time are a step (the value
+ * before it, then the value from it on). Every problem is reported as "FILE:LINE: what is wrong"
+ * so a user can fix the file. */
 #define _POSIX_C_SOURCE 200809L
 #include "input_table.h"
 
@@ -8,6 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static char *trim(char *s)
 {
@@ -64,8 +67,9 @@ static int grow(input_table *tab, size_t *cap)
 
 static int check_time(const char *path, long line, const input_table *tab, double t, char *err, size_t n)
 {
-    if (tab->n > 0 && t == tab->t[tab->n - 1]) {
-        snprintf(err, n, "%s:%ld: time %g repeats the previous row's time", path, line, t);
+    if (tab->n > 1 && t == tab->t[tab->n - 1] && t == tab->t[tab->n - 2]) {
+        snprintf(err, n, "%s:%ld: time %g is on a third row: a step takes two rows of one time (the value before "
+                 "it, then the value from it on)", path, line, t);
         return -1;
     }
     if (tab->n > 0 && t < tab->t[tab->n - 1]) {
@@ -86,16 +90,31 @@ static int has_nul(const char *s, ssize_t len)
     return 0;
 }
 
+/* The input file opened for reading; a folder is named as one (reading it would look empty). */
+static FILE *open_input(const char *path, input_table *tab, char *err, size_t n)
+{
+    struct stat st;
+    FILE *f = fopen(path, "r");
+    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return NULL; }
+    if (fstat(fileno(f), &st) == 0 && S_ISDIR(st.st_mode)) {
+        snprintf(err, n, "%s: is a folder, not an input file", path);
+        fclose(f);
+        return NULL;
+    }
+    if (!(tab->source = strdup(path))) { snprintf(err, n, "%s: out of memory", path); fclose(f); return NULL; }
+    return f;
+}
+
 int input_read_csv(const char *path, input_table *tab, char *err, size_t n)
 {
-    FILE *f = fopen(path, "r");
+    FILE *f;
     char *line = NULL;
     size_t linecap = 0, cap = 0;
     ssize_t len;
     long lineno = 0;
     int rc = -1;
     memset(tab, 0, sizeof *tab);
-    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    if (!(f = open_input(path, tab, err, n))) return -1;
     /* header */
     while ((len = getline(&line, &linecap, f)) >= 0) {
         lineno++;
@@ -187,7 +206,7 @@ static int parse_at2_header(char *line, long *npts, double *dt)
 int input_read_at2(const char *path, const char *name, double g, double scale, input_table *tab,
                    char *err, size_t n)
 {
-    FILE *f = fopen(path, "r");
+    FILE *f;
     char *line = NULL;
     size_t linecap = 0;
     size_t cap = 0;
@@ -196,7 +215,7 @@ int input_read_at2(const char *path, const char *name, double g, double scale, i
     double dt = 0.0;
     int rc = -1;
     memset(tab, 0, sizeof *tab);
-    if (!f) { snprintf(err, n, "%s: %s", path, strerror(errno)); return -1; }
+    if (!(f = open_input(path, tab, err, n))) return -1;
     for (lineno = 1; lineno <= 4; lineno++) {
         if ((len = getline(&line, &linecap, f)) < 0) {
             snprintf(err, n, "%s:%ld: file ends inside the 4-line AT2 header", path, lineno);
@@ -256,17 +275,59 @@ done:
     return rc;
 }
 
-double input_value(const input_table *tab, size_t col, double t)
+/* The last sample at or before t (after a step at t: its second row); 0 when t is before all. */
+static size_t last_at_or_before(const input_table *tab, double t)
+{
+    size_t lo = 0, hi = tab->n; /* the first sample after t is in [lo, hi] */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (tab->t[mid] <= t) lo = mid + 1; else hi = mid;
+    }
+    return lo ? lo - 1 : 0;
+}
+
+/* Linear between samples lo and lo + 1 (which are at different times), held beyond the ends. */
+static double between(const input_table *tab, size_t col, size_t lo, double t)
 {
     const double *v = tab->cols[col].values;
-    size_t lo = 0, hi = tab->n - 1;
-    if (t <= tab->t[0]) return v[0];
-    if (t >= tab->t[hi]) return v[hi];
-    while (hi - lo > 1) { /* binary search: t[lo] <= t < t[hi] */
-        size_t mid = (lo + hi) / 2;
-        if (tab->t[mid] <= t) lo = mid; else hi = mid;
-    }
-    return v[lo] + (v[hi] - v[lo]) * (t - tab->t[lo]) / (tab->t[hi] - tab->t[lo]);
+    if (t <= tab->t[lo] || lo + 1 >= tab->n) return v[lo];
+    if (t >= tab->t[lo + 1]) return v[lo + 1];
+    return v[lo] + (v[lo + 1] - v[lo]) * (t - tab->t[lo]) / (tab->t[lo + 1] - tab->t[lo]);
+}
+
+double input_value(const input_table *tab, size_t col, double t)
+{
+    if (t < tab->t[0]) return tab->cols[col].values[0];
+    return between(tab, col, last_at_or_before(tab, t), t);
+}
+
+double input_value_left(const input_table *tab, size_t col, double t)
+{
+    size_t i;
+    if (t <= tab->t[0]) return tab->cols[col].values[0];
+    i = last_at_or_before(tab, t);
+    while (i > 0 && tab->t[i] >= t) i--; /* the segment that ends at t, before any step there */
+    return between(tab, col, i, t);
+}
+
+double input_value_held(const input_table *tab, size_t col, double t)
+{
+    return tab->cols[col].values[last_at_or_before(tab, t)];
+}
+
+int input_steps_at(const input_table *tab, size_t col, double t, int held)
+{
+    if (held) return input_value_held(tab, col, t) != input_value_held_left(tab, col, t);
+    return input_value(tab, col, t) != input_value_left(tab, col, t);
+}
+
+double input_value_held_left(const input_table *tab, size_t col, double t)
+{
+    size_t i;
+    if (t <= tab->t[0]) return tab->cols[col].values[0];
+    i = last_at_or_before(tab, t);
+    while (i > 0 && tab->t[i] >= t) i--;
+    return tab->cols[col].values[i];
 }
 
 void input_free(input_table *tab)
@@ -274,5 +335,6 @@ void input_free(input_table *tab)
     for (size_t c = 0; c < tab->ncols; c++) { free(tab->cols[c].name); free(tab->cols[c].values); }
     free(tab->cols);
     free(tab->t);
+    free(tab->source);
     memset(tab, 0, sizeof *tab);
 }

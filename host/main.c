@@ -15,6 +15,7 @@
 #include "cleanup.h"
 #include "fmu_archive.h"
 #include "fmu_binary.h"
+#include "fmu_inputs.h"
 #include "input_table.h"
 #include "model_description.h"
 #include "output_file.h"
@@ -43,7 +44,9 @@ static const char *usage =
     "                           (default (stop - start)/500)\n"
     "  --set NAME=VALUE         start value by variable name (repeatable; type-checked)\n"
     "  --input FILE.csv         inputs: header 'time,NAME,...', rows of numbers, times increasing;\n"
-    "                           linearly interpolated, ends held\n"
+    "                           Real continuous inputs linear between rows, discrete ones (Real\n"
+    "                           discrete, Integer, Boolean 0/1, tunable parameters) held and set\n"
+    "                           at events; two rows of one time are a step; ends held\n"
     "  --ag FILE.AT2            PEER NGA acceleration record (in g) for the input 'ag' [m/s2]\n"
     "  --ag-scale S             factor on the record (default 1)\n"
     "  --g G                    gravity used to convert g to m/s2, in [0.1, 100] (default 9.81)\n"
@@ -116,15 +119,33 @@ static int check_start_value(const model_description *md, const char *name, cons
     return 0;
 }
 
+/* The values of an Integer or Boolean column: whole numbers in range, 0 or 1. */
+static int check_column_values(const input_table *tab, size_t c, input_kind kind, const char *file)
+{
+    const char *name = tab->cols[c].name;
+    for (size_t r = 0; r < tab->n; r++) {
+        const double v = tab->cols[c].values[r];
+        if (kind == IN_INTEGER && !(v == floor(v) && v >= -2147483648.0 && v <= 2147483647.0))
+            return die("%s: the row at time %g: input '%s' is an Integer: %g is not a whole number in [-2^31, 2^31 - 1]",
+                       file, tab->t[r], name, v);
+        if (kind == IN_BOOLEAN && v != 0.0 && v != 1.0)
+            return die("%s: the row at time %g: input '%s' is a Boolean: %g is not 0 or 1", file, tab->t[r], name, v);
+    }
+    return 0;
+}
+
 static int check_inputs(const model_description *md, const input_table *tabs, size_t ntab, const char *const *files)
 {
     for (size_t i = 0; i < ntab; i++)
         for (size_t c = 0; c < tabs[i].ncols; c++) {
-            const char *name = tabs[i].cols[c].name;
+            const char *name = tabs[i].cols[c].name, *why;
             const md_variable *v = md_find(md, name);
+            int kind;
             if (!v) return die("%s:1: column '%s' is not a variable of the model", files[i], name);
-            if (strcmp(v->causality, "input") != 0) return die("%s:1: '%s' is not an input of the model (causality %s)", files[i], name, v->causality);
-            if (v->type != MD_REAL) return die("%s:1: input '%s' is a %s; only Real inputs can be read from files", files[i], name, md_type_name(v->type));
+            if ((kind = fmu_input_kind(v, &why)) < 0)
+                return die("%s:1: '%s' %s (a %s of causality %s)", files[i], name, why, md_type_name(v->type),
+                           v->causality);
+            if (check_column_values(&tabs[i], c, (input_kind)kind, files[i]) != 0) return 2;
             for (size_t j = 0; j <= i; j++)
                 for (size_t d = 0; d < tabs[j].ncols; d++)
                     if ((j < i || d < c) && strcmp(tabs[j].cols[d].name, name) == 0)
@@ -150,12 +171,14 @@ static int in_range(const char *opt, double x, double lo, double hi)
     return -1;
 }
 
-/* The options that depend on the start and stop times, once those are known. */
-static int check_times(const sim_options *o, double max_step, double interval)
+/* The options that depend on the start and stop times, once those are known; the times' labels
+ * say where each came from (an option, the inputs, the model description). */
+static int check_times(const sim_options *o, const char *start_label, const char *stop_label, double max_step,
+                       double interval)
 {
     const double span = o->stop_time - o->start_time;
     const double scale = fmax(1.0, fmax(fabs(o->start_time), fabs(o->stop_time)));
-    if (in_range("start time", o->start_time, -TIME_MAX, TIME_MAX) || in_range("stop time", o->stop_time, -TIME_MAX, TIME_MAX))
+    if (in_range(start_label, o->start_time, -TIME_MAX, TIME_MAX) || in_range(stop_label, o->stop_time, -TIME_MAX, TIME_MAX))
         return -1;
     if (!(span >= SPAN_MIN_REL * scale)) {
         die("stop time %.17g - start time %.17g = %g is out of range: it must be >= 1e-6 x max(1, |start|, |stop|) = %g",
@@ -251,26 +274,35 @@ static double inputs_end_time(const input_table *tabs, size_t ntab)
     return end;
 }
 
+#define FROM_MD(attribute) "DefaultExperiment " attribute " of the FMU's modelDescription.xml"
+
 /* The stop time: --stop-time if given; else the end of the inputs, so that a record is run to its
  * end rather than cut at the FMU's DefaultExperiment (RockingWall's 10 s of a 40-s record); else
- * DefaultExperiment stopTime, else 1. A given stop time before the inputs' end gets a note. */
-static double choose_stop_time(double requested, const model_description *md, const input_table *tabs, size_t ntab)
+ * DefaultExperiment stopTime, else 1. A given stop time before the inputs' end gets a note.
+ * *label says where it came from. */
+static double choose_stop_time(double requested, const model_description *md, const input_table *tabs, size_t ntab,
+                               const char **label)
 {
     const double inputs_end = inputs_end_time(tabs, ntab);
     if (!isnan(requested)) {
         if (ntab > 0 && requested < inputs_end)
             fprintf(stderr, "fmi2sim: note: the run stops at t = %.10g s (--stop-time), before the inputs end at "
                             "t = %.10g s\n", requested, inputs_end);
+        *label = "--stop-time";
         return requested;
     }
-    if (ntab > 0) return inputs_end;
+    if (ntab > 0) {
+        *label = "stop time (the inputs' last sample)";
+        return inputs_end;
+    }
+    *label = md->has_stop_time ? "stop time (" FROM_MD("stopTime") ")" : "stop time (the default)";
     return md->has_stop_time ? md->stop_time : 1.0;
 }
 
 int main(int argc, char **argv)
 {
     const char *fmu_path = NULL, *csv_path = NULL, *at2_path = NULL, *out_path = NULL;
-    const char *summary_path = NULL;
+    const char *summary_path = NULL, *start_label, *stop_label;
     sim_summary summary = {0};
     double ag_scale = 1.0, g = 9.81;
     int stats_on = 0, status = 1;
@@ -354,8 +386,15 @@ int main(int argc, char **argv)
     if (fmu_unpack(fmu_path, &archive, err, sizeof err) != 0) { status = die("%s", err); goto out; }
     snprintf(mdpath, sizeof mdpath, "%s/modelDescription.xml", archive.dir);
     if (md_parse(mdpath, &md, err, sizeof err) != 0) { status = die("%s: %s", fmu_path, without_temp_dir(err, &archive)); goto out; }
-    for (size_t i = 0; i < nsets; i++)
+    for (size_t i = 0; i < nsets; i++) {
+        for (size_t j = 0; j < i; j++)
+            if (strcmp(sets[i].name, sets[j].name) == 0) {
+                status = die("--set %s is given twice (%s and %s): give each variable once", sets[i].name,
+                             sets[j].value, sets[i].value);
+                goto out;
+            }
         if ((status = check_start_value(&md, sets[i].name, sets[i].value)) != 0) goto out;
+    }
     if (csv_path) {
         if (input_read_csv(csv_path, &tabs[ntab], err, sizeof err) != 0) { status = die("%s", err); goto out; }
         tab_files[ntab++] = csv_path;
@@ -368,9 +407,14 @@ int main(int argc, char **argv)
     status = 2;
 
     opt.start_time = !isnan(start) ? start : (md.has_start_time ? md.start_time : 0.0);
-    opt.stop_time = choose_stop_time(stop, &md, tabs, ntab);
-    if (!(opt.stop_time > opt.start_time)) { die("stop time %g is not after start time %g", opt.stop_time, opt.start_time); goto out; }
-    if (check_times(&opt, opt.max_step, interval) != 0) goto out;
+    start_label = !isnan(start) ? "--start-time" : md.has_start_time ? "start time (" FROM_MD("startTime") ")"
+                                                                      : "start time (the default)";
+    opt.stop_time = choose_stop_time(stop, &md, tabs, ntab, &stop_label);
+    if (!(opt.stop_time > opt.start_time)) {
+        die("%s %g is not after %s %g", stop_label, opt.stop_time, start_label, opt.start_time);
+        goto out;
+    }
+    if (check_times(&opt, start_label, stop_label, opt.max_step, interval) != 0) goto out;
     opt.output_interval = !isnan(interval) ? interval : (opt.stop_time - opt.start_time) / 500.0;
     opt.start_values = sets;
     opt.n_start_values = nsets;

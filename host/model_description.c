@@ -100,6 +100,7 @@ static int parse_variable(xmlNode *sv, md_variable *v, char *err, size_t n)
     unsigned long long number;
     xmlNode *typed = NULL;
     memset(v, 0, sizeof *v);
+    v->line = sv->line;
     v->name = attr(sv, "name");
     if (!v->name || !vr) {
         snprintf(err, n, "line %d: ScalarVariable without name or valueReference", sv->line);
@@ -249,6 +250,33 @@ static int read_variables(const char *path, xmlNode *root, model_description *md
     return 0;
 }
 
+static int by_name(const void *a, const void *b)
+{
+    const md_variable *x = *(const md_variable *const *)a, *y = *(const md_variable *const *)b;
+    const int c = strcmp(x->name, y->name);
+    return c ? c : (x->line > y->line) - (x->line < y->line);
+}
+
+/* FMI 2.0: variable names are unique. Two variables of one name would both be written under it
+ * (a CSV header "time,s1,s1") and --set would reach only the first. Sorted, so that a hostile
+ * file of a million variables is checked in n log n. */
+static int check_unique_names(const char *path, const model_description *md, char *err, size_t n)
+{
+    const md_variable **sorted = calloc(md->n_vars + 1, sizeof *sorted);
+    int rc = 0;
+    if (!sorted) { snprintf(err, n, "%s: out of memory", path); return -1; }
+    for (size_t i = 0; i < md->n_vars; i++) sorted[i] = &md->vars[i];
+    qsort(sorted, md->n_vars, sizeof *sorted, by_name);
+    for (size_t i = 1; i < md->n_vars && rc == 0; i++)
+        if (strcmp(sorted[i - 1]->name, sorted[i]->name) == 0) {
+            snprintf(err, n, "%s:%d: variable '%s' is declared twice (also on line %d): names must be unique", path,
+                     sorted[i]->line, sorted[i]->name, sorted[i - 1]->line);
+            rc = -1;
+        }
+    free(sorted);
+    return rc;
+}
+
 /* ModelStructure/Derivatives: each Unknown is the 1-based index of a Real variable with a
  * derivative attribute naming a Real state, and every such variable is listed (so a missing
  * <Derivatives> cannot silently freeze the states). */
@@ -356,7 +384,7 @@ int md_parse(const char *path, model_description *md, char *err, size_t n)
     if (!md->guid) { snprintf(err, n, "%s: no guid attribute", path); goto fail; }
     if (read_model_exchange(path, root, md, err, n) != 0 || read_event_indicators(path, root, md, err, n) != 0 ||
         read_default_experiment(path, root, md, err, n) != 0 || read_variables(path, root, md, err, n) != 0 ||
-        read_derivatives(path, root, md, err, n) != 0 || read_outputs(path, root, md, err, n) != 0)
+        check_unique_names(path, md, err, n) != 0 || read_derivatives(path, root, md, err, n) != 0 || read_outputs(path, root, md, err, n) != 0)
         goto fail;
     xmlFreeDoc(doc);
     return 0;

@@ -16,6 +16,7 @@ typedef struct {
     char *start;       /* textual start value, may be NULL */
     double nominal;    /* Real: nominal attribute (finite, > 0) or 1 */
     char *derivative_of; /* Real: the derivative attribute (1-based index of its state), may be NULL */
+    int line;          /* of its ScalarVariable in the file */
 } md_variable;
 
 /* More event indicators than this is no model but a corrupt or hostile file (CVODE allocates

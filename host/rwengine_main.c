@@ -1,4 +1,4 @@
-/* rwengine: one run of the exact event-driven engine (fmu_src/engine/rw_engine.c) from the command line,
+/* rwengine: one run of the exact event-driven engine (fmu_src/engine/rw_engine.h) from the command line,
  * in fmi2sim's form (--set, --input/--ag, --stop-time), printing the peaks, the collapse and the
  * counters as one JSON object. For whole-process timing and shell pipelines; the batch C API and
  * the Python binding (rockingwall.engine) are the main ways in. */

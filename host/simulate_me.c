@@ -16,6 +16,7 @@
  * the same loop: one step at a time, the same stop times, roots, dense output and re-initialisation
  * (the integrator layer below is the only place that knows which one runs). */
 #include "simulate_me.h"
+#include "fmu_inputs.h"
 
 #include <arkode/arkode_erkstep.h>
 #include <cvode/cvode.h>
@@ -34,9 +35,7 @@ typedef struct {
     const sim_options *opt;
     fmi2Component c;
     size_t nx, nz;
-    unsigned int *in_vr;    /* one per input column: the FMU variable it drives */
-    const input_table **in_tab;
-    size_t *in_col, n_in;
+    fmu_inputs ins;          /* the input columns and the FMU variables they drive */
     const md_variable **out; /* outputs, XML order */
     size_t n_out;
     char *err;
@@ -94,33 +93,26 @@ static void cvode_error_handler(int code, const char *module, const char *functi
 static void cvode_failed(sim *s, int flag, double t)
 {
     char *name = CVodeGetReturnFlagName(flag);
-    fail(s, "CVODE failed at t = %.10g: %s (%s)", t, name ? name : "?", s->cvode_msg);
+    char inputs[768];
+    fail(s, "CVODE failed at t = %.10g: %s (%s)%s", t, name ? name : "?", s->cvode_msg,
+         fmu_inputs_describe(&s->ins, t, inputs, sizeof inputs));
     free(name);
 }
 
-/* The first input sample time after t (INFINITY when none). */
-static double next_input_time(const sim *s, double t)
-{
-    double next = INFINITY;
-    for (size_t i = 0; i < s->opt->n_inputs; i++) {
-        const input_table *tab = &s->opt->inputs[i];
-        size_t lo = 0, hi = tab->n;
-        while (lo < hi) { /* first sample > t */
-            size_t mid = (lo + hi) / 2;
-            if (tab->t[mid] <= t) lo = mid + 1; else hi = mid;
-        }
-        if (lo < tab->n && tab->t[lo] < next) next = tab->t[lo];
-    }
-    return next;
-}
-
-/* Inputs at time t into the FMU. */
+/* The continuous inputs at time t into the FMU (Continuous-Time Mode: discrete inputs wait for
+ * an event). */
 static int apply_inputs(sim *s, double t)
 {
-    for (size_t i = 0; i < s->n_in; i++) {
-        double v = input_value(s->in_tab[i], s->in_col[i], t);
-        FMI(s, s->fmu->setReal(s->c, &s->in_vr[i], 1, &v), "fmi2SetReal (input)");
-    }
+    const char *call = "fmi2SetReal (input)";
+    FMI(s, fmu_inputs_set_continuous(&s->ins, s->fmu, s->c, t, &call), call);
+    return 0;
+}
+
+/* Every input at time t, the value from t on (Initialization and Event Mode). */
+static int apply_all_inputs(sim *s, double t)
+{
+    const char *call = "fmi2SetReal (input)";
+    FMI(s, fmu_inputs_set_all(&s->ins, s->fmu, s->c, t, &call), call);
     return 0;
 }
 
@@ -360,7 +352,9 @@ static int integrator_step(sim *s, const integrator *I, double t_stop, N_Vector 
         flag = ERKStepEvolve(I->mem, t_stop, y, tret, ARK_ONE_STEP);
         if (flag < 0) {
             char *name = ERKStepGetReturnFlagName(flag); /* malloc'ed, like CVODE's */
-            fail(s, "ARKODE ERKStep failed at t = %.10g: %s (%s)", *tret, name ? name : "?", s->cvode_msg);
+            char inputs[768];
+            fail(s, "ARKODE ERKStep failed at t = %.10g: %s (%s)%s", *tret, name ? name : "?", s->cvode_msg,
+                 fmu_inputs_describe(&s->ins, *tret, inputs, sizeof inputs));
             free(name);
             return -1;
         }
@@ -418,22 +412,8 @@ static void integrator_free(integrator *I)
 static int setup_io(sim *s)
 {
     const model_description *md = s->md;
-    for (size_t i = 0; i < s->opt->n_inputs; i++) s->n_in += s->opt->inputs[i].ncols;
-    s->in_vr = calloc(s->n_in + 1, sizeof *s->in_vr);
-    s->in_tab = calloc(s->n_in + 1, sizeof *s->in_tab);
-    s->in_col = calloc(s->n_in + 1, sizeof *s->in_col);
     s->out = calloc(md->n_vars + 1, sizeof *s->out);
-    if (!s->in_vr || !s->in_tab || !s->in_col || !s->out) return fail(s, "out of memory");
-    {
-        size_t k = 0;
-        for (size_t i = 0; i < s->opt->n_inputs; i++)
-            for (size_t c = 0; c < s->opt->inputs[i].ncols; c++, k++) {
-                const md_variable *v = md_find(md, s->opt->inputs[i].cols[c].name);
-                s->in_vr[k] = v->vr; /* existence and type checked in main */
-                s->in_tab[k] = &s->opt->inputs[i];
-                s->in_col[k] = c;
-            }
-    }
+    if (!s->out || fmu_inputs_setup(&s->ins, md, s->opt->inputs, s->opt->n_inputs) != 0) return fail(s, "out of memory");
     for (size_t i = 0; i < md->n_vars; i++)
         if (strcmp(md->vars[i].causality, "output") == 0) s->out[s->n_out++] = &md->vars[i];
     if (s->opt->summary) {
@@ -478,7 +458,7 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     if (setup_io(s) != 0 || apply_start_values(s) != 0) return -1;
     FMI(s, s->fmu->setupExperiment(s->c, fmi2False, 0.0, t0, fmi2True, tend), "fmi2SetupExperiment");
     FMI(s, s->fmu->enterInitializationMode(s->c), "fmi2EnterInitializationMode");
-    if (apply_inputs(s, t0) != 0) return -1;
+    if (apply_all_inputs(s, t0) != 0) return -1;
     FMI(s, s->fmu->exitInitializationMode(s->c), "fmi2ExitInitializationMode");
     if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) return -1;
     if (info.terminateSimulation) { st->terminated_by_model = 1; return write_row(s, t0); }
@@ -496,9 +476,9 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
     if (write_row(s, t0) != 0) goto done;
 
     while (t < tend - eps) {
-        const double t_stop = fmin(fmin(tend, next_event), next_input_time(s, t + eps));
+        const double t_stop = fmin(fmin(tend, next_event), fmu_inputs_next_time(&s->ins, t + eps));
         double tret;
-        int state_event = 0, time_event, step_event = 0;
+        int state_event = 0, time_event, step_event = 0, input_event;
         fmi2Boolean enter_event = fmi2False, terminate = fmi2False;
         if (s->nx) {
             const int flag = integrator_step(s, &I, t_stop, y, &tret);
@@ -519,27 +499,32 @@ static int run(sim *s, sim_stats *st, SUNContext ctx)
             step_event = enter_event == fmi2True;
         }
         time_event = tret >= next_event - eps;
+        /* CVODE stops at every sample: one where a discrete input changes or a continuous one steps
+         * is an event, at which the new values are set */
+        input_event = fabs(tret - t_stop) <= eps && fmu_inputs_event_at(&s->ins, t_stop);
+        if (input_event) tret = t_stop;
         if (fabs(tret - (t0 + (double)k_out * dt)) <= eps) { /* a grid point: its row, before any event */
             if (write_row(s, tret) != 0) goto done;
             k_out++;
-        } else if (state_event || time_event || step_event) {
+        } else if (state_event || time_event || step_event || input_event) {
             if (write_row(s, tret) != 0) goto done; /* the row before the event */
         }
         t = tret;
-        if (!(state_event || time_event || step_event)) continue;
+        if (!(state_event || time_event || step_event || input_event)) continue;
 
         st->events++;
         st->state_events += state_event;
-        st->time_events += time_event;
+        st->time_events += time_event || input_event;
         st->step_events += step_event;
         FMI_DONE(s, s->fmu->enterEventMode(s->c), "fmi2EnterEventMode");
+        if (apply_all_inputs(s, t) != 0) goto done;
         if (event_iteration(s, &info, &values_changed, &nominals_changed) != 0) goto done;
         if (info.terminateSimulation) { st->terminated_by_model = 1; if (write_row(s, t) != 0) goto done; break; }
         next_event = info.nextEventTimeDefined ? info.nextEventTime : INFINITY;
         FMI_DONE(s, s->fmu->enterContinuousTimeMode(s->c), "fmi2EnterContinuousTimeMode");
         if (s->nx) FMI_DONE(s, s->fmu->getContinuousStates(s->c, N_VGetArrayPointer(y), s->nx), "fmi2GetContinuousStates");
         if (write_row(s, t) != 0) goto done; /* the row after the event */
-        if (s->nx && (values_changed || nominals_changed || state_event)) {
+        if (s->nx && (values_changed || nominals_changed || state_event || input_event)) {
             if (nominals_changed && set_tolerances(s, &I, abstol) != 0) goto done;
             add_counters(&I, st);
             integrator_reinit(&I, t, y);
@@ -575,7 +560,8 @@ int simulate_me(const model_description *md, const fmu_binary *fmu, const sim_op
         if (rc == 0) fmu->terminate(s.c);
         fmu->freeInstance(s.c);
     }
-    free(s.in_vr); free(s.in_tab); free(s.in_col); free(s.out);
+    fmu_inputs_free(&s.ins);
+    free(s.out);
     SUNContext_Free(&ctx);
     stats->cpu_seconds = (double)(clock() - c0) / CLOCKS_PER_SEC;
     return rc == 0 && !s.failed ? 0 : -1;

@@ -1,4 +1,4 @@
-"""Speed of the exact engine (fmu_src/engine/rw_engine.c) against the other ways to run the wall, in one run.
+"""Speed of the exact engine (fmu_src/engine/) against the other ways to run the wall, in one run.
 
 Per 80-s record (El Centro 1940 at 50 %, wall 1 of the paper): the engine in-process (ctypes), the
 command line build/rwengine as a whole process (wall time, start-up and record reading included),

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Generate each FMU's modelDescription.xml from its C variable table, the one source of truth
 for its variables: RockingWall (fmu_src/models/RockingWall/model_variables.h), Diaphragm
-(fmu_src/models/Diaphragm/diaphragm_variables.h) and Building (fmu_src/models/Building/building_variables.h),
+(fmu_src/models/Diaphragm/diaphragm_variables.h), Building (fmu_src/models/Building/building_variables.h)
+and BuildingWithWalls (fmu_src/models/BuildingWithWalls/bw_variables.h),
 each into its folder fmu_src/models/NAME/: the FMI 2.0 fmi2/modelDescription.xml, and the FMI 3.0
 fmi3/modelDescription.xml and fmi3/buildDescription.xml (the FMU's sources/buildDescription.xml).
 
@@ -21,10 +22,12 @@ REPO = pathlib.Path(__file__).resolve().parents[1]
 
 # Sources listed in <SourceFiles> of <ModelExchange>: they build without SUNDIALS (cs_without_cvode.c
 # stands in for cs_cvode.c), so Co-Simulation, which needs CVODE, lists none.
-SHARED_SOURCES = ["fmi2Functions.c", "fmu_core.c", "cs_without_cvode.c"]
-FMI3_SHARED_SOURCES = ["fmi3Functions.c", "fmu_core.c", "cs_without_cvode.c"]
+# The FMI layer's version-free half, under either API layer
+VERSION_FREE_SOURCES = ["fmu_instance.c", "fmu_functions.c", "fmu_core.c", "cs_without_cvode.c"]
+SHARED_SOURCES = ["fmi2Functions.c"] + VERSION_FREE_SOURCES
+FMI3_SHARED_SOURCES = ["fmi3Functions.c"] + VERSION_FREE_SOURCES
 MODELS_DIR = REPO / "fmu_src" / "models"
-# the value reference of FMI 3.0's independent variable `time` (FMI3_TIME_VR of fmi3Functions.c)
+# the value reference of FMI 3.0's independent variable `time` (FMU_TIME_VR of fmu_instance.h)
 FMI3_TIME_VR = 0
 MODELS = {
     "RockingWall": dict(
@@ -34,7 +37,9 @@ MODELS = {
         description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
                     "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
         sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_indicators.c", "rw_outputs.c",
-                 "rw_events.c", "rw_engine.c", "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c",
+                 "rw_events.c", "rw_engine_indicators.c", "rw_engine_search.c", "rw_engine_peaks.c",
+                 "rw_engine_events.c", "rw_engine_resolve.c", "rw_engine_band.c", "rw_engine_stepper.c",
+                 "rw_engine_object.c", "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c",
                  "cs_exact.c"] + SHARED_SOURCES,
         log_events="Impacts, mid-hinge switches, opening and closing of hinges, collapse"),
     "Diaphragm": dict(
@@ -52,6 +57,16 @@ MODELS = {
                     "driven by the ground acceleration and the out-of-plane walls' forces",
         sources=["building_physics.c", "building_model.c"] + SHARED_SOURCES,
         log_events="Instantiation and Co-Simulation steps"),
+    "BuildingWithWalls": dict(
+        header=MODELS_DIR / "BuildingWithWalls" / "bw_variables.h",
+        output=MODELS_DIR / "BuildingWithWalls" / "fmi2" / "modelDescription.xml", prefix="BW",
+        description="A building of 1 to 5 storeys per metre of face-loaded wall as one model: in each storey a "
+                    "rocking wall (RockingWall's physics and event rules) standing on the diaphragm below and tied "
+                    "to the one above, the diaphragms and floors (linear, Bouc-Wen, pinched) as states of the same "
+                    "integration, driven by the ground acceleration",
+        sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_indicators.c", "rw_outputs.c",
+                 "rw_events.c", "building_physics.c", "rw_scene.c", "bw_params.c", "bw_model.c"] + SHARED_SOURCES,
+        log_events="Walls that collapse and leave the scene"),
 }
 # the defaults of the functions below: RockingWall
 HEADER = MODELS["RockingWall"]["header"]
@@ -77,6 +92,7 @@ UNITS = {
     "rad/s": {"rad": 1, "s": -1},
     "rad/s2": {"rad": 1, "s": -2},
     "1/s": {"s": -1},
+    "N.s/m2": {"kg": 1, "m": -1, "s": -1},
     "s": {"s": 1},
 }
 LOG_CATEGORIES = [

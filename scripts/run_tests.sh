@@ -26,7 +26,8 @@ RW_ASAN_BUILD_DIR=build-asan .venv/bin/python -m pytest tests/python/test_fmu_as
 echo "== fmi2sim under AddressSanitizer + UndefinedBehaviorSanitizer"
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 RW_BUILD_DIR=build-asan \
   .venv/bin/python -m pytest tests/python/test_fmi2sim.py tests/python/test_fmi2sim_bad_input.py \
-  tests/python/test_fmi2sim_hostile_io.py tests/python/test_fmi2sim_hostile_fmus.py -q -p no:cacheprovider
+  tests/python/test_fmi2sim_hostile_io.py tests/python/test_fmi2sim_hostile_fmus.py \
+  tests/python/test_fmi2sim_hostile_names.py tests/python/test_fmi2sim_discrete_inputs.py -q -p no:cacheprovider
 
 echo "== Python tests"
 .venv/bin/python -m pytest tests/python -q "$@"

@@ -121,7 +121,7 @@ static void result_init(rw_engine_result *res)
     res->t_collapse = NAN;
 }
 
-/* Start: the state at t_start (x0 or rest) and the input there, then rw_engine_begin. */
+/* Start: the state at t_start (x0 or rest) and the input there, then rwe_begin. */
 static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options *o, rw_regime *m, double x[RW_NX])
 {
     const ptrdiff_t seg = segment_of(rec, o->t_start);
@@ -131,7 +131,7 @@ static int run_start(rw_engine *e, const rw_record *rec, const rw_engine_options
     in.u_top = li.u_top + li.u_slope * (o->t_start - (seg >= 0 ? rec->t[seg] : o->t_start));
     if (o->x0) memcpy(x, o->x0, sizeof(double) * RW_NX);
     else memset(x, 0, sizeof(double) * RW_NX);
-    return rw_engine_begin(e, m, x, o->t_start, &in);
+    return rwe_begin(e, m, x, o->t_start, &in);
 }
 
 int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_options *o, rw_engine_result *res)
@@ -173,11 +173,11 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
         const double t_in = seg >= 0 ? rec->t[seg] : t;
         double t_next = (seg + 1 < (ptrdiff_t)rec->n) ? rec->t[seg + 1] : o->t_end;
         if (t_next > o->t_end) t_next = o->t_end;
-        if (t_next > t && !rw_engine_quiet_segment(e, &m, x, &t, t_next, &in, t_in))
-            rc = rw_engine_advance(e, &m, x, &t, t_next, &in, t_in);
+        if (t_next > t && !rwe_quiet_segment(e, &m, x, &t, t_next, &in, t_in))
+            rc = rwe_advance(e, &m, x, &t, t_next, &in, t_in);
         seg++;
     }
-    rw_engine_fill_outputs(e);
+    rwe_fill_outputs(e);
     res->peak_s1 = e->peak_s1;
     res->peak_s2 = e->peak_s2;
     res->collapsed = e->collapsed;

@@ -1,11 +1,15 @@
-/* The exact engine's linear regions (rw_engine.h): the modal decomposition of each region of the
- * model between events (open hinges under a law's affine moments, Doherty's 1DOF, closed rigid
- * hinges) and the cache of decompositions. */
-#include "rw_engine_internal.h"
+/* The engine's linear regions: their modes (cached), and the region of the motion.
+ * The modal decomposition of each region of the model between events (open hinges under a law's
+ * affine moments, Doherty's 1DOF, closed rigid hinges), cached with the Stumpff coefficients of its
+ * substeps, and the region of the motion with its indicator lines and collapse form. */
+#include "rw_engine_span.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
+
+#define RW_SELECT_DT 1e-9 /* s: look-ahead of the direction that picks the region on a breakpoint */
 
 static void identity_modes(rw_modes2 *E, double p10, double pi10)
 {
@@ -79,14 +83,14 @@ static int modes_general(const rw_derived *d, const double Ks[2][2], rw_modes2 *
     return 0;
 }
 
-void rw_engine_modal_force(const rw_modes2 *E, const double F[2], double out[2])
+void rwe_modal_force(const rw_modes2 *E, const double F[2], double out[2])
 {
     out[0] = E->fm[0][0] * F[0] + E->fm[0][1] * F[1];
     out[1] = E->fm[1][0] * F[0] + E->fm[1][1] * F[1];
 }
 
 /* 2DOF with open hinges: the region's stiffness K - J (Eq. 3.1, 3.3). */
-int rw_engine_modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
+int rwe_modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
 {
     const rw_derived *d = &e->D;
     const double k = e->P.Kd * e->P.h * e->P.h / 4.0;
@@ -100,9 +104,9 @@ int rw_engine_modes_open(const rw_engine *e, const double J[2][2], rw_modes2 *E)
         }
     if (J[0][1] == J[1][0]) modes_symmetric(d, k, G, E);
     else if (modes_general(d, Ks, E) != 0) return -1;
-    rw_engine_modal_force(E, d->pa, E->ga);
+    rwe_modal_force(E, d->pa, E->ga);
     F[0] = F[1] = d->fu;
-    rw_engine_modal_force(E, F, E->gu);
+    rwe_modal_force(E, F, E->gu);
     return 0;
 }
 
@@ -206,8 +210,8 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_regime *m, double g0
 
 /* The region the state x (moving along dq_sel) is in, under the regime m. NULL if the engine
  * cannot decompose it (msg filled). */
-rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_regime *m, const double x[RW_NX], const double dq_sel[2],
-                                 double g0[2], rw_affine_Q *aq)
+rw_cache_entry *rwe_region_of(rw_engine *e, const rw_regime *m, const double x[RW_NX], const double dq_sel[2],
+                              double g0[2], rw_affine_Q *aq)
 {
     double Q[2], J[2][2], c[2], key[4];
     rw_cache_entry *ce;
@@ -229,14 +233,130 @@ rw_cache_entry *rw_engine_region_of(rw_engine *e, const rw_regime *m, const doub
     ce = cache_find(e, 0, 0, key);
     if (!ce) {
         rw_modes2 E;
-        if (rw_engine_modes_open(e, J, &E) != 0) {
+        if (rwe_modes_open(e, J, &E) != 0) {
             snprintf(e->msg, sizeof e->msg, "a region of hinge law %s has complex or repeated modes: not supported",
                      e->law->name);
             return NULL;
         }
         ce = cache_add(e, 0, 0, key, &E);
     }
-    rw_engine_modal_force(&ce->E, c, g0);
+    rwe_modal_force(&ce->E, c, g0);
     return ce;
 }
 
+/* The direction that picks the region on a breakpoint: dq a moment later (the acceleration is
+ * continuous across a breakpoint, so this decides a grazing touch by its curvature). */
+static void selection_rate(const rw_engine *e, const rw_regime *m, const rw_input *in, const double x[RW_NX],
+                           double dq_sel[2])
+{
+    double dx[RW_NX];
+    rw_derivatives(&e->P, &e->D, m, in, x, dx);
+    dq_sel[0] = x[2] + RW_SELECT_DT * dx[2];
+    dq_sel[1] = x[3] + RW_SELECT_DT * dx[3];
+}
+
+/* Stumpff coefficients of a full substep h, cached per region. A length within rounding of the
+ * absolute time t of a cached one takes its coefficients: the record's sample spacing, t[i+1] - t[i],
+ * differs from one segment to the next by the rounding of t, and so does the motion's time. */
+const double (*rwe_substep_coefficients(rw_cache_entry *c, double h, double t))[4]
+{
+    const double same = 4.0 * DBL_EPSILON * (fabs(t) + h);
+    int j, i;
+    for (j = 0; j < 2; j++)
+        if (c->h_valid[j] && fabs(c->h[j] - h) <= same) {
+            c->h_next = j ^ 1; /* least recently used: the sample spacing stays after an event's odd remainder */
+            return (const double(*)[4])c->C[j];
+        }
+    j = c->h_next;
+    c->h_next ^= 1;
+    c->h[j] = h;
+    c->h_valid[j] = 1;
+    for (i = 0; i < 2; i++) stumpff(c->E.lam[i] * h * h, c->C[j][i]);
+    return (const double(*)[4])c->C[j];
+}
+
+/* the indicators that are lines of the rotations under the regime m (they change only at events).
+ * Under a law of q alone the mid-height hinge's switch changes nothing in the motion
+ * (rw_mid_switch_is_bookkeeping): its line is left out, so the engine does not stop there. Under a
+ * wall held at its top that switch comes microseconds after each base crossing, and each such pair
+ * of events cost as much as seven quiet segments. The side is brought up to date by the event
+ * update at the next event and at the end of every step (rw_engine_step). */
+void rwe_region_lines(rw_engine *e, const rw_regime *m)
+{
+    int k;
+    rw_indicator_lines(&e->P, &e->D, m, e->lines);
+    if (e->mid_is_bookkeeping) {
+        const rw_indicator_line never = {{0.0, 0.0}, 0.0, 0.0, 1.0, 0};
+        e->lines[RW_Z_MID] = never;
+    }
+    e->line_mask = 0;
+    for (k = 0; k < RW_NZ; k++) {
+        const rw_indicator_line *L = &e->lines[k];
+        if (!L->none) e->line_mask |= 1u << k;
+        e->line_arrays.a0[k] = L->a[0];
+        e->line_arrays.a1[k] = L->a[1];
+        e->line_arrays.s[k] = L->s;
+        e->line_arrays.t[k] = L->t;
+        e->line_arrays.c[k] = L->c;
+    }
+}
+
+/* The region's collapse form (rw_collapse_form_of) and the radius beyond which it cannot vanish
+ * (rw_engine_band.c collapse_cannot_vanish): |c|/lam_min with a 1 % margin, 0 when c is zero to rounding, infinite
+ * when the symmetric part of A is not positive definite. */
+static void collapse_form_of_region(rw_engine *e)
+{
+    const rw_collapse_form *f = &e->collapse_form;
+    double mean, half_diff, off, lam_min, size, c_norm;
+    rw_collapse_form_of(&e->D, e->region_aq.c, (const double(*)[2])e->region_aq.J, &e->collapse_form);
+    mean = 0.5 * (f->A[0][0] + f->A[1][1]);
+    half_diff = 0.5 * (f->A[0][0] - f->A[1][1]);
+    off = 0.5 * (f->A[0][1] + f->A[1][0]);
+    lam_min = mean - sqrt(half_diff * half_diff + off * off);
+    size = fabs(mean) + fabs(half_diff) + fabs(off);
+    c_norm = sqrt(f->c[0] * f->c[0] + f->c[1] * f->c[1]);
+    e->collapse_radius = INFINITY;
+    if (lam_min > 1e-9 * size)
+        e->collapse_radius = c_norm <= 1e-12 * size * e->D.q_topple ? 0.0 : 1.01 * c_norm / lam_min;
+}
+
+/* The region of the motion at (sc->x, t), with its modal forcing (sc->g0) and affine hinge moments
+ * (sc->sp.aq): kept from one input segment to the next, since without an event no indicator, so no
+ * breakpoint and no regime, has changed; found again after each event. */
+rw_cache_entry *rwe_current_region(rw_span_ctx *sc, double t)
+{
+    rw_engine *e = sc->e;
+    const rw_regime *m = sc->m;
+    const rw_linear_input *in = sc->in;
+    const double *x = sc->x, t_in = sc->t_in;
+    rw_cache_entry *R;
+    if (!e->region_valid && e->region_keep) { /* rwe_hinge_event_keeps_region */
+        rwe_region_lines(e, m);
+        e->region_valid = 1;
+    }
+    e->region_keep = 0;
+    if (!e->region_valid) {
+        rw_input now;
+        double dq_sel[2];
+        now.ag = in->ag + in->ag_slope * (t - t_in);
+        now.u_top = in->u_top + in->u_slope * (t - t_in);
+        if (e->rigid && e->P.support == RW_FLEXIBLE_TOP) { /* its moments depend on the sides alone */
+            dq_sel[0] = x[2];
+            dq_sel[1] = x[3];
+        } else {
+            selection_rate(e, m, &now, x, dq_sel);
+        }
+        R = rwe_region_of(e, m, x, dq_sel, e->region_g0, &e->region_aq);
+        if (!R) return NULL;
+        rwe_region_lines(e, m);
+        e->closed_mask = rw_closed_hinge_mask(&e->P, m);
+        if (e->closed_mask) rw_closed_force_form(&e->P, &e->D, m, &e->closed_form);
+        if (e->region_aq.valid)
+            collapse_form_of_region(e);
+        e->region = (int)(R - e->cache);
+        e->region_valid = 1;
+    }
+    memcpy(sc->g0, e->region_g0, sizeof e->region_g0);
+    sc->sp.aq = e->region_aq;
+    return &e->cache[e->region];
+}

@@ -51,6 +51,7 @@ static void no_events(void *M, double time, const fmu_logger *log, fmu_event_res
 void fmu_model_with_defaults(fmu_model *m)
 {
     *m = FMU_MODEL;
+    if (m->data_tail_size) m->data_size += m->data_tail_size(); /* one block of data, one byte copy */
     if (!m->get_integer) m->get_integer = no_get_integer;
     if (!m->get_boolean) m->get_boolean = no_get_boolean;
     if (!m->set_real) m->set_real = no_set_real;
@@ -220,17 +221,33 @@ size_t fmu_state_bytes(const void *block)
     return (size_t)h.size;
 }
 
+/* The GUID field of a block for a message: quoted when it is printable text, else the hex of its
+ * first bytes (the block may be anything: its raw bytes must not reach a logger that decodes text). */
+static void guid_as_text(const char guid[64], char *out, size_t n)
+{
+    const unsigned char *g = (const unsigned char *)guid;
+    size_t k;
+    for (k = 0; k < 64 && g[k] >= 0x20 && g[k] < 0x7f && g[k] != '%'; k++) continue;
+    if (k > 0 && k < 64 && g[k] == '\0') {
+        snprintf(out, n, "\"%.*s\"", (int)k, guid);
+        return;
+    }
+    snprintf(out, n, "that is not text (its first bytes %02x %02x %02x %02x ...)", g[0], g[1], g[2], g[3]);
+}
+
 int fmu_state_check(const fmu_core *core, const void *block, size_t n, char *msg, size_t msg_n)
 {
     state_header h, mine;
+    char guid[80];
     if (n < sizeof h)
         return snprintf(msg, msg_n, "the FMU state has %u bytes, fewer than its header (%u)", (unsigned)n, (unsigned)sizeof h), 1;
     if (fmu_state_is_ours(block, msg, msg_n)) return 1;
     memcpy(&h, block, sizeof h);
-    h.guid[sizeof h.guid - 1] = '\0';
-    if (strcmp(h.guid, core->model.guid) != 0)
-        return snprintf(msg, msg_n, "the FMU state belongs to the FMU with GUID %s, this FMU has GUID %s", h.guid,
+    if (strncmp(h.guid, core->model.guid, sizeof h.guid) != 0) {
+        guid_as_text(h.guid, guid, sizeof guid);
+        return snprintf(msg, msg_n, "the FMU state belongs to the FMU with GUID %s, this FMU has GUID %s", guid,
                         core->model.guid), 1;
+    }
     if (h.size != n) return snprintf(msg, msg_n, "the FMU state says it has %llu bytes, but %u were given", h.size, (unsigned)n), 1;
     make_header(core, &mine);
     if (h.data_size != mine.data_size || h.n_inputs != mine.n_inputs || size_of(&h) != n)

@@ -54,6 +54,9 @@ typedef struct {
                               names them by value reference (<EventIndicator>); NULL when nz = 0 */
     size_t data_size; /* bytes of model data the wrapper allocates per instance; plain data: the
                          FMU state (fmi2GetFMUstate) is a byte copy of it */
+    /* Optional: more plain data after data_size bytes, whose size only a function knows (an opaque
+       type: RockingWall's exact engine), allocated and copied into the FMU state with the rest */
+    size_t (*data_tail_size)(void);
 
     /* start values of everything (fmi2Instantiate, fmi2Reset) */
     void (*reset)(void *M);

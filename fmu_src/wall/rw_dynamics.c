@@ -353,7 +353,7 @@ void rw_caps(const rw_params *p, const rw_derived *d, double *cb, double *cm)
     }
 }
 
-/* ---- for the exact engine (rw_engine.c) ------------------------------------------------------
+/* ---- for the exact engine (fmu_src/engine/) --------------------------------------------------
  * Doherty's 1DOF force as an affine function F = F0 + F1*D on the region the motion goes into:
  * on a breakpoint (to rounding) the direction dD decides, as the 2DOF laws' past() does. F is
  * continuous at the breakpoints, so F0 = F(D) - F1*D is the same from both sides. */

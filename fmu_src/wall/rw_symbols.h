@@ -1,7 +1,8 @@
 /* The external symbols of RockingWall's physics (rw_parameters.c, rw_hinge_laws.c, rw_dynamics.c,
- * rw_indicators.c, rw_outputs.c, rw_events.c), its engine (rw_engine*.c) and exact step (cs_exact.c) under FMI2_FUNCTION_PREFIX
- * (see fmu_symbol.h). A new external function of the physics needs a line
- * here: the test combined_fmus_symbols lists any symbol without the prefix. */
+ * rw_indicators.c, rw_outputs.c, rw_events.c), its engine's API (rw_engine.h) and exact step (cs_exact.c) under
+ * FMI2_FUNCTION_PREFIX (see fmu_symbol.h); the engine's internal functions have theirs in rw_engine_internal.h.
+ * A new external function of the physics needs a line here: the test combined_fmus_symbols lists any symbol
+ * without the prefix. */
 #ifndef RW_SYMBOLS_H
 #define RW_SYMBOLS_H
 
@@ -22,20 +23,15 @@
 #define rw_derivatives FMU_SYMBOL(rw_derivatives)
 #define rw_derive FMU_SYMBOL(rw_derive)
 #define rw_energy FMU_SYMBOL(rw_energy)
-#define rw_engine_region_of FMU_SYMBOL(rw_engine_region_of)
-#define rw_engine_modes_open FMU_SYMBOL(rw_engine_modes_open)
-#define rw_engine_modal_force FMU_SYMBOL(rw_engine_modal_force)
-#define rw_engine_begin FMU_SYMBOL(rw_engine_begin)
-#define rw_engine_advance FMU_SYMBOL(rw_engine_advance)
-#define rw_engine_quiet_segment FMU_SYMBOL(rw_engine_quiet_segment)
-#define rw_engine_fill_outputs FMU_SYMBOL(rw_engine_fill_outputs)
 #define rw_engine_free FMU_SYMBOL(rw_engine_free)
 #define rw_engine_init FMU_SYMBOL(rw_engine_init)
 #define rw_engine_new FMU_SYMBOL(rw_engine_new)
 #define rw_engine_region_motion FMU_SYMBOL(rw_engine_region_motion)
 #define rw_engine_run FMU_SYMBOL(rw_engine_run)
 #define rw_engine_run_many FMU_SYMBOL(rw_engine_run_many)
+#define rw_engine_size FMU_SYMBOL(rw_engine_size)
 #define rw_engine_step FMU_SYMBOL(rw_engine_step)
+#define rw_engine_track_dissipated FMU_SYMBOL(rw_engine_track_dissipated)
 #define rw_event_indicators FMU_SYMBOL(rw_event_indicators)
 #define rw_event_indicators_some FMU_SYMBOL(rw_event_indicators_some)
 #define rw_event_indicator_rates FMU_SYMBOL(rw_event_indicator_rates)

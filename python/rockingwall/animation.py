@@ -11,6 +11,7 @@ import numpy as np
 from matplotlib import animation
 from tqdm import tqdm
 
+from . import outputs
 from .api import simulate
 from .units import format_kd
 
@@ -92,7 +93,7 @@ def animate(wall, rec, out, t_end=20.0, speed=1.0, fps=12, exaggerate=5.0):
         return lower_patch, upper_patch, spring_line, label, marker
 
     anim = animation.FuncAnimation(fig, draw, frames=len(frames), blit=True)
-    out = pathlib.Path(out)
     with tqdm(total=len(frames), desc="frames") as bar:
-        anim.save(out, writer=animation.PillowWriter(fps=fps), progress_callback=lambda i, n: bar.update(1))
+        outputs.write_atomic(pathlib.Path(out), lambda tmp: anim.save(
+            tmp, writer=animation.PillowWriter(fps=fps), progress_callback=lambda i, n: bar.update(1)), "--out")
     return len(frames), np.abs(s1).max(), np.abs(s2).max()

@@ -4,15 +4,15 @@ that has mass (`diaphragm=`), the wall under it by the scene solver. Every resul
 (rockingwall.scenes) and what that scene leaves out."""
 import dataclasses
 import os
-import tempfile
 
 import numpy as np
 import pandas as pd
 
-from . import fmi2sim, names, paths, scenes
+from . import bounds, fmi2sim, names, paths, robustness, scenes, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .building import monolithic
 from .building.description import TIE_DEFAULT
+from .records import G_STD
 from .wall import Wall
 
 ENGINES = ("exact", "fmi2sim", "fmpy")
@@ -34,6 +34,8 @@ class Result:
     impacts: int
     history: pd.DataFrame
     scene: scenes.Scene = None
+    pga_g: float = float("nan")   # the record's PGA as run [g]
+    ensemble: object = None       # an ensemble.Summary where simulate(..., ensemble=...) ran one
 
     @property
     def s1_over_delta_u(self):
@@ -46,19 +48,37 @@ class Result:
                 "s1_over_Delta_u": self.s1_over_delta_u,
                 "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
 
+    def summary(self, fmt="md"):
+        """The report table of this run (fmt 'md' or 'text'): PGA, peaks, s1/0.6 Delta_u, limit
+        states reached, the ensemble's collapse probability and spread if one ran, the scene."""
+        from . import report_table
+        return report_table.result_summary(self, fmt)
+
 
 def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_interval=0.01, rtol=1e-8,
-             diaphragm=None, tie=TIE_DEFAULT):
+             diaphragm=None, tie=TIE_DEFAULT, ensemble=None):
     """Simulate `wall` (a Wall) under `record` (a Record, accelerations in m/s^2).
     stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
     process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode).
     diaphragm: a building.description.Diaphragm (its stiffness, mass, damping): the wall tied to it
     by `tie` [N/m per m] (the scene solver; engine is then ignored); None: the paper's scene, the
-    wall's top spring K_d ending at a fixed point."""
+    wall's top spring K_d ending at a fixed point.
+    ensemble: an ensemble.Ensemble (or its size): the run's robustness, the same case for walls
+    perturbed within the inputs' uncertainty (on the exact engine or the scene solver, whatever
+    `engine`), summarised in the result's `ensemble` (rockingwall.ensemble)."""
+    result = _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diaphragm, tie)
+    result.pga_g = record.pga / G_STD
+    if ensemble is not None:
+        t_end = run_end(record, stop_time, tail)
+        result.ensemble = robustness.of_result(result, record, t_end, ensemble, diaphragm, tie)
+    return result
+
+
+def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diaphragm, tie):
     if engine not in ENGINES:
         raise ValueError(f"engine {engine!r}: choose one of {', '.join(ENGINES)}")
-    t_end = float(record.t[-1] + tail) if stop_time is None else float(stop_time)
-    grid = np.arange(float(record.t[0]), t_end + output_interval / 2, output_interval)
+    t_end = run_end(record, stop_time, tail)
+    grid = output_grid(float(record.t[0]), t_end, output_interval)
     if diaphragm is not None:
         return _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie)
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
@@ -80,8 +100,45 @@ def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
                   t_collapse, s.impacts, history, scenes.diaphragm(diaphragm, tie))
 
 
+def run_end(record, stop_time, tail):
+    """The run's end [s]: stop_time, else the record's end plus `tail` (>= 0). The run starts at
+    t = 0, so a record must too (or later: the FMU holds its first value until then)."""
+    where = record.label
+    if record.t[0] < 0:
+        raise ValueError(f"{where}: the record starts at t = {record.t[0]:g} s, before the run starts (t = 0): "
+                         "shift its times")
+    if stop_time is None:
+        if not (np.isfinite(tail) and tail >= 0):
+            raise ValueError(f"--tail {tail!r} s: the free vibration after the record must be a finite number >= 0")
+        t_end = float(record.t[-1] + tail)
+    else:
+        t_end = float(stop_time)
+    bounds.run_length(0.0, t_end, f"{where}: stop time")
+    return t_end
+
+
+def output_grid(t0, t_end, interval):
+    """Output times every `interval` from t0, the last one exactly t_end (never past it: the
+    engine refuses an output time after the end, and float steps can overshoot)."""
+    if not (np.isfinite(interval) and interval > 0):
+        raise ValueError(f"output interval {interval!r} s: must be a finite number > 0")
+    n = int(np.floor((t_end - t0) / interval * (1 + 1e-12)))  # whole intervals inside [t0, t_end]
+    if n + 2 > bounds.MAX_OUTPUT_ROWS:
+        raise ValueError(f"output grid of {n + 1} rows (every {interval:g} s over {t_end - t0:g} s): more than "
+                         f"{bounds.MAX_OUTPUT_ROWS} rows; give a larger output interval")
+    grid = t0 + np.arange(n + 1) * interval
+    grid = grid[grid < t_end - 1e-9 * interval]  # the end is appended exactly, once
+    return np.append(grid, t_end)
+
+
 def _exact(wall, record, t_end, grid, rtol, output_interval):
-    r = engine_module.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    try:
+        r = engine_module.run(record.t, record.ag, t_end=t_end, t_out=grid, **wall.params)
+    except engine_module.EngineError as exc:
+        if exc.code != engine_module.UNSUPPORTED:
+            raise
+        raise engine_module.EngineError(exc.code, f"{exc.detail}: run it with --engine fmi2sim "
+                                                  "(engine='fmi2sim' in Python)") from None
     return r.peak_s1, r.peak_s2, r.collapsed, r.t_collapse, r.impacts, r.s1, r.s2
 
 
@@ -90,7 +147,7 @@ def _sets(wall):
 
 
 def _fmi2sim(wall, record, t_end, grid, rtol, output_interval):
-    with tempfile.TemporaryDirectory(prefix="rw_simulate_") as tmp:
+    with scratch.folder("rw_simulate_") as tmp:
         table = os.path.join(tmp, "input.csv")
         pd.DataFrame({"time": record.t, "ag": record.ag}).to_csv(table, index=False, float_format="%.17g")
         out = os.path.join(tmp, "out.csv")

@@ -1,54 +1,105 @@
-"""The plots of `rockingwall assess`: an IDA plot per record and the fragility curves."""
+"""The plots of `rockingwall assess`: an IDA plot per record and the fragility curves. Every group
+(a K_d, or a building's storey) has one colour in every panel, whichever groups have a fit."""
+import textwrap
+
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
-from scipy import stats
+from scipy import special
+
+from .assessment import KD_COLUMN, group_label
 
 
-def ida(cases, wall, states, im_name, path):
-    """Peak s1 against the intensity, one line per K_d, collapses crossed, limit states drawn."""
-    fig, ax = plt.subplots(figsize=(6.5, 4))
-    for kd, d in cases.groupby("Kd_kN_per_m_per_m"):
+def colours(values):
+    """{group value: colour}, the same in every plot of a study (NaN: one group)."""
+    keys = sorted({v for v in values if np.isfinite(v)}) or [np.nan]
+    return {k: f"C{i % 10}" for i, k in enumerate(keys)}
+
+
+def _key(value):
+    return value if np.isfinite(value) else np.nan
+
+
+def _colour(palette, value):
+    return palette[value] if np.isfinite(value) else next(iter(palette.values()))
+
+
+def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
+    """Peak s1 against the intensity, one line per group; collapses as crosses in their own column
+    at the right (a collapsed wall's peak is no displacement), limit states on s1 drawn."""
+    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    palette = colours(cases[column]) if column in cases else {np.nan: "C0"}
+    standing_max = np.nanmax(cases.peak_s1_mm.to_numpy(dtype=float), initial=0.0)
+    thresholds = [s.threshold * 1e3 for s in states if s.quantity == "s1"]
+    x_collapse = 1.1 * max([standing_max, *thresholds, delta_u_mm or 0.0, 1.0])
+    by_group = cases.groupby(column) if column in cases and cases[column].notna().any() else [(np.nan, cases)]
+    for value, d in by_group:
         d = d.sort_values("im")
-        line, = ax.plot(d.peak_s1_mm, d.im, "o-", ms=3, lw=1, label=f"K_d = {kd:g} kN/m per m")
-        c = d[d.collapsed]
-        ax.plot(c.peak_s1_mm, c.im, "x", color=line.get_color(), ms=8)
+        colour = _colour(palette, value)
+        label = group_label(column, value) if np.isfinite(value) else "peak s1"
+        x = np.where(d.collapsed, x_collapse, d.peak_s1_mm)
+        ax.plot(x, d.im, "o-", ms=3, lw=1, color=colour, label=label)
+        ax.plot(x[d.collapsed.to_numpy()], d.im[d.collapsed], "x", color=colour, ms=8)
+        if "s1_p16_mm" in d:  # the ensemble's 16-84 % peaks, a collapse at the collapse column
+            lo, hi = (np.minimum(d[c].to_numpy(dtype=float), x_collapse) for c in ("s1_p16_mm", "s1_p84_mm"))
+            ax.hlines(d.im, lo, hi, color=colour, lw=3, alpha=0.25)
+    ax.axvline(x_collapse, color="0.6", lw=0.5)
+    ax.text(x_collapse, 1.0, "collapse ", transform=ax.get_xaxis_transform(), ha="right", va="top", fontsize=7,
+            color="0.3")
     for s in states:
         if s.quantity == "s1":
             ax.axvline(s.threshold * 1e3, color="r", lw=0.7, ls="--")
-            ax.text(s.threshold * 1e3, ax.get_ylim()[1], f" {s.name}", color="r", fontsize=7, va="top", rotation=90)
-    ax.set_xlabel("peak s1, mid-height [mm]  (x: collapse)")
+            ax.text(s.threshold * 1e3, 0.98, f" {s.name}", transform=ax.get_xaxis_transform(), color="r",
+                    fontsize=7, va="top", rotation=90)
+    ax.set_xlim(left=0)
+    ax.set_xlabel("peak s1, mid-height [mm]  (x: collapse; bands: the ensemble's 16-84 %)")
     ax.set_ylabel(im_name)
-    ax.set_title(f"{cases.record.iloc[0]}: {wall.describe()}", fontsize=7)
+    ax.set_title("\n".join(textwrap.wrap(title, 90)), fontsize=7)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
 
 
-def fragility(frag, im_name, path):
-    """One panel per limit state: the fitted curve per K_d with its 90 % band of medians."""
+def fragility_figure(frag, im_name, column=KD_COLUMN):
+    """One panel per limit state: the fitted curve of every group in its own colour (solid: over
+    the records; dashed: over the records and the ensembles' parameters), its 90 % band of
+    medians, and a legend entry for every group, those without an estimate said so."""
     names = list(dict.fromkeys(frag.limit_state))
-    fig, axes = plt.subplots(1, len(names), figsize=(3.2 * len(names), 3.2), squeeze=False, sharey=True)
+    fig, axes = plt.subplots(1, len(names), figsize=(3.4 * len(names), 3.6), squeeze=False, sharey=True)
+    palette = colours(frag[column]) if column in frag else {np.nan: "C0"}
     fits = frag.dropna(subset=["median"])
-    top = 2 * fits.median_95.max() if len(fits) and np.isfinite(fits.median_95.max()) else 1.0
+    ends = fits.median_95[np.isfinite(fits.median_95)]
+    top = 2 * max(ends.max() if len(ends) else 0.0, fits["median"].max() if len(fits) else 0.5)
     x = np.linspace(1e-3, top, 300)
     for ax, name in zip(axes[0], names):
-        for r in frag[frag.limit_state == name].itertuples(index=False):
-            if np.isnan(r.median):
+        for r in frag[frag.limit_state == name].to_dict("records"):
+            value = r.get(column, np.nan)
+            colour = _colour(palette, value)
+            label = (group_label(column, value) if np.isfinite(value) else "fit")
+            solid = r.get("over", "records") == "records"
+            if not solid:
+                label += " (with parameters)"
+            if np.isnan(r["median"]):
+                ax.plot([], [], color=colour, ls="-" if solid else "--", lw=1.2, label=f"{label}: no estimate")
                 continue
-            line, = ax.plot(x, stats.norm.cdf(np.log(x / r.median) / r.beta), lw=1.2,
-                            label=f"K_d = {r.Kd_kN_per_m_per_m:g}")
-            if np.isfinite(r.median_5):
-                ax.axvspan(r.median_5, r.median_95, color=line.get_color(), alpha=0.12)
+            p = (np.log(x / r["median"]) > 0).astype(float) if r["beta"] == 0 else special.ndtr(
+                np.log(x / r["median"]) / r["beta"])
+            ax.plot(x, p, color=colour, ls="-" if solid else "--", lw=1.2, label=label)
+            if solid and np.isfinite(r["median_5"]) and np.isfinite(r["median_95"]):
+                ax.axvspan(r["median_5"], r["median_95"], color=colour, alpha=0.12)
         ax.set_title(name, fontsize=8)
         ax.set_xlabel(im_name)
         ax.grid(alpha=0.3)
+        ax.legend(fontsize=6)
     axes[0][0].set_ylabel("P(reached)")
-    if axes[0][0].get_legend_handles_labels()[0]:  # no fit at all: nothing to name
-        axes[0][0].legend(fontsize=6, title="kN/m per m", title_fontsize=6)
     fig.tight_layout()
+    return fig
+
+
+def fragility(frag, im_name, path, column=KD_COLUMN):
+    fig = fragility_figure(frag, im_name, column)
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)

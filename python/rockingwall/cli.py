@@ -4,11 +4,9 @@ import importlib
 import os
 import sys
 
-from . import __version__
+from . import __version__, outputs, scratch
 from .commands import common as cc
-from .building.monolithic import BuildingError
-from .records import RecordError
-from .scene_engine import SceneError
+from .errors import RockingWallError
 
 # commands with their own argument parser: name -> (module, one-line help)
 DELEGATED = {
@@ -36,23 +34,35 @@ def build_parser():
     return p
 
 
+def dispatch(argv):
+    if argv and argv[0] in DELEGATED:
+        return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+    args = build_parser().parse_args(argv)
+    if not hasattr(args, "command"):
+        build_parser().print_help()
+        return 2
+    return args.command(args)
+
+
 def main(argv=None):
+    """Every command. Errors of the package's own kinds (ValueError, RockingWallError: refused
+    input, a run that cannot be made) are one line and exit status 2; a file that cannot be read
+    or written (a full disk, no permission) one line naming it and exit status 1. What is left is
+    a bug and keeps its traceback."""
     argv = sys.argv[1:] if argv is None else list(argv)
+    scratch.reclaim_once()  # the temporary folders killed runs of this program left
     try:
-        if argv and argv[0] in DELEGATED:
-            return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
-        args = build_parser().parse_args(argv)
-        if not hasattr(args, "command"):
-            build_parser().print_help()
-            return 2
-        return args.command(args)
-    except (ValueError, RecordError, FileNotFoundError, BuildingError, SceneError) as exc:
+        with outputs.session(), outputs.named_stdout():  # inputs never overwritten; stdout's errors named
+            return dispatch(argv)
+    except (ValueError, RockingWallError) as exc:
         return cc.fail(str(exc))
     except KeyboardInterrupt:
         return cc.fail("interrupted", 130)
     except BrokenPipeError:  # the reader of standard output went away (| head): not an error of ours
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         return 0
+    except OSError as exc:
+        return cc.fail(outputs.describe_os_error(exc), 1)
 
 
 if __name__ == "__main__":

@@ -17,9 +17,11 @@ import math
 import numpy as np
 
 from . import paths
+from .errors import RockingWallError
 
 NX = 4
 ERRORS = {1: "bad argument", 2: "bad parameters", 3: "unsupported", 4: "Zeno", 5: "no memory"}
+UNSUPPORTED = 3
 
 
 class _ParamInfo(ctypes.Structure):
@@ -92,10 +94,13 @@ class _Result(ctypes.Structure):
                 ("impact_cap", ctypes.c_size_t), ("message", ctypes.c_char * 256)]
 
 
-class EngineError(RuntimeError):
+class EngineError(RockingWallError, RuntimeError):
+    """The engine refused or could not finish a run: its code and message."""
+
     def __init__(self, code, message):
         super().__init__(f"rw_engine ({ERRORS.get(code, code)}): {message}")
         self.code = code
+        self.detail = message
 
 
 class Result:

@@ -5,12 +5,12 @@ import json
 import os
 import pathlib
 import subprocess
-import tempfile
 
-from . import paths
+from . import paths, scratch
+from .errors import RockingWallError
 
 
-class Fmi2simError(RuntimeError):
+class Fmi2simError(RockingWallError, RuntimeError):
     """fmi2sim refused or failed a run; the message is its one-line error."""
 
     def __init__(self, returncode, message):
@@ -48,7 +48,7 @@ def error_line(stderr):
 def run(fmu, *, timeout=None, env=None, **options):
     """Run fmi2sim and return its summary (dict: 'outputs' with max_abs/final per output,
     'end_time', 'steps', 'cpu_seconds', ...). Raises Fmi2simError with its message."""
-    with tempfile.TemporaryDirectory(prefix="rw_fmi2sim_") as tmp:
+    with scratch.folder("rw_fmi2sim_") as tmp:
         summary = pathlib.Path(tmp) / "summary.json"
         cmd = command(fmu, summary=summary, **options)
         proc = subprocess.run(cmd, capture_output=True, text=True, errors="replace", timeout=timeout,

@@ -25,3 +25,24 @@ def sa(record, period, damping=0.05):
     ag = np.interp(t, record.t, record.ag, right=0.0)
     _, u, _ = signal.lsim(system, ag, t, interp=True)
     return omega**2 * float(np.max(np.abs(u))) / G
+
+
+PGA_PLAUSIBLE = (1e-4, 3.0)  # g: a record scaled outside this is most often in the wrong unit
+
+
+def pga_warning(record):
+    """A message when the record's PGA (as scaled) is outside PGA_PLAUSIBLE, naming the likely
+    unit slip; None when it is plausible."""
+    return pga_value_warning(record.name, pga(record))
+
+
+def pga_value_warning(name, value):
+    """pga_warning for a record `name` whose PGA as run is `value` [g]."""
+    low, high = PGA_PLAUSIBLE
+    if value > high:
+        return (f"{name}: PGA {value:.3g} g is above {high:g} g: is the record in cm/s^2 or m/s^2 and read "
+                f"as g (a CSV file: --csv-units cm/s2 or m/s2)? {value:.3g} g is {value * G:.3g} m/s^2")
+    if value < low:
+        return (f"{name}: PGA {value:.3g} g is below {low:g} g: is the record in g and read as m/s^2 or "
+                "cm/s^2 (a CSV file: --csv-units g), or the scale factor too small?")
+    return None

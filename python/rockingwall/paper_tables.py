@@ -9,6 +9,8 @@ import sys
 
 import numpy as np
 
+from . import outputs
+
 try:  # the paper's tables are reproduced with the independent reference solver (a separate package)
     from rwref import Params, simulate, inputs, table_5_1, TABLE_5_1_PAPER, WALLS
 except ImportError as exc:
@@ -56,11 +58,18 @@ def peaks(res):
 
 
 def write_csv(path, rows):
-    with open(path, "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(HEADER)
-        for r in rows:
-            w.writerow([fmt(x) if i >= 6 else x for i, x in enumerate(r)])
+    def write(tmp):
+        with open(tmp, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(HEADER)
+            for r in rows:
+                w.writerow([fmt(x) if i >= 6 else x for i, x in enumerate(r)])
+    outputs.write_atomic(path, write, "--out")
+
+
+def save_figure(fig, path, dpi):
+    """A figure into its file (through a temporary file: never through a symlink, never cut)."""
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=dpi, format="png"), "--out")
 
 
 def print_table(title, rows):
@@ -107,6 +116,7 @@ def _at2_signal(path, scale):
     """An AT2 record (the package's one reader) as the reference solver's input signal."""
     from .records import read_at2
     rec = read_at2(path)
+    outputs.protect(path, "a record of --records")
     return inputs.Signal(rec.t, rec.ag * scale, name=rec.name)
 
 
@@ -180,7 +190,7 @@ def figures(out, keep52, keep54):
     ax.set_title("Fig. 5.2 - wall 1, simply supported (1DOF)")
     ax.legend()
     fig.tight_layout()
-    fig.savefig(out / "fig_5_2.png", dpi=120)
+    save_figure(fig, out / "fig_5_2.png", 120)
     plt.close(fig)
 
     def hist(keys, title, fname):
@@ -197,7 +207,7 @@ def figures(out, keep52, keep54):
         axs[-1].set_xlabel("t [s]")
         fig.suptitle(title, fontsize=10)
         fig.tight_layout()
-        fig.savefig(out / fname, dpi=110)
+        save_figure(fig, out / fname, 110)
         plt.close(fig)
 
     keep = keep52
@@ -248,16 +258,19 @@ def calibrate(out, bar_factory):
                 err["cal"].append(abs(b[6] - b[7]))
         print(f"  mean |ours - paper| over the 2DOF cells: hingeSat=2: {np.mean(err['dfl']):.4f} m, "
               f"hingeSat={best:.3f}: {np.mean(err['cal']):.4f} m")
-    with open(out / "calibration.csv", "w", newline="") as fh:
-        w = csv.writer(fh)
-        w.writerow(["hinge_sat", "wall1_Kd1000_s1"])
-        for hs, s1 in scan:
-            w.writerow([hs, f"{s1:.5f}"])
-        if best is not None:
-            w.writerow([])
-            w.writerow(["wall", "Kd_kN_per_m", "quantity", "ours_hs2", f"ours_hs{best:.3f}", "paper"])
-            for r in rows:
-                w.writerow([r[0], r[1], r[2], fmt(r[3]), fmt(r[4]), fmt(r[5])])
+
+    def write(tmp):
+        with open(tmp, "w", newline="") as fh:
+            w = csv.writer(fh)
+            w.writerow(["hinge_sat", "wall1_Kd1000_s1"])
+            for hs, s1 in scan:
+                w.writerow([hs, f"{s1:.5f}"])
+            if best is not None:
+                w.writerow([])
+                w.writerow(["wall", "Kd_kN_per_m", "quantity", "ours_hs2", f"ours_hs{best:.3f}", "paper"])
+                for r in rows:
+                    w.writerow([r[0], r[1], r[2], fmt(r[3]), fmt(r[4]), fmt(r[5])])
+    outputs.write_atomic(out / "calibration.csv", write, "--out")
 
 
 def reproduce(out, records_dir=None, quick=False, calibrate_hinge_sat=False):

@@ -42,6 +42,10 @@ def building_fmu():
     return binary("Building.fmu")
 
 
+def building_with_walls_fmu():
+    return binary("BuildingWithWalls.fmu")
+
+
 def fmi2sim():
     return binary("fmi2sim")
 

@@ -3,12 +3,26 @@ histories as a plot (what `rockingwall run` prints and writes)."""
 
 
 def table(wall, results):
+    """The wall, the scene, and a row per record: its PGA as run, the peaks (a collapsed wall's
+    shown as its collapse, never as a displacement), and the ensemble's columns if one ran."""
+    ensemble = any(r.ensemble is not None for r in results)
     lines = [f"wall: {wall.describe()}", results[0].scene.text(), f"Delta_u = {wall.delta_u * 1e3:.1f} mm",
-             f"{'record':<28}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}  collapse"]
+             f"{'record':<28}{'PGA [g]':>8}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}"
+             f"  {'collapse':<22}" + ("  P(collapse)  s1 16/50/84 % [mm]" if ensemble else "")]
     for r in results:
-        collapse = f"yes, at {r.t_collapse:.2f} s" if r.collapsed else "no"
-        lines.append(f"{r.record[:27]:<28}{r.peak_s1 * 1e3:>13.1f}{r.peak_s2 * 1e3:>13.1f}"
-                     f"{r.s1_over_delta_u:>11.2f}{r.impacts:>9}  {collapse}")
+        collapse = f"collapsed at {r.t_collapse:.2f} s" if r.collapsed else "no"
+        s1, s2, ratio = ("-", "-", "-") if r.collapsed else (f"{r.peak_s1 * 1e3:.1f}", f"{r.peak_s2 * 1e3:.1f}",
+                                                             f"{r.s1_over_delta_u:.2f}")
+        line = f"{r.record[:27]:<28}{r.pga_g:>8.3g}{s1:>13}{s2:>13}{ratio:>11}{r.impacts:>9}  {collapse:<22}"
+        if r.ensemble is not None:
+            e = r.ensemble
+            spread = " / ".join("collapse" if v == float("inf") else f"{v * 1e3:.0f}" for v in e.s1_percentiles)
+            line += f"  {e.collapse_probability:>11.2f}  {spread}" + ("  FLIPS" if e.flips else "")
+        lines.append(line.rstrip())
+    if ensemble:
+        e = next(r.ensemble for r in results if r.ensemble is not None)
+        lines.append(f"ensemble: {e.size} runs per record within the inputs' uncertainty; FLIPS: the nominal "
+                     "outcome (collapse, a limit state) differs in at least 5 % of them")
     return "\n".join(lines)
 
 

@@ -17,6 +17,7 @@ import functools
 import numpy as np
 
 from . import engine
+from .errors import RockingWallError
 
 MAX_STOREYS = 5
 SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
@@ -67,7 +68,7 @@ class _Result(ctypes.Structure):
                 ("message", ctypes.c_char * 256)]
 
 
-class SceneError(RuntimeError):
+class SceneError(RockingWallError, RuntimeError):
     """The scene solver refused the scene or failed; the message says why."""
 
     def __init__(self, code, message):

@@ -23,3 +23,9 @@ def dump(obj, fh):
     """Writes obj as strict JSON (indented) and a newline."""
     json.dump(clean(obj), fh, indent=1, allow_nan=False)
     fh.write("\n")
+
+
+def write(obj, path):
+    """dump() into the file `path` (for outputs.write_atomic's temporary file)."""
+    with open(path, "w") as fh:
+        dump(obj, fh)

@@ -28,11 +28,11 @@ def _canonical(unit):
 def parse(value, si_unit, name="value"):
     """A float in `si_unit` from a number (taken as SI) or a string 'NUMBER [UNIT]'."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return float(value)
+        return _finite(float(value), value, name)
     m = _NUMBER.match(str(value))
     if not m:
         raise ValueError(f"{name}: cannot read {value!r} as a number with an optional unit")
-    number, unit = float(m.group(1)), m.group(2)
+    number, unit = _finite(float(m.group(1)), value, name), m.group(2)
     if not unit or _canonical(unit) == _canonical(si_unit or "1"):
         return number
     factors = _SPELLINGS.get(si_unit, {})
@@ -41,6 +41,13 @@ def parse(value, si_unit, name="value"):
         known = ", ".join(sorted({si_unit, *[_display(k) for k in factors]})) if factors else si_unit or "none"
         raise ValueError(f"{name}: unit {unit!r} is not a unit of {name} (accepted: {known})")
     return number * factor
+
+
+def _finite(number, text, name):
+    """1e999 reads as infinity: no quantity of this program is infinite."""
+    if not math.isfinite(number):
+        raise ValueError(f"{name}: {text!r} is not a finite number")
+    return number
 
 
 def _display(spelling):

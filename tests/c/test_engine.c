@@ -75,9 +75,10 @@ static void test_stepper(void)
     rw_derived d;
     rw_regime m;
     rw_input in = {0.0, 0.0};
-    double x[RW_NX] = {0.01, -0.01, 0.0, 0.0}, t = 0.0, reached;
+    double x[RW_NX] = {0.01, -0.01, 0.0, 0.0}, t = 0.0;
     long impacts = 0;
     char msg[256];
+    rw_engine_step_report step;
     rw_engine *e;
     int k, rc = 0;
     rw_params_default(&p);
@@ -88,10 +89,11 @@ static void test_stepper(void)
     if (!e) return;
     for (k = 0; k < 100 && rc == 0; k++) {
         const rw_linear_input li = {0.0, 0.0, 0.0, 0.0};
-        rc = rw_engine_step(e, &m, x, t, 0.05, &li, &impacts, &reached, msg, sizeof msg);
-        t = reached;
+        rc = rw_engine_step(e, &m, x, t, 0.05, &li, &step);
+        t = step.t_reached;
+        impacts += step.impacts;
     }
-    CHECK(rc == 0 && fabs(t - 5.0) < 1e-12, "stepper: rc %d t %g", rc, t);
+    CHECK(rc == 0 && fabs(t - 5.0) < 1e-12, "stepper: rc %d t %g (%s)", rc, t, step.message);
     /* counted only while the rocking exceeds the base's elastic range (docs/model.md "Impacts"):
      * from 12.5 mm the amplitude falls below Delta_1 = 7.5 mm within a few impacts */
     CHECK(impacts >= 2, "stepper: %ld impacts in 5 s of free rocking", impacts);

@@ -3,7 +3,8 @@
  * dg_fmi2_static, -DTEST_BUILDING against bd_fmi2_static).
  *  - Co-Simulation: a step taken after fmi2GetFMUstate and the same step taken again after
  *    fmi2SetFMUstate give bitwise equal outputs, at every step of a run with events inside steps
- *    and ramped inputs;
+ *    and ramped inputs (RockingWall: the parapet on CVODE, then the 2DOF wall through the exact
+ *    engine, whose state is part of the FMU state);
  *  - serialize / deserialize into another instance: the two instances then step identically;
  *  - Model Exchange: restoring a state restores states, inputs, derivatives and outputs bitwise;
  *  - bad input (NULL, wrong size, a wrong GUID, not a state, wrong interface type or phase):
@@ -24,13 +25,18 @@
 static const fmi2ValueReference OUTPUTS[] = {RW_VR_s1, RW_VR_s2, RW_VR_energy, RW_VR_dissipated, RW_VR_P_ground,
                                              RW_VR_q1, RW_VR_q2, RW_VR_dq1, RW_VR_dq2};
 static const fmi2ValueReference START_VR = RW_VR_q1, INPUT_VR = RW_VR_ag, MARKER_VR = RW_VR_dissipated;
-static const double START = 0.02, INPUT = 0.3;
-/* a parapet: impacts inside most steps of 0.05 s */
+static const double START = 0.02;
+static double INPUT = 0.3;
+/* 0: a parapet (CVODE), impacts inside most steps of 0.05 s; 1: the 2DOF wall under semiRigidPaper
+ * with a stiff spring, stepped by the exact engine (its band of the fast mode, events inside steps) */
+static int exact_engine;
 static void structure(fmi2Component c)
 {
-    fmi2ValueReference vr = RW_VR_support;
-    fmi2Integer parapet = 1;
-    fmi2SetInteger(c, &vr, 1, &parapet);
+    const fmi2ValueReference vr[] = {RW_VR_support, RW_VR_hingeLaw}, kd_vr = RW_VR_Kd;
+    const fmi2Integer parapet[] = {1, 4}, wall_2dof[] = {3, 2};
+    const fmi2Real kd = 5e7;
+    fmi2SetInteger(c, vr, 2, exact_engine ? wall_2dof : parapet);
+    if (exact_engine) fmi2SetReal(c, &kd_vr, 1, &kd);
 }
 #elif defined(TEST_DIAPHRAGM)
 #include "diaphragm_variables.h"
@@ -293,6 +299,12 @@ int main(void)
     test_serialized_state_moves_to_another_instance();
     test_model_exchange_state_restores_everything();
     test_bad_input();
+#if defined(TEST_ROCKINGWALL)
+    exact_engine = 1;
+    INPUT = 3.0;
+    test_rolled_back_step_reproduces_itself_bitwise();
+    test_serialized_state_moves_to_another_instance();
+#endif
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }

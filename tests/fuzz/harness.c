@@ -1,6 +1,7 @@
 /* The fuzzing harness of fmi2sim's input readers (host/input_table.c): the bytes become a file,
  * the reader reads it, and what it returns must keep the promises input_value() relies on:
- * at least one sample, times finite and strictly increasing, values finite and not huge. A broken
+ * at least one sample, times finite and increasing (a time at most twice in a row: a step),
+ * values finite and not huge, and finite values between and beyond the samples. A broken
  * promise aborts, so a fuzzer finds wrong results as well as memory errors. Shared by the
  * libFuzzer targets (fuzz_csv.c, fuzz_at2.c) and the regression replay (replay.c). */
 #include "harness.h"
@@ -23,7 +24,8 @@ static void check_table(const input_table *tab)
 {
     if (tab->n < 1 || tab->ncols < 1) abort();
     for (size_t i = 0; i < tab->n; i++) {
-        if (!isfinite(tab->t[i]) || (i > 0 && !(tab->t[i] > tab->t[i - 1]))) abort();
+        if (!isfinite(tab->t[i]) || (i > 0 && !(tab->t[i] >= tab->t[i - 1]))) abort();
+        if (i > 1 && tab->t[i] == tab->t[i - 2]) abort(); /* three rows of one time */
         for (size_t c = 0; c < tab->ncols; c++)
             if (!isfinite(tab->cols[c].values[i]) || fabs(tab->cols[c].values[i]) > 1e100) abort();
     }
@@ -31,7 +33,9 @@ static void check_table(const input_table *tab)
         double lo = tab->t[0], hi = tab->t[tab->n - 1];
         double probe[5] = {lo - 1.0, lo, 0.5 * lo + 0.5 * hi, hi, hi + 1.0};
         for (int k = 0; k < 5; k++)
-            if (!isfinite(input_value(tab, c, probe[k]))) abort();
+            if (!isfinite(input_value(tab, c, probe[k])) || !isfinite(input_value_left(tab, c, probe[k])) ||
+                !isfinite(input_value_held(tab, c, probe[k])) || !isfinite(input_value_held_left(tab, c, probe[k])))
+                abort();
     }
 }
 

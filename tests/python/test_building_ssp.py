@@ -174,11 +174,11 @@ def test_user_replaces_the_building(archive, tmp_path):
 
 def test_building_variables_the_master_reads_are_checked():
     """A replacement building with the connected variables but not, e.g., the velocities."""
-    full = ssp._fmu_units(scene().building_fmu)
-    ssp._check_building_variables(scene(), full, "x.ssp")  # the Building has them all
+    full = ssp.fmu_units(scene().building_fmu)
+    ssp.check_building_variables(scene(), full, "x.ssp")  # the Building has them all
     lacking = {k: v for k, v in full.items() if not k.startswith("v_floor_")}
     with pytest.raises(ssp.SSPError, match="lacks variables the master reads: v_floor_1, v_floor_2"):
-        ssp._check_building_variables(scene(), lacking, "x.ssp")
+        ssp.check_building_variables(scene(), lacking, "x.ssp")
 
 
 def test_the_documented_module_path_names_the_same_functions():

@@ -37,6 +37,10 @@ CALLBACKS = ".derivatives = derivatives,"
 EXACT_STEP = ".exact_step = exact_step,"  # left out: the hostile slave's steps go through CVODE
 
 
+# the FMI 2.0 layer of a binary (fmu_src/fmi/CMakeLists.txt: FMU_SHARED_SOURCES)
+LAYER_SOURCES = ["fmi2Functions.c", "fmu_instance.c", "fmu_functions.c", "fmu_core.c", "cs_cvode.c"]
+
+
 def _build_flags(build_dir):
     """Include folders and libraries of the real Diaphragm build (CMake's own files)."""
     target = build_dir / "fmu_src" / "models" / "Diaphragm" / "CMakeFiles" / "Diaphragm.dir"
@@ -59,7 +63,7 @@ def _hostile_fmu(repo, build_dir, out_dir, crash):
     fmu_src = repo / "fmu_src" / "fmi"
     subprocess.run(["cc", "-O1", "-std=c99", "-fPIC", "-shared", "-fvisibility=hidden", *includes,
                     *(["-DHOSTILE_CRASH"] if crash else []), "-Wl,--exclude-libs,ALL", "-o", str(so), str(c_file),
-                    str(fmu_src / "fmi2Functions.c"), str(fmu_src / "fmu_core.c"), str(fmu_src / "cs_cvode.c"), *libs, "-lm"],
+                    *(str(fmu_src / f) for f in LAYER_SOURCES), *libs, "-lm"],
                    check=True, capture_output=True, timeout=300)
     fmu = out_dir / ("Crashing.fmu" if crash else "Failing.fmu")
     with zipfile.ZipFile(build_dir / "Diaphragm.fmu") as zin, zipfile.ZipFile(fmu, "w", zipfile.ZIP_DEFLATED) as zout:

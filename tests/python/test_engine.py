@@ -1,4 +1,4 @@
-"""The exact event-driven engine (fmu_src/engine/rw_engine.c via rockingwall.engine) against fmi2sim.
+"""The exact event-driven engine (fmu_src/engine/ via rockingwall.engine) against fmi2sim.
 The engine on its own: test_engine_alone.py; inside the FMU's Co-Simulation: test_cosim_engine.py.
 
 Random scenes (tests/python/engine_scenes.py): the same collapse outcome and impact count, and

@@ -72,7 +72,7 @@ def test_output_grid_matches_peaks():
 @pytest.mark.parametrize("law", [3, 4])
 def test_peaks_under_a_stiff_spring_s_band_match_a_fine_grid(law):
     """With a stiff spring the peaks come from the slow motion plus the spring's fast oscillation,
-    resolved only near a new peak (rw_engine.c peaks_under_band): a 5-us grid (about 1 800 points
+    resolved only near a new peak (rw_engine_peaks.c rwe_peaks_under_band): a 5-us grid (about 1 800 points
     per period of the spring's mode, 713 rad/s) must never pass the peaks, and must come within 1e-7
     of them (measured: 3e-10 and 2.6e-9 below)."""
     sig = inputs.el_centro(0.5)
@@ -86,7 +86,7 @@ def test_peaks_under_a_stiff_spring_s_band_match_a_fine_grid(law):
 @pytest.mark.parametrize("law", [1, 2, 3, 4])
 @pytest.mark.parametrize("kd", [5e4, 5e7])
 def test_quiet_segments_take_the_general_path_s_motion(law, kd):
-    """Most segments are taken by the quiet path (rw_engine_quiet_segment), which must give the
+    """Most segments are taken by the quiet path (rwe_quiet_segment), which must give the
     general path's motion: with an output time at the end of every segment the quiet path is never
     taken, so both runs must agree (peaks to 1e-12, the same events, impacts and end state)."""
     sig = inputs.el_centro(0.5)

@@ -35,7 +35,8 @@ CSV_CASES = {
     "header_only": ("time,ag\n", "no data rows"),
     "non_numeric": ("time,ag\n0,0\n0.1,abc\n", ":3: column 2: 'abc' is not a number"),
     "non_monotonic": ("time,ag\n0,0\n0.2,1\n0.1,2\n", ":4: time 0.1 is before"),
-    "duplicate_time": ("time,ag\n0,0\n0.1,1\n0.1,2\n", ":4: time 0.1 repeats"),
+    # two rows of one time are a step (test_fmi2sim_discrete_inputs.py); a third is refused
+    "triplicate_time": ("time,ag\n0,0\n0.1,1\n0.1,2\n0.1,3\n", ":5: time 0.1 is on a third row"),
     "column_count": ("time,ag\n0,0\n0.1,1,5\n", ":3: 3 columns, the header has 2"),
     "unknown_column": ("time,nosuch\n0,0\n", "column 'nosuch' is not a variable"),
     "huge": ("time,ag\n0,0\n0.1,1e999\n", ":3: column 2: '1e999' is out of range"),

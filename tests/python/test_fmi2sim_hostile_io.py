@@ -50,7 +50,7 @@ OPTION_CASES = {
     "output_interval": (["--stop-time", "1", "--output-interval", "1e-300"], "--output-interval 1e-300 is out of range: it must lie in [1e-07, 1]"),
     "output_interval_long": (["--stop-time", "1", "--output-interval", "5"], "--output-interval 5 is out of range"),
     "start_time_far": (["--start-time", "1e8", "--stop-time", "100000000.001"], "it must be >= 1e-6 x max(1, |start|, |stop|)"),
-    "stop_time_huge": (["--stop-time", "1e12"], "stop time 1e+12 is out of range: it must lie in [-1e+09, 1e+09]"),
+    "stop_time_huge": (["--stop-time", "1e12"], "--stop-time 1e+12 is out of range: it must lie in [-1e+09, 1e+09]"),
     "gravity": (["--g", "1e-300"], "--g 1e-300 is out of range: it must lie in [0.1, 100]"),
 }
 

@@ -43,12 +43,12 @@ def el_centro():
     return inputs.el_centro(0.5)
 
 
-@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm", "Building"])
+@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm", "Building", "BuildingWithWalls"])
 def test_fmpy_validates_the_fmi3_fmu(fmi3_dir, name):
     assert validate_fmu(str(fmi3_dir / f"{name}.fmu")) == []
 
 
-@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm"])
+@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm", "BuildingWithWalls"])
 def test_the_binary_exports_only_the_fmi3_api(fmi3_dir, tmp_path, name):
     nm = shutil.which("nm")
     if nm is None:
@@ -71,7 +71,7 @@ def _unknowns(unknowns):
             for u in unknowns}
 
 
-@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm"])
+@pytest.mark.parametrize("name", ["RockingWall", "Diaphragm", "BuildingWithWalls"])
 def test_fmi3_model_description_says_what_the_fmi2_one_says(build_dir, fmi3_dir, name):
     """Every variable of the FMI 2.0 FMU, with its attributes, outputs, derivatives, their
     dependencies, the initial unknowns and the default experiment, is in the FMI 3.0 FMU; what

@@ -77,3 +77,40 @@ def test_fmpy_simulation_of_the_asan_fmu_is_clean():
         assert report not in proc.stderr, proc.stderr[-4000:]
     assert proc.returncode == 0, proc.stderr[-4000:]
     assert proc.stdout.count("RUN ") == 5 and proc.stdout.count("REJECTED") == 3 and "DONE" in proc.stdout
+
+
+CHILD_BUILDING_WITH_WALLS = CHILD.split("import numpy as np")[0] + r"""
+import numpy as np
+from fmpy import simulate_fmu
+t = np.arange(0.0, 3.0, 0.002)
+ag = 3.0 * np.sin(6.0 * t) * (t < 1.5)
+sig = np.array(list(zip(t, ag)), dtype=[("time", float), ("ag", float)])
+start = dict(nStoreys=2, W_1=25200.0, b_1=0.35, h_1=4.0, psi_1=0.254, W_2=14904.0, b_2=0.23, h_2=3.6, psi_2=0.2013,
+             md_1=600.0, kd_1=6e4, md_2=200.0, kd_2=2e4)
+for fmi_type in ("ModelExchange", "CoSimulation"):
+    r = simulate_fmu({fmu!r}, fmi_type=fmi_type, stop_time=3.0, output_interval=5e-3, start_values=start, input=sig,
+                     output=["s1_1", "s1_2", "collapsed_2", "energy_residual"])
+    assert np.all(np.isfinite(r["s1_2"])) and np.abs(r["s1_2"]).max() > 0
+    print("RUN", fmi_type, np.abs(r["s1_2"]).max())
+try:
+    simulate_fmu({fmu!r}, stop_time=0.1, start_values=dict(h_1=0.1))
+except Exception as exc:
+    print("REJECTED", type(exc).__name__)
+print("DONE")
+"""
+
+
+@pytest.mark.skipif(not ASAN_DIR, reason="set RW_ASAN_BUILD_DIR to the sanitizer build (scripts/run_tests.sh does)")
+@pytest.mark.parametrize("folder", ["", "fmi3"])
+def test_fmpy_simulation_of_the_asan_building_with_walls_is_clean(folder):
+    fmu = pathlib.Path(ASAN_DIR) / folder / "BuildingWithWalls.fmu"
+    assert fmu.exists(), f"{fmu} is missing: build it with -DRW_SANITIZE=ON"
+    env = dict(os.environ, LD_PRELOAD=asan_runtime(), ASAN_OPTIONS="detect_leaks=0:abort_on_error=0",
+               UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1")
+    proc = subprocess.run([sys.executable, "-c", CHILD_BUILDING_WITH_WALLS.format(fmu=str(fmu))], capture_output=True,
+                          text=True, env=env, timeout=600)
+    print(proc.stdout)
+    for report in ("AddressSanitizer", "runtime error:", "LeakSanitizer"):
+        assert report not in proc.stderr, proc.stderr[-4000:]
+    assert proc.returncode == 0, proc.stderr[-4000:]
+    assert proc.stdout.count("RUN ") == 2 and "REJECTED" in proc.stdout and "DONE" in proc.stdout

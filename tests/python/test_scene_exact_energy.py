@@ -1,7 +1,7 @@
 """The exact scene engine's energy and its limits. Energy: without damping (e_r = 1, no dashpots,
 no Rayleigh damping) a pushed scene vibrating freely for 100 s keeps its energy; with damping
 under a record the balance E(t) - E(0) = W_ground - W_damping - losses closes to rounding. Limits
-(MODEL.md's scene (b)): a diaphragm of vanishing mass on rigid in-plane walls is a massless spring,
+(the wall under a diaphragm with mass, docs/your-building.md): a diaphragm of vanishing mass on rigid in-plane walls is a massless spring,
 so the scene is the paper's wall with K_d = the tie and the diaphragm in series; a diaphragm of
 vanishing flexibility pins the tie, so the scene is the paper's wall with K_d = the tie. The paper's
 wall runs on the single wall's exact engine (rockingwall.engine), an independent code path."""

@@ -27,7 +27,7 @@ static const fmu_var VARS[] = {BD_VARIABLES(BD_VAR)};
 /* slots of a floor's value references (BD_SLOT_OF): parameters, input, states, rates, outputs */
 enum {
     SLOT_M = 1, SLOT_K, SLOT_FY, SLOT_ALPHA, SLOT_MD, SLOT_KD, SLOT_FYD, SLOT_ALPHAD,
-    SLOT_F_WALL = 10, SLOT_F_ABOVE = 11,
+    SLOT_F_WALL = 10, SLOT_F_ABOVE = 11, SLOT_CS = 12, SLOT_CD = 13,
     SLOT_STATE = 20, /* 20..27: the floor's states in the order of building_physics.h */
     SLOT_RATE = 30,  /* 31, 32, 34..37: rates of the states 21, 22, 24..27 */
     SLOT_A_DIAPH = 40, SLOT_U_TOP, SLOT_V_STOREY, SLOT_DRIFT, SLOT_F_DIAPH, SLOT_D_DIAPH
@@ -45,6 +45,8 @@ static double *floor_parameter(bd_params *P, int i, int slot)
     case SLOT_KD: return &P->diaph[i].k;
     case SLOT_FYD: return &P->diaph[i].Fy;
     case SLOT_ALPHAD: return &P->diaph[i].alpha;
+    case SLOT_CS: return &P->cs[i];
+    case SLOT_CD: return &P->cd[i];
     default: return NULL;
     }
 }
@@ -176,6 +178,8 @@ static int check_real(unsigned vr, double value, char *msg, size_t n)
     case SLOT_FYD: return check_range(name, value, 0.0, 1e15, 1, msg, n);
     case SLOT_ALPHA:
     case SLOT_ALPHAD: return check_range(name, value, 0.0, 1.0, 0, msg, n);
+    case SLOT_CS:
+    case SLOT_CD: return check_range(name, value, 0.0, 1e15, 0, msg, n);
     case SLOT_STATE + BD_Z:
     case SLOT_STATE + BD_ZD: return check_range(name, value, -1.0, 1.0, 0, msg, n); /* |z| <= z_u */
     default: return 0;

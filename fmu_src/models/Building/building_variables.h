@@ -42,6 +42,8 @@ X(md_1, 105, "md_1", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_1, 106, "kd_1", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 1 relative to its floor, N/m per m (> 0)") \
 X(Fyd_1, 107, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (> 0)") \
 X(alphad_1, 108, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1, in [0, 1]") \
+X(cs_1, 112, "cs_1", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside storey 1's spring (in-plane walls), N s/m per m (>= 0; 0: Rayleigh damping only)") \
+X(cd_1, 113, "cd_1", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside diaphragm 1's spring, N s/m per m (>= 0; a damping ratio zeta on its own spring and mass: 2 zeta sqrt(kd md))") \
 X(F_wall_1, 110, "F_wall_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 1 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
 X(F_above_1, 111, "F_above_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 1 of the base of the out-of-plane wall standing on floor 1, +x (RockingWall F_base)") \
 X(u_floor_1, 120, "u_floor_1", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 1 (in-plane walls' level) relative to the ground (state)") \
@@ -72,6 +74,8 @@ X(md_2, 205, "md_2", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_2, 206, "kd_2", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 2 relative to its floor, N/m per m (> 0)") \
 X(Fyd_2, 207, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (> 0)") \
 X(alphad_2, 208, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2, in [0, 1]") \
+X(cs_2, 212, "cs_2", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside storey 2's spring (in-plane walls), N s/m per m (>= 0; 0: Rayleigh damping only)") \
+X(cd_2, 213, "cd_2", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside diaphragm 2's spring, N s/m per m (>= 0; a damping ratio zeta on its own spring and mass: 2 zeta sqrt(kd md))") \
 X(F_wall_2, 210, "F_wall_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 2 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
 X(F_above_2, 211, "F_above_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 2 of the base of the out-of-plane wall standing on floor 2, +x (RockingWall F_base)") \
 X(u_floor_2, 220, "u_floor_2", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 2 (in-plane walls' level) relative to the ground (state)") \
@@ -102,6 +106,8 @@ X(md_3, 305, "md_3", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_3, 306, "kd_3", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 3 relative to its floor, N/m per m (> 0)") \
 X(Fyd_3, 307, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (> 0)") \
 X(alphad_3, 308, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3, in [0, 1]") \
+X(cs_3, 312, "cs_3", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside storey 3's spring (in-plane walls), N s/m per m (>= 0; 0: Rayleigh damping only)") \
+X(cd_3, 313, "cd_3", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside diaphragm 3's spring, N s/m per m (>= 0; a damping ratio zeta on its own spring and mass: 2 zeta sqrt(kd md))") \
 X(F_wall_3, 310, "F_wall_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 3 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
 X(F_above_3, 311, "F_above_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 3 of the base of the out-of-plane wall standing on floor 3, +x (RockingWall F_base)") \
 X(u_floor_3, 320, "u_floor_3", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 3 (in-plane walls' level) relative to the ground (state)") \
@@ -132,6 +138,8 @@ X(md_4, 405, "md_4", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_4, 406, "kd_4", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 4 relative to its floor, N/m per m (> 0)") \
 X(Fyd_4, 407, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (> 0)") \
 X(alphad_4, 408, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4, in [0, 1]") \
+X(cs_4, 412, "cs_4", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside storey 4's spring (in-plane walls), N s/m per m (>= 0; 0: Rayleigh damping only)") \
+X(cd_4, 413, "cd_4", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside diaphragm 4's spring, N s/m per m (>= 0; a damping ratio zeta on its own spring and mass: 2 zeta sqrt(kd md))") \
 X(F_wall_4, 410, "F_wall_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 4 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
 X(F_above_4, 411, "F_above_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 4 of the base of the out-of-plane wall standing on floor 4, +x (RockingWall F_base)") \
 X(u_floor_4, 420, "u_floor_4", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 4 (in-plane walls' level) relative to the ground (state)") \
@@ -162,6 +170,8 @@ X(md_5, 505, "md_5", Real, "parameter", "fixed", "exact", 2000, "kg/m", 0, 0, "M
 X(kd_5, 506, "kd_5", Real, "parameter", "fixed", "exact", 700000.0, "N/m2", 0, 0, "Initial stiffness of diaphragm 5 relative to its floor, N/m per m (> 0)") \
 X(Fyd_5, 507, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (> 0)") \
 X(alphad_5, 508, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5, in [0, 1]") \
+X(cs_5, 512, "cs_5", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside storey 5's spring (in-plane walls), N s/m per m (>= 0; 0: Rayleigh damping only)") \
+X(cd_5, 513, "cd_5", Real, "parameter", "fixed", "exact", 0, "N.s/m2", 0, 0, "Dashpot beside diaphragm 5's spring, N s/m per m (>= 0; a damping ratio zeta on its own spring and mass: 2 zeta sqrt(kd md))") \
 X(F_wall_5, 510, "F_wall_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 5 of the top spring of the out-of-plane wall below it, +x (RockingWall F_top)") \
 X(F_above_5, 511, "F_above_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, "Horizontal force on diaphragm 5 of the base of the out-of-plane wall standing on floor 5, +x (RockingWall F_base)") \
 X(u_floor_5, 520, "u_floor_5", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 5 (in-plane walls' level) relative to the ground (state)") \

@@ -1,4 +1,4 @@
-/* Co-Simulation of RockingWall through the exact engine (rw_engine.c): fmu_model.exact_step.
+/* Co-Simulation of RockingWall through the exact engine (rw_engine.h): fmu_model.exact_step.
  *
  * Inputs held or ramped over a communication step are exactly linear, and every support / hinge
  * law but the parapet is piecewise linear, so the step is exact: it does not depend on the
@@ -8,6 +8,7 @@
  * dissipated) are the ones the CVODE path gives. One difference: CVODE runs RW_TERMINATE_DELAY
  * past a collapse before terminating; here the step ends at the collapse itself. */
 #include <stdio.h>
+#include <string.h>
 
 #include "rw_model_data.h"
 #include "model_variables.h"
@@ -20,29 +21,82 @@ static double slope_of(unsigned vr, const unsigned *slope_vr, const double *slop
     return 0.0;
 }
 
-static void log_collapse(rw_data *S)
+static void log_collapse(rw_data *S, int reason)
 {
     char buf[512];
     if (!S->log || !S->log->warning) return;
     snprintf(buf, sizeof buf,
              "collapse at t = %.9g s: s1 = %.6g m, s2 = %.6g m (q1 = %.6g, q2 = %.6g rad): %s; terminating the simulation",
              S->time, rw_s1(&S->P, S->x), rw_s2(&S->P, S->x), S->x[0], S->x[1],
-             S->engine.reason == RW_PAST_INSTABILITY ? "the wall passed its instability point"
+             reason == RW_PAST_INSTABILITY ? "the wall passed its instability point"
                                                      : "a body turned past its toppling limit 2b/h");
     S->log->warning(S->log->ctx, buf);
+}
+
+/* A long step goes in pieces of RW_PIECE: after each, a wall at rest under held inputs (no
+ * motion, no acceleration) stays so for the rest of the step, which is skipped (1e7 s at rest took
+ * 8.5 s of CPU when the engine walked it). A wall that keeps moving may take at most
+ * RW_MAX_MOVING_PIECES pieces in one step, so that every call returns in bounded time. */
+#define RW_PIECE 1.0                /* s */
+#define RW_MAX_MOVING_PIECES 10000L /* 1e4 s of motion in one step */
+
+static int at_rest(const rw_data *S, const rw_linear_input *in)
+{
+    rw_input now;
+    double dx[RW_NX];
+    if (in->ag_slope != 0.0 || in->u_slope != 0.0) return 0;
+    now.ag = in->ag;
+    now.u_top = in->u_top;
+    rw_derivatives(&S->P, &S->D, &S->regime, &now, S->x, dx);
+    return dx[0] == 0.0 && dx[1] == 0.0 && dx[2] == 0.0 && dx[3] == 0.0;
+}
+
+/* rw_engine_step over a step of any length, its report summed over the pieces (a step of at most
+ * RW_PIECE is one call, as before) */
+static int step_in_pieces(rw_data *S, rw_engine *engine, const rw_linear_input *in, double t, double h,
+                          rw_engine_step_report *total)
+{
+    double done = 0.0;
+    long pieces = 0;
+    memset(total, 0, sizeof *total);
+    for (;;) {
+        const double len = h - done > RW_PIECE ? RW_PIECE : h - done;
+        rw_linear_input piece = *in;
+        rw_engine_step_report step;
+        int rc;
+        piece.ag += in->ag_slope * done;
+        piece.u_top += in->u_slope * done;
+        rc = rw_engine_step(engine, &S->regime, S->x, t + done, len, &piece, &step);
+        total->impacts += step.impacts;
+        total->dissipated += step.dissipated;
+        total->t_reached = step.t_reached;
+        total->collapse_reason = step.collapse_reason;
+        memcpy(total->message, step.message, sizeof total->message);
+        done += len;
+        if (rc != 0 || done >= h) return rc;
+        if (at_rest(S, in)) {
+            total->t_reached = t + h;
+            return 0;
+        }
+        if (++pieces >= RW_MAX_MOVING_PIECES) {
+            snprintf(total->message, sizeof total->message, "the wall kept moving over %g s of this step of %g s: a "
+                     "step may hold at most %g s of motion; take shorter steps", done, h, RW_MAX_MOVING_PIECES * RW_PIECE);
+            return 2;
+        }
+    }
 }
 
 int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const double *slope, size_t n_in,
                   const fmu_logger *log, double *t_reached, char *msg, size_t n)
 {
     rw_data *S = (rw_data *)M;
+    rw_engine *engine = rw_engine_of(S);
     rw_linear_input in;
-    long impacts = 0;
-    double dissipated;
+    rw_engine_step_report step;
     int rc;
     if (S->engine_state == 0) {
-        S->engine_state = rw_engine_init(&S->engine, &S->P, msg, n) ? -1 : 1;
-        S->engine.track_dissipated = 1; /* the FMU's dissipated output */
+        S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
+        if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */
     }
     if (S->engine_state < 0) return FMU_NOT_EXACT;
     *t_reached = t;
@@ -52,18 +106,19 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     in.u_top = S->in.u_top;
     in.ag_slope = slope_of(RW_VR_ag, slope_vr, slope, n_in);
     in.u_slope = slope_of(RW_VR_u_top, slope_vr, slope, n_in);
-    dissipated = S->engine.dissipated;
-    rc = rw_engine_step(&S->engine, &S->regime, S->x, t, h, &in, &impacts, t_reached, msg, n);
-    S->impacts += (int)impacts;
-    S->dissipated += S->engine.dissipated - dissipated;
+    rc = step_in_pieces(S, engine, &in, t, h, &step);
+    *t_reached = step.t_reached;
+    S->impacts += (int)step.impacts;
+    S->dissipated += step.dissipated;
     S->time = *t_reached;
     /* the inputs where the step ended, as the CVODE path leaves them */
     S->in.ag = in.ag + in.ag_slope * (*t_reached - t);
     S->in.u_top = in.u_top + in.u_slope * (*t_reached - t);
     if (rc == 1) {
         S->collapsed = 1;
-        log_collapse(S);
+        log_collapse(S, step.collapse_reason);
         return 1;
     }
+    if (rc > 1) snprintf(msg, n, "%s", step.message);
     return rc > 1 ? -1 : 0;
 }

@@ -257,6 +257,7 @@ const fmu_model FMU_MODEL = {
     .nvars = sizeof VARS / sizeof VARS[0],
     .z_vrs = Z_VRS,
     .data_size = sizeof(rw_data),
+    .data_tail_size = rw_engine_size, /* the exact engine after the data (rw_model_data.h) */
     .reset = reset,
     .get_real = get_real,
     .get_integer = get_integer,

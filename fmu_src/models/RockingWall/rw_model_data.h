@@ -25,9 +25,18 @@ typedef struct {
     const fmu_logger *log;
     double time;
     /* Co-Simulation through the exact engine (cs_exact.c): set up at the first step */
-    rw_engine engine;
     int engine_state; /* 0 not yet decided, 1 in use, -1 not available (CVODE) */
+    /* The engine itself (rw_engine.h: opaque, rw_engine_size() bytes) follows these fields in the
+     * same allocation (fmu_model.data_tail_size), so the FMU state, a byte copy of the data, holds
+     * it as it is: restoring a state restores the engine's caches, tracked indicator states and
+     * peaks, and the steps after it repeat bit for bit. */
+    double engine_space[];
 } rw_data;
+
+static inline rw_engine *rw_engine_of(rw_data *S)
+{
+    return (rw_engine *)S->engine_space;
+}
 
 /* fmu_model.exact_step of RockingWall (cs_exact.c) */
 int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const double *slope, size_t n_in,

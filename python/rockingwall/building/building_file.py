@@ -5,20 +5,23 @@ import os
 import re
 import tomllib
 
-from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, TIE_DEFAULT, Building, Diaphragm,
+from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, PINCHING_TIMBER, TIE_DEFAULT, Building,
+                          Diaphragm,
                           InPlaneWalls, Storey, WallLayer, parse_quantity)
 from ..names import HINGE_LAWS
 
 BUILDING_KEYS = {"name", "tie"}
 STOREY_KEYS = {"height", "wall", "diaphragm", "tie", "in_plane"}
 WALL_KEYS = {"b", "W", "unit_weight", "overburden", "hinge_law", "e_r"}
-DIAPHRAGM_KEYS = {"stiffness", "mass", "damping", "law", "yield_force", "post_yield"}
+PINCHING_KEYS = ("pinch_size", "pinch_width", "pinch_centre")
+DIAPHRAGM_KEYS = {"stiffness", "mass", "damping", "law", "yield_force", "post_yield", *PINCHING_KEYS}
 IN_PLANE_KEYS = {"stiffness", "mass", "damping"}
 DIAPHRAGM_LAWS = ("linear", "boucWen", "boucWenPinched")
 RANGES = {  # what a masonry building's per-metre numbers can be (SI); outside is refused
     "height": (0.5, 30.0), "b": (0.02, 3.0), "W": (10.0, 1e6), "unit_weight": (1e3, 1e5), "overburden": (0.0, 1e7),
     "stiffness": (0.0, 1e12), "mass": (1e-6, 1e7), "damping": (0.0, 2.0), "tie": (1.0, 1e12), "e_r": (0.0, 1.0),
     "yield_force": (1e-3, 1e9), "post_yield": (0.0, 1.0),
+    "pinch_size": (0.0, 0.99), "pinch_width": (0.01, 10.0), "pinch_centre": (0.0, 0.99),
 }
 
 
@@ -89,11 +92,16 @@ def _diaphragm(table, where, line, what):
     hysteretic = law != "linear"
     if hysteretic != ("yield_force" in table):
         raise where.error(line, f"{what}: yield_force is given with a Bouc-Wen law and only with one")
+    given = [k for k in PINCHING_KEYS if k in table]
+    if given and law != "boucWenPinched":
+        raise where.error(line, f"{what}: {', '.join(given)} is the pinching of law = \"boucWenPinched\" only")
+    pinching = {k: _quantity(table, k, "1", where, line, what, PINCHING_TIMBER[k]) for k in PINCHING_KEYS}
     return Diaphragm(stiffness=_quantity(table, "stiffness", "N/m2", where, line, what),
                      mass=_quantity(table, "mass", "kg/m", where, line, what),
                      damping=_quantity(table, "damping", "1", where, line, what, DAMPING_DEFAULT), law=law,
                      yield_force=_quantity(table, "yield_force", "N/m", where, line, what, math.inf),
-                     post_yield=_quantity(table, "post_yield", "1", where, line, what, 1.0 if not hysteretic else 0.1))
+                     post_yield=_quantity(table, "post_yield", "1", where, line, what, 1.0 if not hysteretic else 0.1),
+                     pinching=pinching if law == "boucWenPinched" else None)
 
 
 def _in_plane(table, where, line, what):

@@ -22,6 +22,14 @@ DAMPING_DEFAULT = 0.05     # of critical, on the diaphragm's own mass and spring
 HINGE_LAW_DEFAULT = "dohertyHinge"
 E_R_DEFAULT = 0.86
 MAX_STOREYS = 5
+# Foliente's pinching (zeta1, zeta2, q) of a boucWenPinched diaphragm when the file gives none: the
+# Building FMU's defaults for timber, slack in nailed sheathing (docs/building.md)
+PINCHING_TIMBER = {"pinch_size": 0.8, "pinch_width": 0.2, "pinch_centre": 0.1}
+NO_PINCHING = {"pinch_size": 0.0, "pinch_width": 1.0, "pinch_centre": 0.0}
+BOUC_WEN_SHAPE = {"n_bw": 1.0, "beta": 0.5}  # the loop's shape for both Bouc-Wen laws
+# the same quantities by the Building FMUs' parameter names
+FMU_HYSTERESIS_NAMES = {"n_bw": "nBW", "beta": "betaBW", "pinch_size": "pinchSize", "pinch_width": "pinchWidth",
+                        "pinch_centre": "pinchCentre"}
 
 
 @dataclasses.dataclass(frozen=True)
@@ -40,13 +48,26 @@ class WallLayer:
 class Diaphragm:
     """The diaphragm on top of a storey, at the wall, per metre of wall: stiffness [N/m per m],
     mass [kg/m] and damping ratio; law 'linear', 'boucWen' or 'boucWenPinched' (the latter two
-    with a yield force [N/m] and a post-yield stiffness ratio)."""
+    with a yield force [N/m] and a post-yield stiffness ratio); pinching: Foliente's (pinch_size,
+    pinch_width, pinch_centre) of a boucWenPinched law, default PINCHING_TIMBER."""
     stiffness: float
     mass: float
     damping: float = DAMPING_DEFAULT
     law: str = "linear"
     yield_force: float = math.inf
     post_yield: float = 1.0
+    pinching: dict = None
+
+    def __post_init__(self):
+        if self.pinching is not None and self.law != "boucWenPinched":
+            raise ValueError(f"pinching is a property of the boucWenPinched law, not of {self.law!r}")
+        if self.law == "boucWenPinched" and self.pinching is None:
+            object.__setattr__(self, "pinching", dict(PINCHING_TIMBER))
+
+    def hysteresis(self):
+        """The Bouc-Wen shape and pinching the scene solver and the Building FMUs take (scene_engine.Spec's
+        names; FMU_HYSTERESIS_NAMES maps them to the FMUs')."""
+        return dict(BOUC_WEN_SHAPE, **(self.pinching or NO_PINCHING))
 
     @property
     def dashpot(self):
@@ -92,6 +113,12 @@ class Building:
         laws = {s.diaphragm.law for s in self.storeys}
         if len(laws) > 1:
             raise ValueError(f"one diaphragm law for the whole building, not {sorted(laws)}")
+        if len({tuple(sorted(s.diaphragm.hysteresis().items())) for s in self.storeys}) > 1:
+            raise ValueError("one pinching for the whole building's diaphragms (the solver and the FMUs take one)")
+
+    def hysteresis(self):
+        """The diaphragms' one Bouc-Wen shape and pinching (Diaphragm.hysteresis)."""
+        return self.storeys[0].diaphragm.hysteresis()
 
     @property
     def rigid_in_plane(self):

@@ -13,7 +13,7 @@ import pathlib
 
 import numpy as np
 
-from .. import engine, intensity, records
+from .. import engine, intensity, outputs, records
 from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 from . import scene as bs
 
@@ -90,7 +90,7 @@ def plot(results, path):
     ax[1].legend(fontsize=7)
     fig.tight_layout()
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=110)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"))  # whole, never through a link
     plt.close(fig)
 
 

@@ -7,12 +7,13 @@ import math
 import numpy as np
 
 from .. import engine, scene_engine
+from ..errors import RockingWallError
 from ..coupling.rules import ENERGY_SHARE_MAX
 
 SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
 
 
-class BuildingError(RuntimeError):
+class BuildingError(RockingWallError, RuntimeError):
     """A run whose numbers cannot be trusted (the energy balance does not close): never a result."""
 
 
@@ -86,14 +87,14 @@ def building_spec(building):
     storeys = tuple(storey_spec(building.wall_parameters(i), s.diaphragm, s.in_plane)
                     for i, s in enumerate(building.storeys))
     return scene_engine.Spec(storeys=storeys, rigid_in_plane=building.rigid_in_plane,
-                             diaphragm_law=building.storeys[0].diaphragm.law)
+                             diaphragm_law=building.storeys[0].diaphragm.law, **building.hysteresis())
 
 
 def wall_under_diaphragm_spec(wall_params, diaphragm, tie):
     """The scene of one wall (its full parameter set, the tie as its Kd) under a diaphragm with
     mass whose supports move with the ground."""
     return scene_engine.Spec(storeys=(storey_spec(dict(wall_params, Kd=tie, support=3), diaphragm),),
-                             diaphragm_law=diaphragm.law)
+                             diaphragm_law=diaphragm.law, **diaphragm.hysteresis())
 
 
 def check_energy(r, where):

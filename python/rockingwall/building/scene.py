@@ -31,14 +31,15 @@ import math
 
 import numpy as np
 
-from .. import paths
-from ..coupling import jacobi, rules
+from .. import bounds, paths
+from ..coupling import energy_guard, jacobi, rules
 from ..coupling.slaves import fmi_call
 from ..names import HINGE_LAWS, SUPPORTS, paper_wall
 
 WALL_OUT = ["s1", "s2", "F_top", "F_base", "energy", "P_ground", "dissipated"]
 FLOOR_OUT = ["u_diaph", "a_diaph", "u_top", "u_floor", "v_floor", "v_diaph", "work_storey", "work_diaph"]
 MAX_STOREYS = 5
+MAX_STEPS = 1e7  # macro steps of one run: each keeps a row of every output
 
 
 @dataclasses.dataclass
@@ -168,67 +169,112 @@ class SceneResult(dict):
         -ag sum m v) + the work the floors do moving the bases of the walls above storey 1,
         sum (F_top + F_base) v_base; stored = walls' energy (kinetic, gravity, hinges, spring) +
         building's kinetic energy + the work of its springs (elastic energy plus what their
-        hysteresis dissipated); damping = building's Rayleigh damping; impacts = the walls'
-        `dissipated`. Balance: input = stored - stored(0) + damping + impacts."""
-        m = self.meta
-        n = m["n_storeys"]
-        P_in = -self["ag"] * sum(m["m"][i] * self[f"v_floor_{i + 1}"] + m["md"][i] * self[f"v_diaph_{i + 1}"]
-                                 for i in range(n))
-        stored = sum(0.5 * m["m"][i] * self[f"v_floor_{i + 1}"] ** 2 + 0.5 * m["md"][i] * self[f"v_diaph_{i + 1}"] ** 2
-                     + self[f"work_storey_{i + 1}"] + self[f"work_diaph_{i + 1}"] for i in range(n))
-        impacts = np.zeros_like(self["time"])
-        for s in m["walls"]:
-            P_in = P_in + self[f"wall_{s}_P_ground"]
-            if s > 1:
-                P_in = P_in + (self[f"wall_{s}_F_top"] + self[f"wall_{s}_F_base"]) * self[f"v_diaph_{s - 1}"]
-            stored = stored + self[f"wall_{s}_energy"]
-            impacts = impacts + self[f"wall_{s}_dissipated"]
-        damping = rules.work(self["time"], self._damping_power())
+        hysteresis dissipated); damping = building's Rayleigh damping and dashpots; impacts = the
+        walls' `dissipated`. Balance: input = stored - stored(0) + damping + impacts. It holds up
+        to the first collapse (a fallen wall's outputs stay at its collapse)."""
+        walls = self.meta["walls"]
+        P_in, P_damping, stored, impacts = energy_parts(self.__getitem__, self.meta, walls, walls)
+        damping = rules.work(self["time"], P_damping)
         inp = rules.work(self["time"], P_in)
         return dict(input=inp, stored=stored - stored[0], damping=damping, impacts=impacts - impacts[0],
                     residual=inp - (stored - stored[0]) - damping - (impacts - impacts[0]))
 
-    def _damping_power(self):
-        """x'^T C x', C = a0 M + a1 K0 (docs/building.md), from the velocities relative to the ground."""
-        m = self.meta
-        n, a0, a1 = m["n_storeys"], m["a0"], m["a1"]
-        P = np.zeros_like(self["time"])
-        for i in range(n):
-            vf, vd = self[f"v_floor_{i + 1}"], self[f"v_diaph_{i + 1}"]
-            vf_below = self[f"v_floor_{i}"] if i > 0 else 0.0
-            P = P + a0 * (m["m"][i] * vf ** 2 + m["md"][i] * vd ** 2)
-            P = P + a1 * (m["k"][i] * (vf - vf_below) ** 2 + m["kd"][i] * (vd - vf) ** 2)
-        return P
+
+def energy_parts(get, meta, powered, walls):
+    """(input power, damping power, stored energy, impact losses) of the scene from its outputs
+    (get(name) by SceneResult's names, arrays or numbers): the walls of `powered` take power
+    (standing), those of `walls` hold energy (a fallen wall keeps what it had when it fell).
+    Damping: x'^T C x', C = a0 M + a1 K0 + the dashpots cs, cd (docs/building.md), from the
+    velocities relative to the ground."""
+    n, a0, a1 = meta["n_storeys"], meta["a0"], meta["a1"]
+    P_in = -get("ag") * sum(meta["m"][i] * get(f"v_floor_{i + 1}") + meta["md"][i] * get(f"v_diaph_{i + 1}")
+                            for i in range(n))
+    stored, P_damping, impacts = 0.0, 0.0, 0.0
+    for i in range(n):
+        vf, vd = get(f"v_floor_{i + 1}"), get(f"v_diaph_{i + 1}")
+        vf_below = get(f"v_floor_{i}") if i > 0 else 0.0
+        stored = stored + 0.5 * meta["m"][i] * vf ** 2 + 0.5 * meta["md"][i] * vd ** 2 \
+            + get(f"work_storey_{i + 1}") + get(f"work_diaph_{i + 1}")
+        P_damping = P_damping + a0 * (meta["m"][i] * vf ** 2 + meta["md"][i] * vd ** 2) \
+            + (a1 * meta["k"][i] + meta["cs"][i]) * (vf - vf_below) ** 2 \
+            + (a1 * meta["kd"][i] + meta["cd"][i]) * (vd - vf) ** 2
+    for s in walls:
+        stored = stored + get(f"wall_{s}_energy")
+        impacts = impacts + get(f"wall_{s}_dissipated")
+    for s in powered:
+        P_in = P_in + get(f"wall_{s}_P_ground")
+        if s > 1:
+            P_in = P_in + (get(f"wall_{s}_F_top") + get(f"wall_{s}_F_base")) * get(f"v_diaph_{s - 1}")
+    return P_in, P_damping, stored, impacts
 
 
 def _building_meta(b, n):
     """The building's masses, stiffnesses and Rayleigh coefficients as the FMU holds them."""
-    names = [f"{q}_{i + 1}" for i in range(n) for q in ("m", "md", "k", "kd")] + ["rayleighMass", "rayleighStiffness"]
+    per_floor = ("m", "md", "k", "kd") + tuple(q for q in ("cs", "cd") if f"{q}_1" in b.vr)
+    names = [f"{q}_{i + 1}" for i in range(n) for q in per_floor] + ["rayleighMass", "rayleighStiffness"]
     v = dict(zip(names, fmi_call(b, "reading the parameters", b.getReal, [b.vr[x] for x in names])))
-    return dict(n_storeys=n, m=[v[f"m_{i + 1}"] for i in range(n)], md=[v[f"md_{i + 1}"] for i in range(n)],
-                k=[v[f"k_{i + 1}"] for i in range(n)], kd=[v[f"kd_{i + 1}"] for i in range(n)],
-                a0=v["rayleighMass"], a1=v["rayleighStiffness"])
+    # a Building without dashpots (an SSP's replacement FMU from before them) has none
+    return dict(n_storeys=n, a0=v["rayleighMass"], a1=v["rayleighStiffness"],
+                **{q: [v.get(f"{q}_{i + 1}", 0.0) for i in range(n)] for q in ("m", "md", "k", "kd", "cs", "cd")})
 
 
-def run(scene, record, t_end, H, order=2, rtol=1e-8):
+REMEDY = ("run the building as one integration instead: `rockingwall building FILE.toml` (stable at any mass "
+          "ratio), or in an FMI tool build/BuildingWithWalls.fmu (walls, ties, diaphragms and floors as the "
+          "states of one FMU)")
+
+
+def _guard(scene, H, order, share):
+    """The energy guard of a building run (rockingwall.coupling.energy_guard)."""
+    walls = [w.storey for w in scene.walls]
+
+    def parts(point, fallen, meta):
+        row = _row(point)
+        standing = [s for s in walls if f"wall_{s}" not in fallen]
+        return energy_parts(row.__getitem__, meta, standing, walls)
+
+    def explain(t, residual, peak):
+        try:
+            cause = rules.scene_stability(scene, H, order).cause()
+        except (KeyError, ValueError, OSError, np.linalg.LinAlgError):  # a building FMU the prediction cannot read
+            cause = ""
+        cause = cause or (f"the macro step H = {1e3 * H:g} ms or the mass ratios of the walls to the diaphragms they "
+                          f"stand on (the prediction about rest finds none: the motion may have left the walls' "
+                          f"elastic range)")
+        return (f"the co-simulation went unstable at t = {t:.4g} s: the energy residual {residual:.3g} J/m passed "
+                f"{share:g} of the input work ({peak:.3g} J/m): its motion is the coupling's, not the building's, and "
+                f"no peak or collapse of it is a result. Likely cause: {cause}. Remedy: {REMEDY}")
+
+    return energy_guard.EnergyGuard(lambda slaves: _building_meta(slaves["building"], scene.n_storeys), parts,
+                                    explain, share)
+
+
+def run(scene, record, t_end, H, order=2, rtol=1e-8, energy_stop=rules.ENERGY_STOP_SHARE):
     """The Jacobi master (rockingwall.coupling.jacobi) over `scene` under `record` (a
     rockingwall.records.Record, ag in m/s2) to t_end with macro step H. Returns a SceneResult. A
     wall that collapses (its fmi2Discard) falls out of the scene: from then on it takes no inputs
     and puts no force on the building, its outputs stay at the collapse; result["collapsed"] =
     {storey: t}, result["collapsed_at"] the first (None if none), and the energy terms hold up to
-    then only. Any other failure raises CouplingError."""
+    then only. The run stops with CouplingUnstable (its cause and the remedy in the message) once
+    its energy residual passes energy_stop of the input work (None: never; for studies of the
+    scheme itself). Any other failure raises CouplingError."""
+    bounds.run_length(0.0, t_end, "the coupled scene's end time")
     if not (math.isfinite(H) and 1e-6 <= H <= t_end):
         raise ValueError(f"macro step {H!r} is outside [1e-6, t_end = {t_end:g}] s")
+    if t_end / H > MAX_STEPS:
+        raise ValueError(f"{t_end:g} s in macro steps of {H:g} s are {t_end / H:.3g} steps, more than {MAX_STEPS:g}: "
+                         "a larger --macro-step or a shorter --t-end")
     if order not in (1, 2):
         raise ValueError(f"coupling order {order!r}: 1 (inputs held) or 2 (inputs ramped)")
+    guard = None if energy_stop is None else _guard(scene, H, order, energy_stop)
     history = jacobi.run(scene, record.t, record.ag, t_end, H, order=order, rtol=rtol,
                          read_at_end=lambda slaves: _building_meta(slaves["building"], scene.n_storeys),
-                         prefix="building_scene_")
+                         monitor=guard)
     rows = [_row(p) for p in history.points]
     r = SceneResult({key: np.asarray([row.get(key, np.nan) for row in rows]) for key in rows[0]})
     r["collapsed_at"] = min(history.fallen.values()) if history.fallen else None
     r["collapsed"] = {int(name.split("_")[1]): t for name, t in history.fallen.items()}
     r.meta = dict(history.at_end, walls=[w.storey for w in scene.walls])
+    r.energy_share_max = None if guard is None else guard.max_share
     return r
 
 

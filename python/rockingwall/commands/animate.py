@@ -12,7 +12,7 @@ which the joint closes (side -sign(q2 - q1)), as in docs/model.md. The diaphragm
 """
 import pathlib
 
-from .. import animation
+from .. import animation, outputs
 from . import common as cc
 
 
@@ -27,9 +27,13 @@ def main(argv=None):
     p.add_argument("--out", default="results/rocking_wall.gif")
     args = p.parse_args(argv)
     wall = cc.wall_from_args(args)
+    if not (1 <= args.fps <= 100 and 0 < args.speed <= 100 and 0 < args.t_end < float("inf")):
+        raise ValueError(f"--fps {args.fps} (1..100), --speed {args.speed:g} (0..100] and --t-end {args.t_end:g} "
+                         "(> 0): out of range")
     rec = cc.record_from_args(args.record, args)
     out = pathlib.Path(args.out)
     cc.output_dir(out.parent)
+    outputs.check_target(out, "--out")  # before the run: the GIF never replaces the record
     n_frames, s1, s2 = animation.animate(wall, rec, out, args.t_end, args.speed, args.fps, args.exaggerate)
     print(f"wrote {out} ({out.stat().st_size / 1e6:.2f} MB, {n_frames} frames); peaks in the clip: "
           f"s1 {1000 * s1:.1f} mm, s2 {1000 * s2:.1f} mm")

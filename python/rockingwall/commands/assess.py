@@ -1,18 +1,30 @@
-"""rockingwall assess: one wall under one or more records, at several intensities and diaphragm
-stiffnesses; per case the peaks with units, s1/Delta_u, the limit states reached and collapse;
-per limit state a fragility with its uncertainty; IDA 'resurrections' reported.
+"""rockingwall assess: one wall (or the walls of a building) under one or more records, at several
+intensities and diaphragm stiffnesses; per case the record's PGA, the peaks with units,
+s1/Delta_u, the limit states reached, collapse, and the case's robustness (the probability of
+collapse and of each limit state in an ensemble of walls within the inputs' uncertainty, the
+16/50/84 % peaks, a flag where the outcome flips); per limit state a fragility with its
+uncertainty; IDA 'resurrections' reported.
 
   rockingwall assess --b 230mm --h 3.2 --W 14.08kN/m --psi 0.2 --kd-values 30kN/m/m 100kN/m/m \\
       --pga 0.1 0.2 0.35 0.5 fema --out results/assess
+  rockingwall assess --building house.toml fema --pga 0.2 0.35 0.5 --table md
 
 Records: .AT2 or .csv files, 'elcentro', 'gaussian[:D,T]', or 'fema' (the 44 FEMA P695 far-field
 components). Intensities: --pga (each record scaled to each PGA, g), --sa with --sa-period (to
 each Sa(T, 5 %), g) or --scale (factors on the records as given). Each run lasts its record.
-Writes cases.csv, one IDA plot per record (<record>.png), fragility.png and fragility.csv."""
+Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv and
+manifest.json (the run's files; "complete": true once all are in place). The folder then holds
+this run's files only: those of an earlier assessment it does not write again are removed (unless
+edited since), other files are left alone."""
+import dataclasses
 import sys
 
-from .. import assessment, limits, units
+from tqdm import tqdm
+
+from .. import assessment, assessment_building, assessment_report, intensity, limits, records, scenes, units
 from ..api import ENGINES
+from ..names import SUPPORTS
+from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
 
 
@@ -20,42 +32,131 @@ def parser(sub):
     p = sub.add_parser("assess", help="a wall's assessment: records x intensities x K_d, limit states, fragility",
                        description=__doc__, formatter_class=cc.Parser().formatter_class)
     cc.add_wall_arguments(p)
+    cc.add_diaphragm_arguments(p)
+    p.add_argument("--building", metavar="FILE", help="assess every storey's wall of the building in FILE (TOML, "
+                   "docs/your-building.md) instead of one wall")
     p.add_argument("records", nargs="+", help="records: files, elcentro, gaussian[:D,T] or fema")
-    p.add_argument("--csv-units", default="g", choices=["g", "m/s2"])
+    p.add_argument("--csv-units", default="g", choices=list(records.CSV_UNITS),
+                   help="units of a CSV record's accelerations (default g)")
     level = p.add_mutually_exclusive_group(required=True)
-    level.add_argument("--pga", type=float, nargs="+", help="target PGAs [g]")
-    level.add_argument("--sa", type=float, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
-    level.add_argument("--scale", type=float, nargs="+", help="factors on the records as given")
+    level.add_argument("--pga", type=cc.intensity_g, nargs="+", help="target PGAs [g]")
+    level.add_argument("--sa", type=cc.intensity_g, nargs="+", help="target Sa(T, 5 %%) [g] at --sa-period")
+    level.add_argument("--scale", type=cc.scale_factor, nargs="+", help="factors on the records as given")
     p.add_argument("--sa-period", type=float, help="T [s] of Sa (e.g. the diaphragm's period); also reported")
     p.add_argument("--kd-values", nargs="+", help="diaphragm stiffnesses (default: the wall's K_d), e.g. 30kN/m/m")
     p.add_argument("--limit", action="append", metavar="'NAME: Q >= VALUE'",
                    help="a limit state (repeatable), Q one of s1, s2, F_top; VALUE e.g. 50mm, 10kN/m, 0.6*Delta_u; "
                         f"checked besides {'; '.join(limits.DEFAULTS)} and collapse")
-    p.add_argument("--engine", default="exact", choices=ENGINES)
+    p.add_argument("--engine", default="exact", choices=ENGINES, help="the nominal runs' engine (the ensembles run "
+                   "on the exact engine or the scene solver)")
+    p.add_argument("--table", default="text", choices=["text", "md"],
+                   help="the cases as aligned text (default) or a Markdown table to paste into a report")
     p.add_argument("--out", default="results/assess", help="output folder (created if missing)")
+    cc.add_ensemble_arguments(p, default=100)
+    cc.add_strict_argument(p)
     p.set_defaults(command=main)
     return p
 
 
+@dataclasses.dataclass
+class Study:
+    """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
+    storey for a building), the report's head lines, the scene, the plots' title, the group column."""
+    run: object
+    states: list
+    head: list
+    scene_text: str
+    title: str
+    column: str
+
+
+def output_names(recs):
+    return ["cases.csv", "fragility.csv", "fragility.png"] + [f"{cc.file_stem(r.name)}.png" for r in recs]
+
+
 def main(args):
-    wall = cc.wall_from_args(args)
     if args.sa and not args.sa_period:
         raise ValueError("--sa needs --sa-period")
-    kds = sorted({units.parse(k, "N/m2", "K_d") for k in args.kd_values}) if args.kd_values else [wall.params["Kd"]]
-    walls = {kd: wall.replace(Kd=kd) for kd in kds}  # each K_d checked (range, plausibility) before any run
-    states = limits.parse_all(args.limit, wall)
+    ensemble = cc.ensemble_from_args(args)
+    study = building_study(args) if args.building else wall_study(args)
+    study.head.append(f"ensemble: {ensemble.describe()}; FLIPS: the nominal outcome differs in at least 5 % of it"
+                      if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
-    out = cc.output_dir(args.out)
-    cases = assessment.run_cases(walls, recs, args, states)
-    frag = assessment.fragilities(cases, states)
-    im_name = "PGA [g]" if args.pga else (f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]")
-    cc.write_atomic(out / "cases.csv", lambda tmp: cases.to_csv(tmp, index=False, float_format="%.6g"))
-    cc.write_atomic(out / "fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
+    lvs = assessment.levels(recs, args)
+    for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
+        if message:
+            cc.warn(message, args)  # --strict: refused before any run
+    out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
+    out.check(output_names(recs))  # before the runs: no output replaces an input
+    cases, outcomes = study.run(lvs, ensemble)
+    states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
+    frag = assessment.fragilities(cases, states, study.column, outcomes)
+    im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
+    with out:  # the folder holds this run's files only, swapped in when all are written
+        write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
+    print(f"wrote {out.path}/cases.csv, fragility.csv, fragility.png, {MANIFEST} and {len(recs)} IDA plots",
+          file=sys.stderr)
+    print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
+                                   args.sa_period, study.column, study.scene_text))
+    return 0  # the report last: a closed pipe cannot lose the files
+
+
+def wall_study(args):
+    wall = cc.wall_from_args(args)
+    has_spring = int(wall.params["support"]) == SUPPORTS["flexibleTop"]
+    if args.kd_values and not has_spring:
+        raise ValueError("--kd-values: the wall's support has no top spring; K_d is used with --support "
+                         "flexibleTop only")
+    kds = sorted({units.parse(k, "N/m2", "K_d") for k in args.kd_values}) if args.kd_values else [wall.params["Kd"]]
+    # each K_d checked (range, plausibility) before any run
+    walls = {kd: cc.plausible(lambda kd=kd: wall.replace(Kd=kd), args) for kd in kds} if has_spring else {None: wall}
+    diaphragm, tie = cc.diaphragm_from_args(args, wall)
+    states = limits.parse_all(args.limit, wall)
+    if diaphragm is not None:
+        scene = scenes.diaphragm(diaphragm, tie).text().replace(units.format_kd(diaphragm.stiffness), "K_d (each above)")
+    elif has_spring:
+        scene = scenes.paper(dict(wall.params, Kd=kds[0])).text().replace(f"K_d = {units.format_kd(kds[0])}",
+                                                                           "K_d (each above)")
+    else:
+        scene = scenes.paper(wall.params).text()
+    head = [f"wall: {wall.describe(with_kd=False)}"]
+    if has_spring:
+        head.append(("diaphragm stiffness K_d: " if diaphragm else "K_d: ") + ", ".join(map(units.format_kd, kds)))
+    head += [f"Delta_u = {wall.delta_u * 1e3:.1f} mm; limit states: " + "; ".join(s.describe() for s in states),
+             scene]
+
+    def run(lvs, ensemble):
+        return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
+    return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN)
+
+
+def building_study(args):
+    from ..building import building_file
+    if cc.wall_given(args) or args.diaphragm_mass or args.tie or args.kd_values:
+        raise ValueError("--building FILE describes the walls and diaphragms: give no wall, diaphragm or --kd-values "
+                         "options")
+    if args.engine != "exact":
+        raise ValueError("--building runs on the scene solver: --engine does not apply")
+    building = building_file.read(args.building)
+    states = assessment_building.storey_states(building, args.limit)
+    if any(s.quantity == "F_top" for s in states[0]):
+        raise ValueError("--limit on F_top: a building's tie forces are not computed; limit s1 or s2")
+    scene = scenes.building(building).text()
+    head = [building.describe(), "limit states: " + " | ".join(
+        f"storey {i + 1}: " + "; ".join(s.describe() for s in st) for i, st in enumerate(states)), scene]
+
+    def run(lvs, ensemble):
+        return assessment_building.run_cases(building, lvs, states, ensemble)
+    return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN)
+
+
+def write_files(out, cases, frag, recs, states, im_name, study):
+    csv = cases.replace([float("inf"), float("-inf")], float("nan"))  # a collapsed percentile: empty, not inf
+    out.write("cases.csv", lambda tmp: csv.to_csv(tmp, index=False, float_format="%.6g"))
+    out.write("fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
     from .. import assessment_plots  # matplotlib: imported when the plots are drawn
-    for rec in recs:
-        cc.write_atomic(out / f"{cc.file_stem(rec.name)}.png",
-                        lambda tmp, rec=rec: assessment_plots.ida(cases[cases.record == rec.name], wall, states, im_name, tmp))
-    cc.write_atomic(out / "fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp))
-    print(f"wrote {out}/cases.csv, fragility.csv, fragility.png and {len(recs)} IDA plots", file=sys.stderr)
-    print(assessment.report(wall, kds, states, cases, frag, im_name))  # last: a closed pipe cannot lose the files
-    return 0
+    for rec in tqdm(recs, desc="plots", unit="plot", file=sys.stderr, delay=2):
+        d = cases[cases.record == rec.name]
+        out.write(f"{cc.file_stem(rec.name)}.png", lambda tmp, d=d, rec=rec: assessment_plots.ida(
+            d, f"{rec.name}: {study.title}", states, im_name, tmp, study.column))
+    out.write("fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp, study.column))

@@ -1,12 +1,10 @@
 """What every command shares: a wall from the command line, a record, errors as one line."""
 import argparse
-import os
 import pathlib
 import sys
-import tempfile
 import warnings
 
-from .. import records, units
+from .. import bounds, intensity, outputs, records, units
 from ..building.description import DAMPING_DEFAULT, TIE_DEFAULT, Diaphragm
 from ..names import SUPPORTS
 from ..wall import Wall
@@ -56,12 +54,38 @@ def wall_from_args(args):
         if not sep:
             raise ValueError(f"--set {item!r}: expected NAME=VALUE")
         values[name.strip()] = value.strip()
+    return plausible(lambda: Wall.make(preset=args.wall, **values), args)
+
+
+def add_strict_argument(parser):
+    parser.add_argument("--strict", action="store_true",
+                        help="every plausibility warning (a unit slip in the wall, K_d or the record) is an error "
+                             "(exit 2)")
+
+
+def warn(message, args):
+    """A plausibility warning on standard error, or with --strict an error (ValueError: exit 2)."""
+    if getattr(args, "strict", False):
+        raise ValueError(f"{message} (--strict: plausibility warnings are errors)")
+    print(f"rockingwall: warning: {message}", file=sys.stderr)
+
+
+def plausible(make, args):
+    """make()'s result, its warnings passed to warn() (errors with --strict)."""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        wall = Wall.make(preset=args.wall, **values)
+        value = make()
     for w in caught:
-        print(f"rockingwall: warning: {w.message}", file=sys.stderr)
-    return wall
+        warn(str(w.message), args)
+    return value
+
+
+def check_record(record, args):
+    """The record as it will run: a PGA outside the plausible range warns (or fails with --strict)."""
+    message = intensity.pga_warning(record)
+    if message:
+        warn(message, args)
+    return record
 
 
 def add_diaphragm_arguments(parser):
@@ -96,25 +120,55 @@ def add_record_arguments(parser, many=False):
                         default=["elcentro"] if many else "elcentro",
                         help="an .AT2 or .csv file, an ESM, GeoNet, K-NET or COSMOS file (FILE:COMPONENT picks a "
                              "component), 'elcentro' (default) or 'gaussian[:D,T]'")
-    parser.add_argument("--csv-units", default="g", choices=["g", "m/s2"], help="units of a CSV record (default g)")
+    parser.add_argument("--csv-units", default="g", choices=list(records.CSV_UNITS),
+                        help="units of a CSV record's accelerations (default g)")
     level = parser.add_mutually_exclusive_group()
-    level.add_argument("--scale", type=float, help="factor on the record as given")
-    level.add_argument("--pga", type=float, help="scale the record to this PGA [g]")
+    level.add_argument("--scale", type=scale_factor, help="factor on the record as given (> 0)")
+    level.add_argument("--pga", type=intensity_g, help="scale the record to this PGA [g] (> 0)")
+
+
+def scale_factor(text):
+    """An argparse type: a factor on a record, finite and > 0."""
+    try:
+        return bounds.positive(text, "scale factor")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def intensity_g(text):
+    """An argparse type: a target PGA or Sa [g], finite, > 0 and at most bounds.MAX_AG_G."""
+    try:
+        return bounds.intensity_g(text, "intensity")
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def load_record(spec, units="g"):
+    """records.load, the file (if it is one) registered as an input no output may replace."""
+    record = records.load(spec, units=units)
+    path, _ = records.split_spec(spec)
+    outputs.protect(path, "the record")  # a name (elcentro, gaussian) is no file: nothing registered
+    return record
 
 
 def record_from_args(spec, args):
-    record = records.load(spec, units=args.csv_units)
+    record = load_record(spec, units=args.csv_units)
     if args.pga is not None:
-        return record.to_pga(args.pga)
-    return record.scaled(args.scale) if args.scale is not None else record
+        record = record.to_pga(args.pga)
+    elif args.scale is not None:
+        record = record.scaled(args.scale)
+    return check_record(record, args)
 
 
-def output_dir(path):
+def output_dir(path, option="--out"):
     """The output folder, created if missing (its parents too); an error if it is a file."""
     out = pathlib.Path(path)
     if out.exists() and not out.is_dir():
-        raise ValueError(f"--out {out}: exists and is not a folder")
-    out.mkdir(parents=True, exist_ok=True)
+        raise ValueError(f"{option} {out}: exists and is not a folder")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(f"{option} {out}: cannot create the folder: {exc.strerror}") from None
     return out
 
 
@@ -124,16 +178,8 @@ def file_stem(name):
 
 
 def write_atomic(path, write):
-    """write(tmp_path) into a temporary file beside `path`, renamed into place when it succeeded."""
-    path = pathlib.Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    os.close(fd)
-    try:
-        write(tmp)
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    """outputs.write_atomic: whole or not at all, never over an input, the umask's mode."""
+    return outputs.write_atomic(path, write, "--out")
 
 
 def fail(message, code=2):
@@ -145,3 +191,26 @@ class Parser(argparse.ArgumentParser):
     def __init__(self, **kw):
         kw.setdefault("formatter_class", argparse.RawDescriptionHelpFormatter)
         super().__init__(**kw)
+
+
+def add_ensemble_arguments(parser, default):
+    from ..ensemble import FIELDS, Spreads
+    g = parser.add_argument_group(
+        "robustness: the case run again for an ensemble of walls within the inputs' uncertainty (docs/robustness.md)")
+    g.add_argument("--ensemble", type=int, default=default, metavar="N",
+                   help=f"members per case (default {default}{': none' if not default else ''}; 0: none)")
+    g.add_argument("--seed", type=int, default=1, help="the ensemble's seed (default 1): the same members every run")
+    defaults = Spreads()
+    g.add_argument("--spread", action="append", default=[], metavar="NAME=VALUE",
+                   help="an input's spread (repeatable): the standard deviation of ln(value) (e_r: of the value); "
+                        "defaults " + ", ".join(f"{n}={getattr(defaults, n):g}" for n in FIELDS))
+
+
+def ensemble_from_args(args):
+    """The ensemble the options ask for, or None (--ensemble 0)."""
+    from ..ensemble import Ensemble, Spreads
+    if args.ensemble == 0:
+        if args.spread:
+            raise ValueError("--spread: give an ensemble size (--ensemble N) too")
+        return None
+    return Ensemble(size=args.ensemble, seed=args.seed, spreads=Spreads.parse(args.spread))

@@ -24,25 +24,28 @@ The macro step defaults to the largest one the tie K_d allows (coupling.rules.ma
 H <= c sqrt(m_r/K_d), docs/coupling.md), at most 1 ms; a larger --macro-step (--step) is run with a
 warning. A run whose energy residual exceeds --energy-share of the peak ground work (1 %) is
 flagged: a warning on stderr, "energy_ok": false in the summary JSON, and exit status 3 with
---strict. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
+--strict. A run whose residual passes half of the ground work (coupling.rules.ENERGY_STOP_SHARE)
+has gone unstable: it ends with an error naming the likely cause and the remedy, exit status 1,
+and nothing of it is written or printed as a result. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
 
 Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms), results/couple.png and
 results/couple.json (the summary: peaks, step, step limit, energy residual share and flags).
 """
 import argparse
-import json
 import math
 import pathlib
 import sys
 
 import numpy as np
 
-from .. import paths
+from .. import outputs, paths, records, strict_json
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
-                                       check_options, macro_step, parse_settings, wall_start_values)
+                                       check_options, macro_step, parse_settings, unstable_message,
+                                       wall_start_values)
 from ..names import HINGE_LAWS as LAWS
+from .common import scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 
@@ -58,7 +61,7 @@ def parse_args(argv):
     ap.add_argument("--wall-fmu", help="default: the installed RockingWall.fmu")
     ap.add_argument("--diaphragm-fmu", help="default: the installed Diaphragm.fmu")
     ap.add_argument("--record", default="elcentro", help="'elcentro' (quakeio) or a PEER .AT2 file")
-    ap.add_argument("--scale", type=float, default=0.5)
+    ap.add_argument("--scale", type=scale_factor, default=0.5, help="factor on the record (> 0, default 0.5)")
     ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
     ap.add_argument("--Kd", type=_stiffness, default=1e5,
                     help="wall-to-diaphragm spring, N/m per m of wall, or with a unit (100kN/m/m)")
@@ -116,6 +119,33 @@ def resolve_macro_step(a):
     return limit, warning
 
 
+def unstable_masters(results, a):
+    """The error of the first master whose energy residual passed rules.ENERGY_STOP_SHARE of the
+    ground work (the fmpy master stops itself there; libcosim's is checked after its run), or None."""
+    wall = wall_start_values(a.wall, a.Kd, a.hinge_law, overrides=parse_settings(a.set))
+    for master, r in results.items():
+        residual, work = r.energy_residual(), r.ground_work()
+        share, ok = rules.energy_check(residual, work, rules.ENERGY_STOP_SHARE)
+        if not ok:
+            k = int(np.argmax(np.abs(residual) > rules.ENERGY_STOP_SHARE * np.abs(work).max()))
+            explain = unstable_message(wall, {"m": a.m, "k": a.k}, a.macro_step)
+            return f"{master} master: " + explain(float(r["time"][k]), float(residual[k]), float(np.abs(work).max()))
+    return None
+
+
+def summary_file(a):
+    return pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
+
+
+def check_files(a):
+    """Before the run: the FMUs and the record are inputs the outputs never replace, and the three
+    outputs are three files."""
+    outputs.protect(a.wall_fmu, "the wall FMU")
+    outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
+    outputs.protect(records.split_spec(a.record)[0], "the record")
+    outputs.check_targets([a.out, a.plot, summary_file(a)], "output")
+
+
 def main(argv=None):
     a = parse_args(argv)
     step_warning = None
@@ -129,6 +159,7 @@ def main(argv=None):
         if a.monolithic and a.master != "fmpy":
             raise ValueError("--monolithic runs one CVODE over both FMUs: it takes no --master")
         check_options(a.t_end, a.macro_step if a.macro_step is not None else min(a.t_end, 1e-3), a.rtol)
+        check_files(a)
         limit, step_warning = resolve_macro_step(a)
         check_options(a.t_end, a.macro_step, a.rtol)
         masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
@@ -140,6 +171,10 @@ def main(argv=None):
         return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
     if step_warning:
         print(f"couple.py: warning: {step_warning}", file=sys.stderr)
+    unstable = unstable_masters(results, a)
+    if unstable:
+        print(f"couple.py: error: {unstable}", file=sys.stderr)
+        return 1
     r = results[masters[0]]
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     output.save_csv(r, a.out)
@@ -149,8 +184,8 @@ def main(argv=None):
     for m in masters:
         report(m, results[m], a)
     info = output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning)
-    summary_path = pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
-    summary_path.write_text(json.dumps(info, indent=1) + "\n")
+    summary_path = summary_file(a)
+    outputs.write_atomic(summary_path, lambda tmp: strict_json.write(info, tmp), "--summary")
     print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
           f"max |ground work| {info['ground_work_max']:.4g} J/m")
     if not info["energy_ok"]:

@@ -23,19 +23,27 @@ is extrapolated by the master from the last two exchanges, (v_k - v_{k-1})/H (th
 output derivatives: maxOutputDerivativeOrder = 0); the record's ag gets its exact secant slope
 over the step. `order=1` holds every input over the step (the scheme of `rockingwall couple`).
 
+A run whose energy residual passes half of the input work (coupling.rules.ENERGY_STOP_SHARE) has
+gone unstable: it ends with an error naming the likely cause (the mass ratio of a wall to the
+diaphragm it stands on, a tie's macro step) and the remedy, exit status 1, and nothing of it is
+printed as a result (docs/building-coupling.md, "The limit").
+
     rockingwall couple-building --storeys 2 --record elcentro --scale 0.5
+    rockingwall couple-building --building examples/two-storey-brick.toml --record elcentro --pga 0.3
+    rockingwall couple-building --limits        # the stability limit's tables and plot
 """
 import argparse
 import sys
 
 import numpy as np
 
-from .. import records
-from ..building import ssp
+from .. import outputs, records
+from ..building import building_file, cosim, ssp
 from ..building.scene import default_scene, run
-from ..coupling.slaves import CouplingError
+from ..coupling.slaves import CouplingError, CouplingUnstable
 from ..names import HINGE_LAWS
 from ..sweep import suites
+from .common import intensity_g, scale_factor
 
 
 def parse_args(argv):
@@ -49,18 +57,35 @@ def parse_args(argv):
     ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2],
                     help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber)")
     ap.add_argument("--record", default="elcentro", help="'elcentro', 'gaussian[:D,T]' or an .AT2/.csv file")
-    ap.add_argument("--scale", type=float, default=0.5)
+    ap.add_argument("--building", metavar="FILE.toml",
+                    help="the building file (docs/your-building.md): the Building FMU's parameters from its storeys, "
+                         "a RockingWall FMU per wall (instead of --storeys, --walls, --wall, --Kd, --diaphragm-law)")
+    ap.add_argument("--scale", type=scale_factor, default=None, help="factor on the record (> 0, default 0.5)")
+    ap.add_argument("--pga", type=intensity_g, default=None, help="scales the record to this PGA [g] instead")
     ap.add_argument("--macro-step", type=float, default=1e-3, help="H [s]")
     ap.add_argument("--t-end", type=float, default=None, help="[s], default the record's duration")
     ap.add_argument("--order", type=int, default=2, choices=[1, 2],
                     help="2: inputs ramped with extrapolated derivatives; 1: inputs held")
     ap.add_argument("--ssp", help="also write the scene as an SSP 1.0 file here")
     ap.add_argument("--from-ssp", help="run the scene of this SSP file instead of the options above")
+    ap.add_argument("--limits", action="store_true",
+                    help="measure the stability limit of docs/building-coupling.md (tables and plot)")
     ap.add_argument("--example", action="store_true",
                     help="generate the worked example of docs/building-coupling.md (plot and table)")
     ap.add_argument("--records-cache", help="folder of the converted FEMA P695 far-field records "
                                             "(default: the one `rockingwall sweep` uses)")
     return ap.parse_args(argv)
+
+
+def _record(a):
+    if a.scale is not None and a.pga is not None:
+        raise ValueError("give --scale or --pga, not both")
+    rec = records.load(a.record)
+    if a.pga is not None:
+        if not (a.pga > 0 and np.isfinite(a.pga)):
+            raise ValueError(f"--pga {a.pga!r} must be a positive number of g")
+        return rec.to_pga(a.pga)
+    return rec.scaled(0.5 if a.scale is None else a.scale)
 
 
 def main(argv=None):
@@ -69,7 +94,19 @@ def main(argv=None):
         if a.example:
             from ..building import example  # scipy and the engine: only the example needs them
             return example.main(a.records_cache or suites.fema_cache())
-        if a.from_ssp:
+        outputs.protect(a.from_ssp, "the --from-ssp file")
+        outputs.protect(a.building, "the building file")
+        outputs.protect(records.split_spec(a.record)[0], "the record")
+        if a.ssp:
+            outputs.check_target(a.ssp, "--ssp")
+        if a.limits:
+            from ..building import limits
+            return limits.main()
+        if a.building and a.from_ssp:
+            raise ValueError("give --building or --from-ssp, not both")
+        if a.building:
+            scene = cosim.scene_of(building_file.read(a.building))
+        elif a.from_ssp:
             scene = ssp.read(a.from_ssp)
         else:
             walls = [int(x) for x in a.walls.split(",")] if a.walls else None
@@ -77,12 +114,16 @@ def main(argv=None):
         if a.ssp:
             ssp.write(scene, a.ssp)
             print(f"wrote {a.ssp}")
-        rec = records.load(a.record).scaled(a.scale)
+        rec = _record(a)
         t_end = a.t_end or float(rec.t[-1])
         r = run(scene, rec, t_end, a.macro_step, a.order)
-    except (ValueError, OSError, CouplingError) as exc:
-        print(f"couple-building: error: {exc}", file=sys.stderr)
+    except CouplingUnstable as exc:
+        remedy = f"`rockingwall building {a.building}`" if a.building else "`rockingwall building FILE.toml`"
+        print(f"couple-building: error: {str(exc).replace('`rockingwall building FILE.toml`', remedy)}", file=sys.stderr)
         return 1
+    except (ValueError, OSError, CouplingError) as exc:  # refused input: 2; a failed run or file: 1
+        print(f"couple-building: error: {exc}", file=sys.stderr)
+        return 2 if isinstance(exc, ValueError) else 1
     for w in scene.walls:
         print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
     e = r.energy_terms()

@@ -14,7 +14,7 @@ from . import common as cc
 
 def main(argv=None):
     parser = cc.Parser(prog="rockingwall demo", description=__doc__)
-    parser.add_argument("--scale", type=float, default=0.5, help="factor on the record as given (default 0.5)")
+    parser.add_argument("--scale", type=cc.scale_factor, default=0.5, help="factor on the record as given (default 0.5)")
     parser.add_argument("--engine", default="exact", choices=ENGINES)
     parser.add_argument("--out", default="results", help="folder for the CSV and the plot (created if missing)")
     args = parser.parse_args(argv)

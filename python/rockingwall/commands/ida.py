@@ -14,6 +14,7 @@ import argparse
 import pathlib
 import sys
 
+from .. import outputs
 from ..sweep import ida
 
 
@@ -38,6 +39,8 @@ def main(argv=None):
     except OSError as exc:
         print(f"rockingwall ida: error: --out {out}: {exc.strerror}", file=sys.stderr)
         return 2
+    outputs.protect(args.results, "the results file")
+    outputs.check_targets([out / "ida_curves.png", out / "fragility.png", out / "kd_map.png"], "--out")
     sub = d[d.kd_kN.isin(args.ida_kd)] if args.ida_kd else d
     ida.ida_curves(sub, out / "ida_curves.png")
     fits = ida.fragility_plot(sub, out / "fragility.png")

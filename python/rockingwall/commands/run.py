@@ -2,7 +2,9 @@
 of the time histories and a plot per record (and --json for programs)."""
 import sys
 
-from .. import run_report, strict_json
+from tqdm import tqdm
+
+from .. import outputs, run_report, strict_json
 from ..api import ENGINES, simulate
 from . import common as cc
 from .building import run_building
@@ -23,8 +25,18 @@ def parser(sub=None):
     p.add_argument("--rtol", type=float, default=1e-8, help="relative tolerance of fmi2sim and fmpy (default 1e-8)")
     p.add_argument("--out", help="folder for <record>.csv and <record>.png (created if missing)")
     p.add_argument("--json", action="store_true", help="print the results as JSON instead of a table")
+    cc.add_ensemble_arguments(p, default=0)
+    cc.add_strict_argument(p)
     p.set_defaults(command=main)
     return p
+
+
+def targets(out, recs):
+    """[(CSV path, plot path)] per record, checked before any run: no target is an input, no two
+    records write one file."""
+    files = [tuple(out / f"{cc.file_stem(r.name)}{suffix}" for suffix in (".csv", ".png")) for r in recs]
+    outputs.check_targets([p for pair in files for p in pair], "--out")
+    return files
 
 
 def main(args):
@@ -34,18 +46,21 @@ def main(args):
         return run_building(args.building, args)
     wall = cc.wall_from_args(args)
     diaphragm, tie = cc.diaphragm_from_args(args, wall)
-    results = [simulate(wall, cc.record_from_args(spec, args), engine=args.engine, stop_time=args.stop_time,
-                        tail=args.tail, rtol=args.rtol, diaphragm=diaphragm, tie=tie) for spec in args.records]
-    if args.out:  # files first: a closed pipe on standard output cannot lose them
-        out = cc.output_dir(args.out)
-        for r in results:
-            stem = cc.file_stem(r.record)
-            cc.write_atomic(out / f"{stem}.csv", lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
-            cc.write_atomic(out / f"{stem}.png", lambda tmp, r=r: run_report.plot(r, tmp))
-            print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)
+    ensemble = cc.ensemble_from_args(args)
+    recs = [cc.record_from_args(spec, args) for spec in args.records]
+    files = targets(cc.output_dir(args.out), recs) if args.out else []
+    results = [simulate(wall, rec, engine=args.engine, stop_time=args.stop_time, tail=args.tail, rtol=args.rtol,
+                        diaphragm=diaphragm, tie=tie, ensemble=ensemble)
+               for rec in tqdm(recs, desc="records", unit="record", file=sys.stderr, delay=2)]
+    for r, (csv_path, png_path) in zip(results, files):  # files first: a closed pipe on stdout cannot lose them
+        cc.write_atomic(csv_path, lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
+        cc.write_atomic(png_path, lambda tmp, r=r: run_report.plot(r, tmp))
+        print(f"wrote {csv_path} and {png_path}", file=sys.stderr)
     if args.json:
         strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
-                          "runs": [dict(record=r.record, engine=r.engine, **r.peaks()) for r in results]}, sys.stdout)
+                          "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
+                                        **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}))
+                                   for r in results]}, sys.stdout)
     else:
         print(run_report.table(wall, results))
     return 0

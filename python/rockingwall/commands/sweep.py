@@ -16,8 +16,9 @@ already in the file, computed from the same inputs (record content, FMU, fmi2sim
 not repeated; killed or timed-out runs are. A run that fails (e.g. a damaged record) becomes a row
 with status 'error' and fmi2sim's message, and the sweep goes on. One sweep at a time per results
 file (FILE.lock). Exit status: 0 when every run is finished (even with 'error' rows), 1 when some
-runs were killed or timed out (run the command again) or the file had damaged lines (set aside
-into FILE.set-aside-<time>, named line by line), 2 for a refused command or file.
+runs were killed or timed out (run the command again), the file had damaged lines (set aside
+into FILE.set-aside-<time>, named line by line) or the Dask cluster could not be started (nothing
+ran: run the command again), 2 for a refused command or file.
 
 Example (the measured sweep of the README):
   rockingwall sweep --config examples/fema_ida.toml --out results/sweep_fema.csv
@@ -29,9 +30,9 @@ import subprocess
 import sys
 import time
 
-from .. import paths
+from .. import outputs, paths
 from ..sweep import grid, store
-from ..sweep.execute import Terminated, check_options, describe as describe_outcome, execute
+from ..sweep.execute import ClusterError, Terminated, check_options, describe as describe_outcome, execute
 from ..sweep.lock import Busy
 
 def kd_in_kN(text):
@@ -56,6 +57,8 @@ def parse_args(argv=None):
                         "(the unit of the results' kd_kN column)")
     p.add_argument("--scales", type=float, nargs="+", help="scale factors on the records as given")
     p.add_argument("--pga", dest="pga_g", type=float, nargs="+", help="target PGAs [g] (replaces --scales)")
+    p.add_argument("--building", help="a building file (TOML, docs/your-building.md): its storeys' walls under the "
+                   "suite and intensities, solved as one building (replaces walls, models, hinge laws and K_d)")
     p.add_argument("--suite", help="'fema' (FEMA P695 far-field) or a folder of .AT2 (or ESM, GeoNet, K-NET, COSMOS) files")
     p.add_argument("--records", nargs="+", help="only these records of the suite (by name)")
     p.add_argument("--er", type=float, help="coefficient of restitution (default 0.86)")
@@ -91,6 +94,15 @@ def check_artefacts(args):
         if not pathlib.Path(path).is_file():
             raise FileNotFoundError(f"{path} is missing: build first (cmake -S . -B build && cmake --build build), "
                                     "or pass --fmi2sim/--fmu or RW_BUILD_DIR")
+
+
+def protect_inputs(args, specs):
+    """The files the sweep reads, which its results file may not be (nor a link to one)."""
+    outputs.protect(args.config, "the --config file")
+    outputs.protect(args.fmu, "the FMU")
+    outputs.protect(args.fmi2sim, "fmi2sim")
+    for s in specs:
+        outputs.protect(s.record_path, "a record of the suite")
 
 
 def check_command(args):
@@ -130,6 +142,9 @@ def main(argv=None):
     except (ValueError, OSError, ImportError, Busy) as exc:  # ResultsError, RecordError are ValueErrors
         print(f"rockingwall sweep: error: {exc}", file=sys.stderr)
         return 2
+    except ClusterError as exc:  # nothing ran: not a refused command, run it again
+        print(f"rockingwall sweep: error: {exc}", file=sys.stderr)
+        return 1
     except (KeyboardInterrupt, Terminated) as exc:
         print(f"rockingwall sweep: interrupted ({type(exc).__name__} {exc}): the rows written so far are kept; "
               "run the same command again to resume", file=sys.stderr)
@@ -144,6 +159,8 @@ def run(args):
     if args.dry_run:
         return 0
     check_artefacts(args)
+    protect_inputs(args, specs)
+    outputs.check_target(args.out, "--out")
     print("load:", subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip())
     common = dict(fmi2sim=args.fmi2sim, fmu=args.fmu, rtol=cfg["rtol"], scheduler=args.scheduler,
                   batch=args.batch, progress=not args.no_progress, timeout=args.timeout, engine=args.engine)
@@ -157,6 +174,7 @@ def run(args):
     times = {}
     for n in args.scan_workers:
         out = base.with_name(f"{base.stem}.w{n}{base.suffix}")
+        outputs.check_target(out, "--scan-workers output")
         if out.exists():
             out.unlink()  # a timing needs every run computed, none resumed
         outcome = execute(specs, out, workers=n, **common)

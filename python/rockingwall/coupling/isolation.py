@@ -9,10 +9,10 @@ import pathlib
 import signal
 import subprocess
 import sys
-import tempfile
 
 import numpy as np
 
+from .. import scratch, strict_json
 from . import libcosim, monolithic
 from .slaves import CouplingError
 from .wall_diaphragm import CoupledResult, ground_motion, parse_settings, run_fmpy, wall_start_values
@@ -23,7 +23,7 @@ def run_master_subprocess(master, args_list, out_json):
     ends that process only) with its own temporary folder, removed afterwards with whatever the
     child unpacked, even when it was killed. Returns the CompletedProcess."""
     cmd = [sys.executable, "-m", "rockingwall", "couple", "--master", master, "--json", str(out_json)]
-    with tempfile.TemporaryDirectory(prefix="couple_") as tmp:
+    with scratch.folder("rw_couple_") as tmp:
         return subprocess.run(cmd + list(args_list), capture_output=True, text=True, errors="replace",
                               timeout=1800, env=dict(os.environ, TMPDIR=tmp))
 
@@ -82,18 +82,24 @@ def _passthrough(a):
 
 def run_child(master, a):
     """A master's result, run in a child process; CouplingError with the child's real error."""
-    with tempfile.TemporaryDirectory(prefix="couple_result_") as tmp:
+    with scratch.folder("rw_couple_result_") as tmp:
         out_json = pathlib.Path(tmp) / f"{master}.json"
         proc = run_master_subprocess(master, _passthrough(a), out_json)
         if proc.returncode != 0 or not out_json.exists():
             raise CouplingError(child_failure(master, proc, (a.wall_fmu, a.diaphragm_fmu)))
         data = json.loads(out_json.read_text())
-    r = CoupledResult({k: np.asarray(v) for k, v in data.items() if k != "collapsed_at"})
+    r = CoupledResult({k: _array(v) for k, v in data.items() if k != "collapsed_at"})
     r["collapsed_at"] = data.get("collapsed_at")
     return r
 
 
+def _array(values):
+    """An array read back from the child's JSON: null (a non-finite number) becomes NaN."""
+    a = np.asarray(values)
+    return np.asarray(values, dtype=float) if a.dtype == object else a
+
+
 def write_result(r, path):
-    """The child's result arrays (and collapsed_at) as JSON, for run_child."""
-    pathlib.Path(path).write_text(json.dumps({k: (np.asarray(v).tolist() if v is not None else None)
-                                              for k, v in r.items()}))
+    """The child's result arrays (and collapsed_at) as strict JSON (NaN written as null), for run_child."""
+    with open(path, "w") as fh:
+        strict_json.dump({k: (np.asarray(v).tolist() if v is not None else None) for k, v in r.items()}, fh)

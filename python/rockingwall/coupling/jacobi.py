@@ -21,16 +21,20 @@ Call order at each communication point t_k = k H, k = 0, 1, ..., n = round(t_end
              CouplingError naming the FMU, the call and its last message;
   5. read    every standing slave's outputs at t_k + H, for step 1 of the next point.
 
+An optional monitor watches the run: monitor.start(slaves) once the slaves are initialised,
+monitor.check(point, fallen) after 3 at every point; it stops the run by raising (a
+CouplingUnstable when the scene's energy balance breaks: rockingwall.coupling.energy_guard).
+
 A scene has: slaves() -> [(name, FMU path, (real start values, integer start values))] in the
 order of 2 and 4; outputs(name) -> the output names read from that slave; inputs(outputs, ag,
 fallen) -> {(slave, input): value} (outputs: {slave: {output: value}}, fallen: {slave: t});
 ground_inputs() -> the (slave, input) pairs that take ag; may_fall(name); and
 jumps_when_a_slave_falls((slave, input)) -> bool."""
 import dataclasses
-import tempfile
 
 import numpy as np
 
+from .. import scratch
 from .slaves import FmuLog, close_slaves, failure, fmi_call, initialise, load_slave
 
 
@@ -72,19 +76,22 @@ class _Slopes:
         return out
 
 
-def run(scene, t_in, ag_in, t_end, H, order=1, rtol=1e-6, progress=None, read_at_end=None, prefix="coupling_"):
+def run(scene, t_in, ag_in, t_end, H, order=1, rtol=1e-6, progress=None, read_at_end=None, monitor=None):
     """Load and initialise the scene's slaves (their FMUs unpacked into one temporary folder,
     removed however the run ends), run the scheme of the module's docstring from 0 to t_end with
-    macro step H, and free the slaves. progress: a label for a progress bar (None: no bar).
-    Returns a History; read_at_end(slaves) is called before the slaves are freed."""
+    macro step H, and free the slaves. progress: a label for a progress bar (None: no bar);
+    monitor: see the module's docstring. Returns a History; read_at_end(slaves) is called before
+    the slaves are freed."""
     log, slaves = FmuLog(), {}
-    with tempfile.TemporaryDirectory(prefix=prefix) as unzip_root:
+    with scratch.folder("rw_jacobi_") as unzip_root:
         try:
             for name, path, start in scene.slaves():
                 slaves[name] = load_slave(path, name, unzip_root, log)  # listed first: always freed
                 initialise(slaves[name], start, rtol)
+            if monitor is not None:
+                monitor.start(slaves)
             history = exchange(scene, slaves, np.asarray(t_in, float), np.asarray(ag_in, float), t_end, H, order,
-                               progress)
+                               progress, monitor)
             if read_at_end is not None:
                 history.at_end = read_at_end(slaves)
             return history
@@ -109,7 +116,7 @@ def _set_inputs(slaves, values, slopes, ground_keys, ground_slope, at):
             fmi_call(s, at, s.setRealInputDerivatives, vr, [1] * len(vr), d)
 
 
-def exchange(scene, slaves, t_in, ag_in, t_end, H, order=1, progress=None):
+def exchange(scene, slaves, t_in, ag_in, t_end, H, order=1, progress=None, monitor=None):
     """The scheme of the module's docstring over initialised slaves ({name: slave}, in the
     scene's order); returns a History."""
     from fmpy.fmi1 import FMICallException
@@ -138,6 +145,8 @@ def exchange(scene, slaves, t_in, ag_in, t_end, H, order=1, progress=None):
         _set_inputs(standing, values, slopes.next(values), ground_keys, ag_slope, at)
         outputs.update({name: _read(scene, name, s, at) for name, s in standing.items()})
         points.append(Point(t, ag, dict(outputs), values))
+        if monitor is not None:
+            monitor.check(points[-1], fallen)
         if k == n:
             break
         for name, s in standing.items():

@@ -18,10 +18,10 @@ check and summary apply.
 import ctypes
 import math
 import os
-import tempfile
 
 import numpy as np
 
+from .. import scratch
 from .slaves import CouplingError, FmuLog, close_slaves, fmi_call, value_references
 from .wall_diaphragm import DIA_OUT, WALL_OUT, assemble, check_options, wall_start_values
 
@@ -162,7 +162,7 @@ def run_monolithic(wall_fmu, dia_fmu, t_in, ag_in, t_end, wall=None, dia=None, r
     FMU's message when an FMI call fails or CVODE gives up."""
     check_options(t_end, output_interval, rtol)
     log, models = FmuLog(), []
-    with tempfile.TemporaryDirectory(prefix="couple_me_") as unzip_root:
+    with scratch.folder("rw_couple_me_") as unzip_root:
         try:
             for path, name, start in [(wall_fmu, "wall", wall or wall_start_values()),
                                       (dia_fmu, "diaphragm", (dia or {}, {}))]:

@@ -5,6 +5,7 @@ import math
 
 import numpy as np
 
+from .. import outputs
 from . import rules
 
 
@@ -12,7 +13,8 @@ def save_csv(r, path):
     cols = ["time", "wall_s1", "wall_s2", "dia_u", "wall_F_top", "wall_energy", "dia_energy",
             "wall_P_ground", "dia_P_ground", "dia_P_damping", "wall_dissipated"]
     data = np.column_stack([r[c] for c in cols] + [r.energy_residual()])
-    np.savetxt(path, data, delimiter=",", header=",".join(cols + ["energy_residual"]), comments="")
+    outputs.write_atomic(path, lambda tmp: np.savetxt(tmp, data, delimiter=",", header=",".join(cols + ["energy_residual"]),
+                                                      comments=""), "--out")
 
 
 def plot(r, path, title, other=None):
@@ -40,7 +42,7 @@ def plot(r, path, title, other=None):
     ax[2].legend(loc="upper left", fontsize=8)
     fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--plot")
     plt.close(fig)
 
 

@@ -6,10 +6,18 @@ Each instance carries what the failure messages need: `vr` (value references by 
 import os
 import sys
 
+from ..errors import RockingWallError
 
-class CouplingError(Exception):
+
+class CouplingError(RockingWallError):
     """A slave failed (the FMU, the FMI call and the FMU's own message) or the run did not reach
     its end: never a silent, shortened result."""
+
+
+class CouplingUnstable(CouplingError):
+    """The coupled run's energy balance broke past the stop bound (rules.ENERGY_STOP_SHARE): the
+    scheme, not the physics, drove the motion. The message names the likely cause and the remedy;
+    nothing of such a run is a result."""
 
 
 def value_references(model_description):

@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import records
 from ..names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
-from . import jacobi, rules
+from . import energy_guard, jacobi, rules
 
 WALL_OUT = ["s1", "s2", "F_top", "energy", "P_ground", "dissipated"]
 DIA_OUT = ["u", "v", "energy", "P_ground", "P_damping"]
@@ -156,14 +156,43 @@ class WallAndDiaphragm:
         return False  # the run ends when the wall falls
 
 
-def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol=1e-6, progress=False):
+def _point_energy(point, fallen, meta):
+    """(input power, damping power, stored energy, impact losses) at a point: CoupledResult's terms."""
+    w, d = point.outputs["wall"], point.outputs["diaphragm"]
+    return w["P_ground"] + d["P_ground"], d["P_damping"], w["energy"] + d["energy"], w["dissipated"]
+
+
+def unstable_message(wall, dia, H):
+    """explain() of the energy guard (energy_guard.EnergyGuard) for the wall and its diaphragm."""
+    real = wall[0] if isinstance(wall, tuple) else wall
+    limit = tie_step_limit(real, {"m": dia.get("m", 2000.0), "k": dia.get("k", 7e5)})
+
+    def explain(t, residual, peak):
+        cause = (f"the tie K_d = {real['Kd']:.3g} N/m per m between the wall's top and the diaphragm's "
+                 f"{dia.get('m', 2000.0):g} kg/m allows a macro step of {limit:.3g} s, and H = {H:g} s"
+                 if H > limit * (1 + 1e-9) else f"the macro step H = {H:g} s")
+        return (f"the co-simulation went unstable at t = {t:.4g} s: the energy residual {residual:.3g} J/m passed "
+                f"{rules.ENERGY_STOP_SHARE:g} of the ground work ({peak:.3g} J/m): its motion is the coupling's, and "
+                f"no peak or collapse of it is a result. Likely cause: {cause}. Remedy: --monolithic (both FMUs under "
+                f"one CVODE, no macro step), --macro-step {limit:.3g} or smaller, or the wall under a diaphragm with "
+                f"mass in one integration (`rockingwall run --Kd ... --diaphragm-mass ...`; in an FMI tool "
+                f"build/BuildingWithWalls.fmu)")
+    return explain
+
+
+def run_fmpy(wall_fmu, dia_fmu, t_in, ag_in, t_end, H, wall=None, dia=None, rtol=1e-6, progress=False,
+             energy_stop=rules.ENERGY_STOP_SHARE):
     """The fmpy master: the package's Jacobi master (rockingwall.coupling.jacobi) over the wall
     and the diaphragm as Co-Simulation slaves, inputs held over each step. Returns a
-    CoupledResult, with collapsed_at the time the wall collapsed (None if it did not)."""
+    CoupledResult, with collapsed_at the time the wall collapsed (None if it did not). The run
+    stops with CouplingUnstable once its energy residual passes energy_stop of the ground work
+    (None: never)."""
     check_options(t_end, H, rtol)
     scene = WallAndDiaphragm(wall_fmu, dia_fmu, wall or wall_start_values(), dia or {})
+    guard = None if energy_stop is None else energy_guard.EnergyGuard(
+        lambda slaves: None, _point_energy, unstable_message(scene.wall, scene.dia, H), energy_stop)
     history = jacobi.run(scene, t_in, ag_in, t_end, H, order=1, rtol=rtol,
-                         progress="fmpy master" if progress else None, prefix="couple_fmus_")
+                         progress="fmpy master" if progress else None, monitor=guard)
     r = assemble([p.t for p in history.points], [[p.outputs["wall"][x] for x in WALL_OUT] for p in history.points],
                  [[p.outputs["diaphragm"][x] for x in DIA_OUT] for p in history.points])
     r["collapsed_at"] = history.fallen.get("wall")

@@ -37,7 +37,10 @@ def is_regular_file(path):
 
 def text_of(data):
     """Bytes as text: latin-1, so that any byte reads (the numbers and keys are ASCII), without the
-    UTF-8 byte-order mark an editor may have put first."""
+    UTF-8 byte-order mark an editor may have put first; UTF-16 when it starts with its byte-order
+    mark (a spreadsheet's 'Unicode text')."""
+    if data[:2] in (b"\xff\xfe", b"\xfe\xff"):
+        return data.decode("utf-16", errors="replace")
     return (data[3:] if data.startswith(b"\xef\xbb\xbf") else data).decode("latin-1")
 
 

@@ -1,18 +1,20 @@
 """Run the unfinished runs of a plan on Dask (or in this process) and append each row to the
 results file as it arrives."""
+import asyncio
 import contextlib
 import dataclasses
 import os
 import pathlib
 import shutil
 import signal
-import tempfile
 import threading
 import time
 
 import cloudpickle
 from tqdm import tqdm
 
+from .. import scratch
+from ..errors import RockingWallError
 from . import engine_task, fmi2sim_task, provenance, rows
 from .store import ResultsFile
 
@@ -145,20 +147,29 @@ def _client(scheduler, workers, tmp_root):
     from dask.distributed import Client, LocalCluster
     client = cluster = None
     try:
-        if scheduler:
-            client = Client(scheduler)
-        else:
-            # the cluster keeps its scratch space in the sweep's folder, removed with it
-            with dask.config.set({"temporary-directory": tmp_root}):
-                cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
-                                       dashboard_address=":0", local_directory=tmp_root)  # any free port
-            client = Client(cluster)
+        try:
+            if scheduler:
+                client = Client(scheduler)
+            else:
+                # the cluster keeps its scratch space in the sweep's folder, removed with it
+                with dask.config.set({"temporary-directory": tmp_root}):
+                    cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True,
+                                           dashboard_address=":0", local_directory=tmp_root)  # any free port
+                client = Client(cluster)
+        except (RuntimeError, OSError, TimeoutError, asyncio.TimeoutError) as exc:  # e.g. "Nanny failed to start"
+            where = f"the Dask scheduler at {scheduler}" if scheduler else f"a Dask LocalCluster of {workers} workers"
+            raise ClusterError(f"could not start {where}: {type(exc).__name__}: {exc}; nothing was run: run the "
+                               "command again") from None
         yield client
     finally:
         if client is not None:
             client.close()
         if cluster is not None:
             cluster.close()
+
+
+class ClusterError(RockingWallError):
+    """The Dask cluster could not be started or reached: nothing ran."""
 
 
 def stop_orphans(tmp_root):
@@ -209,7 +220,7 @@ def execute(specs, results_path, fmi2sim=None, fmu=None, rtol=None, scheduler=No
 
 def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch, progress, timeout, recs):
     """Runs todo, appending rows; returns (start-up seconds, running seconds)."""
-    tmp_root = tempfile.mkdtemp(prefix="rw_sweep_")  # every run's files, whatever ends the sweep
+    tmp_root = scratch.make("rw_sweep_")  # every run's files, whatever ends the sweep
     bar = tqdm(total=len(todo), desc="runs", unit="run", disable=not progress, smoothing=0.05)
     t_start = time.perf_counter()
     try:

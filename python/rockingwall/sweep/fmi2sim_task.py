@@ -10,6 +10,7 @@ import subprocess
 import tempfile
 import time
 
+from .. import scratch
 from .rows import ERROR, KILLED, OK, TIMEOUT, make_row, refusal
 
 TIMEOUT_S = 600.0
@@ -34,7 +35,7 @@ def _run_dir(tmp_root):
     """A private folder for one run, inside the sweep's folder when this machine has it (a
     LocalCluster), so whatever a killed run leaves is removed with the sweep's folder."""
     root = tmp_root if tmp_root and os.path.isdir(tmp_root) else None
-    return tempfile.mkdtemp(prefix="run_" if root else "rw_sweep_run_", dir=root)
+    return tempfile.mkdtemp(prefix="run_", dir=root) if root else scratch.make("rw_sweep_run_")
 
 
 PID_FILE = "fmi2sim.pid"

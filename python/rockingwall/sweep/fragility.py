@@ -1,20 +1,31 @@
-"""Collapse fragility: P(collapse | IM = x) = Phi(ln(x / theta) / beta), fitted by maximum
-likelihood to the collapse counts at each intensity level (binomial likelihood, as in Baker 2015,
-"Efficient analytical fragility function fitting using dynamic structural analysis data")."""
+"""Fragility: P(reached | IM = x) = Phi(ln(x / theta) / beta), fitted by maximum likelihood to the
+counts of runs that reach a limit state at each intensity level (binomial likelihood, as in Baker
+2015, "Efficient analytical fragility function fitting using dynamic structural analysis data"),
+with bootstrap intervals over the records.
+
+The likelihood is that of a probit regression, Phi(a + c ln x) with c = 1/beta and a = -c ln
+theta, which is concave in (a, c): its maximum, where it exists, is unique and Newton's method
+finds it to rounding. The bootstrap's resamples are fitted together, as arrays (probit.py)."""
 import dataclasses
 
 import numpy as np
-from scipy import optimize, stats
+from scipy import special
+
+from . import probit
 
 
 @dataclasses.dataclass(frozen=True)
 class Fragility:
-    theta: float   # median: the IM at which half the records collapse the wall
-    beta: float    # lognormal standard deviation
+    theta: float   # median: the IM at which half the runs reach the limit state
+    beta: float    # lognormal standard deviation; 0 where the data do not overlap (a step)
     n_runs: int
+    gap: tuple = None   # (lo, hi) of IM where the data do not overlap: theta is anywhere inside
 
     def __call__(self, im):
-        return stats.norm.cdf(np.log(np.asarray(im, dtype=float) / self.theta) / self.beta)
+        x = np.log(np.asarray(im, dtype=float) / self.theta)
+        if self.beta == 0:
+            return np.where(x < 0, 0.0, np.where(x > 0, 1.0, 0.5))
+        return special.ndtr(x / self.beta)
 
 
 def counts(im, collapsed):
@@ -27,23 +38,30 @@ def counts(im, collapsed):
     return levels, n, z
 
 
-def fit(im, collapsed):
-    """MLE of (theta, beta). Needs at least one collapse and one survival, else no estimate."""
-    levels, n, z = counts(im, collapsed)
-    if z.sum() == 0 or z.sum() == n.sum():
-        raise ValueError("all runs collapse or none does: the fragility has no finite estimate")
+def no_estimate_message(status, what):
+    """Why a fit has no estimate, in words naming the limit state `what` ('collapse', '0.6 Delta_u')."""
+    if status == probit.NONE:
+        return f"no run reaches {what}: the fragility has no finite estimate (its median is above every intensity run)"
+    if status == probit.ALL:
+        return f"every run reaches {what}: the fragility has no finite estimate (its median is below every intensity run)"
+    if status == probit.FLAT:
+        return (f"the share of runs reaching {what} does not rise with the intensity: the fragility has no finite "
+                "estimate (beta unbounded)")
+    return f"the runs are all at one intensity: the fragility of {what} has no estimate (beta not identified)"
 
-    def nll(p):
-        # log-parameters keep theta, beta > 0; clipping keeps log() finite at p = 0 or 1
-        prob = np.clip(stats.norm.cdf((np.log(levels) - p[0]) / np.exp(p[1])), 1e-12, 1 - 1e-12)
-        return -np.sum(z * np.log(prob) + (n - z) * np.log1p(-prob))
 
-    median_guess = np.log(levels[np.argmin(np.abs(z / n - 0.5))])
-    res = optimize.minimize(nll, x0=[median_guess, np.log(0.4)], method="Nelder-Mead",
-                            options=dict(xatol=1e-8, fatol=1e-10, maxiter=4000))
-    if not res.success:
-        raise RuntimeError(f"fragility fit did not converge: {res.message}")
-    return Fragility(float(np.exp(res.x[0])), float(np.exp(res.x[1])), int(n.sum()))
+def fit(im, exceeded, what="collapse"):
+    """The MLE of (theta, beta). ValueError where there is none: no run or every run reaches the
+    limit state, the share reaching it does not rise with the intensity, or one intensity only.
+    Where no run overlaps (every run below some intensity stays short, every run above reaches it)
+    beta is 0 and theta anywhere in the gap: theta is then the gap's geometric mean."""
+    levels, n, z = counts(im, exceeded)
+    fits = probit.fit(np.log(levels), n[None, :], z[None, :])
+    status = int(fits.status[0])
+    if status not in (probit.INTERIOR, probit.SEPARATED):
+        raise ValueError(no_estimate_message(status, what))
+    gap = tuple(np.exp(fits.gap[0])) if status == probit.SEPARATED else None
+    return Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap)
 
 
 MIN_RECORDS = 10  # below this the dispersion beta is poorly constrained (FEMA P695 uses 22 pairs)
@@ -51,8 +69,9 @@ MIN_RECORDS = 10  # below this the dispersion beta is poorly constrained (FEMA P
 
 @dataclasses.dataclass(frozen=True)
 class Estimate:
-    """A fragility with its uncertainty: 90 % bootstrap intervals over the records, and warnings
-    where the data cannot support the fit."""
+    """A fragility with its uncertainty: 90 % bootstrap intervals over the records (an end is
+    inf, or 0 for theta, where the bootstrap cannot bound it), and warnings where the data cannot
+    support the fit."""
     fit: Fragility | None
     theta_90: tuple = (np.nan, np.nan)
     beta_90: tuple = (np.nan, np.nan)
@@ -60,40 +79,86 @@ class Estimate:
     warnings: tuple = ()
 
 
-def fit_with_uncertainty(im, exceeded, records, n_boot=200, seed=1):
-    """The MLE fit, and the 5-95 % range of theta and beta when the records are resampled with
-    replacement (each record keeps all its intensity levels: the records, not the runs, are the
-    independent samples)."""
+def tables(im, exceeded, records):
+    """(record names, IM levels, runs per record and level, exceedances per record and level)."""
     im, exceeded, records = np.asarray(im, float), np.asarray(exceeded, bool), np.asarray(records)
-    names = np.unique(records)
-    notes = []
-    if len(names) < MIN_RECORDS:
-        notes.append(f"only {len(names)} records (fewer than {MIN_RECORDS}): the median and above all the "
-                     "dispersion beta are poorly constrained; read the intervals, not the digits")
-    try:
-        best = fit(im, exceeded)
-    except (ValueError, RuntimeError) as exc:
-        return Estimate(None, n_records=len(names), warnings=tuple(notes + [str(exc)]))
-    if exceeded.any() and (~exceeded).any() and im[~exceeded].max() < im[exceeded].min():
-        notes.append("every run below an intensity survives and every run above it fails: the data do not "
-                     "overlap, so beta is not identified (the fit's beta only reflects the spacing of the levels)")
+    names, r = np.unique(records, return_inverse=True)
+    levels, l = np.unique(im, return_inverse=True)
+    n = np.zeros((names.size, levels.size))
+    z = np.zeros((names.size, levels.size))
+    np.add.at(n, (r, l), 1.0)
+    np.add.at(z, (r, l), exceeded.astype(float))
+    return names, levels, n, z
+
+
+def bootstrap_weights(n_records, n_boot, seed):
+    """(n_boot, n_records): how often each record is drawn in each resample (records drawn with
+    replacement, as many as there are)."""
     rng = np.random.default_rng(seed)
-    by_record = {n: np.flatnonzero(records == n) for n in names}
-    thetas, betas = [], []
-    for _ in range(n_boot):
-        pick = np.concatenate([by_record[n] for n in rng.choice(names, size=len(names), replace=True)])
-        try:
-            f = fit(im[pick], exceeded[pick])
-        except (ValueError, RuntimeError):
-            continue  # a resample with no exceedance (or only exceedances) has no estimate
-        thetas.append(f.theta)
-        betas.append(f.beta)
-    if len(thetas) < 0.8 * n_boot:
-        notes.append(f"{n_boot - len(thetas)} of {n_boot} bootstrap resamples had no finite estimate")
-    if not thetas:
-        return Estimate(best, n_records=len(names), warnings=tuple(notes))
-    return Estimate(best, tuple(np.percentile(thetas, [5, 95])), tuple(np.percentile(betas, [5, 95])),
-                    len(names), tuple(notes))
+    picks = rng.choice(n_records, size=(n_boot, n_records), replace=True)
+    weights = np.zeros((n_boot, n_records))
+    np.add.at(weights, (np.arange(n_boot)[:, None], picks), 1.0)
+    return weights
+
+
+def fit_with_uncertainty(im, exceeded, records, n_boot=200, seed=1, what="collapse"):
+    """The MLE fit, and the 5-95 % range of theta and beta when the records are resampled with
+    replacement (each record keeps all its runs at every intensity level: the records, not the
+    runs, are the independent samples). A resample where no run or every run reaches the limit
+    state has no estimate and is left out; one whose data do not overlap counts with beta 0, one
+    whose share does not rise with the intensity with beta unbounded (inf)."""
+    names, levels, n, z = tables(im, exceeded, records)
+    return fit_tables(levels, n, z, n_boot, seed, what)
+
+
+def fit_tables(levels, n, z, n_boot=200, seed=1, what="collapse"):
+    """fit_with_uncertainty from count tables: n, z (records x levels) the runs and the runs that
+    reach the limit state of each record at each level (several runs per record and level: the
+    members of an ensemble, which a resample keeps together with their record)."""
+    n_records = n.shape[0]
+    notes = []
+    if n_records < MIN_RECORDS:
+        notes.append(f"only {n_records} records (fewer than {MIN_RECORDS}): the median and above all the "
+                     "dispersion beta are poorly constrained; read the intervals, not the digits")
+    weights = np.vstack([np.ones(n_records), bootstrap_weights(n_records, n_boot, seed)])
+    fits = probit.fit(np.log(levels), weights @ n, weights @ z)
+    status = int(fits.status[0])
+    if status not in (probit.INTERIOR, probit.SEPARATED):
+        return Estimate(None, n_records=n_records, warnings=tuple(notes + [no_estimate_message(status, what)]))
+    gap = tuple(float(x) for x in np.exp(fits.gap[0])) if status == probit.SEPARATED else None
+    if gap:
+        where = f"at {gap[0]:.2g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.2g}, {gap[1]:.2g}]"
+        notes.append(f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does: the data do "
+                     f"not overlap, so beta is not identified (0) and the median is {where}")
+    best = Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap)
+    boot = fits.status[1:]
+    used = (boot != probit.NONE) & (boot != probit.ALL) & (boot != probit.ONE_LEVEL)
+    if used.sum() < 0.8 * n_boot or (boot[used] != probit.INTERIOR).sum() >= 0.05 * n_boot:
+        notes.append(f"{n_boot - int(used.sum())} of {n_boot} bootstrap resamples had no estimate (no run or every "
+                     f"run past the limit), {int((boot == probit.SEPARATED).sum())} no overlap (beta 0), "
+                     f"{int((boot == probit.FLAT).sum())} a share that does not rise with the intensity (beta "
+                     "unbounded)")
+    if not used.any():
+        return Estimate(best, n_records=n_records, warnings=tuple(notes))
+    return Estimate(best, percentiles(fits.theta[1:][used]), percentiles(fits.beta[1:][used]), n_records,
+                    tuple(notes))
+
+
+def percentiles(values, q=(5, 95)):
+    """np.percentile's linear interpolation, where an infinite value at or beside the percentile
+    gives inf (the bootstrap cannot bound that end) instead of nan."""
+    v = np.sort(np.asarray(values, dtype=float))
+    if np.isfinite(v).all():
+        return tuple(float(x) for x in np.percentile(v, q))
+    out = []
+    for p in q:
+        pos = p / 100 * (v.size - 1)
+        lo, hi = int(np.floor(pos)), int(np.ceil(pos))
+        if np.isinf(v[lo]) or np.isinf(v[hi]):
+            out.append(np.inf)
+        else:
+            out.append(float(v[lo] + (v[hi] - v[lo]) * (pos - lo)))
+    return tuple(out)
 
 
 def resurrections(levels, collapsed):

@@ -1,7 +1,6 @@
 """The run grid of a sweep: walls x models x hinge laws x K_d x records x intensities, from a TOML
 file and/or command-line flags, expanded into one RunSpec per run with a stable run_id (the key
 that lets an interrupted sweep resume)."""
-import dataclasses
 import itertools
 import math
 import tomllib
@@ -9,31 +8,14 @@ import tomllib
 
 from ..names import HINGE_LAWS, PAPER_WALLS, SUPPORTS as MODELS, paper_wall
 from . import suites
+from .run_spec import RunSpec
 
 WALL_KEYS = ("b", "h", "W", "psi")  # what a [walls.NAME] table gives (SI units, or strings with units)
 
 # The defaults of a grid; a TOML file's [grid] table and the flags replace them key by key.
 DEFAULTS = dict(walls=[1], models=["flexibleTop"], hinge_laws=["dohertyHinge"], kd_kN=[50.0],
                 scales=[1.0], pga_g=[], er=0.86, tail=5.0, rtol=1e-6, suite="fema", records_dir="",
-                records=[])
-
-
-@dataclasses.dataclass(frozen=True)
-class RunSpec:
-    run_id: str
-    wall: str           # a preset (1, 2, 3 = paper1..3) or the name of a [walls.NAME] table
-    model: str
-    hinge_law: str
-    kd_kN: float        # NaN for models without the top spring
-    record: str
-    record_path: str
-    record_pga_g: float
-    scale: float        # factor on the record as given
-    pga_g: float        # scale * record PGA: the intensity measure
-    stop_time: float
-    sets: tuple         # (("NAME", "VALUE"), ...) for fmi2sim --set
-    error: str = ""     # the record could not be planned: reported without running
-    record_sha256: str = ""  # the record's content: part of the run's key (rockingwall.sweep.provenance)
+                records=[], building="")
 
 
 def load_config(path):
@@ -176,14 +158,21 @@ def expand(grid, suite):
 
 def plan(config_path, flags):
     """(merged grid, suite of records, RunSpecs) from a TOML file (or None) and the command's
-    flags ({key of DEFAULTS: value}; flags win)."""
+    flags ({key of DEFAULTS: value}; flags win). With a building file (`building`), the runs are
+    its storeys' (rockingwall.sweep.building_runs)."""
     cfg = merge(load_config(config_path), flags)
     suite = suites.load(cfg["suite"], cfg["records"])
+    if cfg["building"]:
+        from . import building_runs
+        return cfg, suite, building_runs.expand(cfg, suite)
     return cfg, suite, expand(cfg, suite)
 
 
 def describe(cfg, suite, specs):
     """The plan in a few lines: the grid, the records and the number of runs."""
+    if cfg["building"]:
+        from . import building_runs
+        return building_runs.describe(cfg, suite, specs)
     kd = ", ".join(f"{k:g}" for k in cfg["kd_kN"])
     levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
     bad = [r.name for r in suite if r.error]

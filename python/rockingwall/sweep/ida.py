@@ -10,6 +10,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
+from .. import outputs
 from . import fragility, store
 from .rows import ERROR, OK, RETRIED
 
@@ -70,7 +71,7 @@ def ida_curves(d, path):
     axes[0, 0].legend(loc="upper left", fontsize=8)
     fig.suptitle("IDA curves: one line per record component, x = collapse", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)
 
 
@@ -96,7 +97,7 @@ def fragility_plot(d, path):
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title("Collapse fragility (dots: fraction of records; lines: lognormal MLE)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)
     return fits
 
@@ -128,5 +129,5 @@ def kd_map(d, path):
         fig.colorbar(mesh, ax=ax)
     axes[0].set_ylabel("PGA [g]")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)

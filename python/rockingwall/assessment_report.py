@@ -1,0 +1,77 @@
+"""What `rockingwall assess` prints: the study echoed (wall or building, K_d, Delta_u, limit
+states, scene, ensemble), the cases as a table (text or Markdown), the fragilities with their
+intervals to two significant figures ('unbounded' where the bootstrap cannot bound an end) and
+the resurrections."""
+import math
+
+import numpy as np
+
+from . import report_table
+from .assessment import KD_COLUMN, group_label, resurrection_lines
+
+
+def table_rows(cases, states, column=KD_COLUMN):
+    """The report table's rows (report_table.cells) of the cases."""
+    rows = []
+    for r in cases.to_dict("records"):
+        value = r.get(column, np.nan)
+        reached = [s.name for s in states if r[s.name]] + (["collapse"] if r["collapsed"] else [])
+        row = dict(r, case=group_label(column, value) if np.isfinite(value) else "", reached=reached)
+        row["s1_over_0.6Delta_u"] = r["s1_over_Delta_u"] / 0.6
+        if "collapse_probability" not in r:
+            row["collapse_probability"] = None
+        rows.append(row)
+    return rows
+
+
+def _end(x, zero_unbounded=False):
+    if not math.isfinite(x) or (zero_unbounded and x == 0):
+        return "unbounded"
+    return f"{x:.2g}"
+
+
+def fragility_line(r, column):
+    """One fit as a line: median [5 %, 95 %], beta [5 %, 95 %], records."""
+    where = group_label(column, r[column]) + ", " if np.isfinite(r[column]) else ""
+    head = f"  {where}{r['limit_state']} (over the {r['over']})"
+    if np.isnan(r["median"]):
+        return f"{head}: no estimate ({r['warnings']})"
+    if np.isnan(r["median_5"]):
+        interval = "", ""
+    else:
+        interval = (f" [{_end(r['median_5'], True)}, {_end(r['median_95'], True)}]",
+                    f" [{_end(r['beta_5'])}, {_end(r['beta_95'])}]")
+    beta = "0 (not identified)" if r["beta"] == 0 else f"{r['beta']:.2g}{interval[1]}"
+    line = f"{head}: median {r['median']:.3g}{interval[0]}, beta {beta}, {r['records']} records"
+    return line + (f"\n    warning: {r['warnings']}" if r["warnings"] else "")
+
+
+def fragility_lines(frag, im_name, column=KD_COLUMN):
+    """The fits, a warning that every fit has said once above them."""
+    lines = [f"\nfragility against {im_name} (lognormal MLE; 90 % bootstrap intervals over the records; "
+             "'over the records and parameters': every ensemble member's run):"]
+    rows = frag.to_dict("records")
+    split = [r["warnings"].split(" | ") if r["warnings"] else [] for r in rows]
+    common = [w for w in (split[0] if split else []) if all(w in s for s in split)]
+    lines += [f"  warning: {w}" for w in common]
+    for r, warnings in zip(rows, split):
+        r = dict(r, warnings=" | ".join(w for w in warnings if w not in common))
+        lines.append(fragility_line(r, column))
+    return lines
+
+
+def report(head, states, cases, frag, im_name, table="text", sa_period=None, column=KD_COLUMN, scene_text=""):
+    """The whole report: head (the study's lines), the cases' table, the fragilities."""
+    rows = table_rows(cases, states, column)
+    lines = list(head)
+    if len(cases) <= 60 or table == "md":
+        if table == "md":
+            lines += ["", report_table.markdown(rows, scene_text, sa_period)]
+        else:
+            lines += ["", report_table.text(rows, sa_period)]
+    lines += fragility_lines(frag, im_name, column)
+    back = resurrection_lines(cases, column)
+    if back:
+        lines.append(f"\nresurrection (collapse at one intensity, standing at a higher one): {len(back)} cases")
+        lines += [f"  {x}" for x in back]
+    return "\n".join(lines)

@@ -1,0 +1,27 @@
+"""A building file as the start values of build/BuildingWithWalls.fmu (docs/building-with-walls.md): the
+walls, ties, diaphragms and floors of a description.Building by the FMU's names, for an FMI tool
+or fmpy. The FMU runs the scene the one-integration solver (rockingwall.building.monolithic) runs,
+with the same Bouc-Wen shape and pinching (description.Building.hysteresis)."""
+from ..names import hinge_law_code
+from .description import FMU_HYSTERESIS_NAMES
+
+DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
+
+
+def start_values(building):
+    """{name: value} of every parameter the building sets (the FMU's defaults for the rest)."""
+    v = {"nStoreys": len(building.storeys), "rigidInPlane": int(building.rigid_in_plane), "storeyLaw": 0,
+         "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
+         "rayleighStiffness": 0.0, **{FMU_HYSTERESIS_NAMES[k]: x for k, x in building.hysteresis().items()}}
+    for i, s in enumerate(building.storeys, 1):
+        w, d = s.wall, s.diaphragm
+        v.update({f"hasWall_{i}": 1, f"h_{i}": s.height, f"b_{i}": w.b, f"W_{i}": w.W,
+                  f"psi_{i}": 2.0 * w.overburden / w.W, f"tie_{i}": s.tie, f"er_{i}": w.e_r,
+                  f"hingeLaw_{i}": hinge_law_code(w.hinge_law),
+                  f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"zetad_{i}": d.damping})
+        if d.law != "linear":
+            v.update({f"Fyd_{i}": d.yield_force, f"alphad_{i}": d.post_yield})
+        if s.in_plane is not None:
+            p = s.in_plane
+            v.update({f"m_{i}": p.mass, f"k_{i}": p.stiffness, f"zetas_{i}": p.damping})
+    return v

@@ -1,0 +1,263 @@
+"""The robustness of a case: the same case run for an ensemble of walls, diaphragms and record
+scales drawn within the inputs' plausible uncertainty, so that a chaotic response near collapse
+is reported as a probability and a spread, not as one exact number.
+
+Each member multiplies psi (the overburden), W, b, K_d (the diaphragm's stiffness), the record's
+scale and, where the scene has them, the diaphragm's mass and damping and the tie by exp(s z),
+z a standard normal draw truncated at 3 (s: the spread, about the coefficient of variation), and
+adds s z to e_r (kept within [0, 1]). The draws come from one seeded generator and are the same
+for every case of a study (common random numbers): member k is the same plausible wall under
+every record and intensity, so that cases compare member by member and a fragility can be
+fitted over the records and the members together. Paper scene: the exact engine, all members in
+one C call (engine.run_many); a diaphragm with mass or a building: the scene solver, one run per
+member (milliseconds each on its exact engine)."""
+import dataclasses
+
+import numpy as np
+
+from . import engine
+from .building import monolithic
+
+FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
+TRUNCATE = 3.0
+FLIP_SHARE = 0.05   # a case is flagged when this share of the ensemble or more disagrees with its nominal run
+
+
+@dataclasses.dataclass(frozen=True)
+class Spreads:
+    """The standard deviation of each input's normal draw: of ln(value) (about its coefficient of
+    variation), e_r's absolute. Defaults: what an assessor of an existing masonry wall rarely
+    knows better than (a measured wall, an estimated roof load, a diaphragm from tables)."""
+    psi: float = 0.10               # the overburden: the roof or floor load it stands for
+    W: float = 0.05                 # the wall's weight: unit weight and plaster
+    b: float = 0.03                 # the thickness: about 7 mm on 230 mm
+    er: float = 0.05                # e_r, absolute: tests give 0.75-0.95 for a theoretical 0.86
+    Kd: float = 0.30                # the diaphragm's stiffness: tables and span estimates
+    scale: float = 0.05             # the record's scale: the intensity it is scaled to
+    diaphragm_mass: float = 0.20    # the diaphragm's tributary mass
+    diaphragm_damping: float = 0.30 # its damping ratio
+    tie: float = 1.0                # the wall-to-diaphragm connection: a factor e either way
+
+    @classmethod
+    def parse(cls, items):
+        """Spreads from 'NAME=VALUE' items (e.g. ['psi=0.2', 'Kd=0.5']), the rest at their defaults."""
+        values = {}
+        for item in items or ():
+            name, sep, value = item.partition("=")
+            name = name.strip()
+            if not sep or name not in FIELDS:
+                raise ValueError(f"--spread {item!r}: write NAME=VALUE, NAME one of {', '.join(FIELDS)}")
+            try:
+                values[name] = float(value)
+            except ValueError:
+                raise ValueError(f"--spread {item!r}: {value!r} is not a number") from None
+        spreads = cls(**values)
+        spreads.check()
+        return spreads
+
+    def check(self):
+        for name in FIELDS:
+            value = getattr(self, name)
+            if not 0.0 <= value <= 2.0:
+                raise ValueError(f"spread of {name} = {value!r}: must be in [0, 2]")
+
+    def describe(self):
+        return ", ".join(f"{n} {getattr(self, n):g}" for n in FIELDS)
+
+
+@dataclasses.dataclass(frozen=True)
+class Ensemble:
+    """size members drawn from seed (the same members for every case), with these spreads."""
+    size: int = 100
+    seed: int = 1
+    spreads: Spreads = Spreads()
+
+    def __post_init__(self):
+        if not 2 <= int(self.size) <= 100000:
+            raise ValueError(f"ensemble size {self.size!r}: must be an integer in [2, 100000]")
+        self.spreads.check()
+
+    def factors(self, storeys=1):
+        """{field: array (size, storeys)}: the factor on each input (for er: the value to add)."""
+        z = np.random.default_rng(self.seed).standard_normal((self.size, storeys, len(FIELDS)))
+        z = np.clip(z, -TRUNCATE, TRUNCATE)
+        out = {}
+        for i, name in enumerate(FIELDS):
+            s = getattr(self.spreads, name)
+            out[name] = s * z[:, :, i] if name == "er" else np.exp(s * z[:, :, i])
+        return out
+
+    def describe(self):
+        return f"{self.size} members, seed {self.seed}; spreads: {self.spreads.describe()}"
+
+
+@dataclasses.dataclass
+class Members:
+    """The runs of one case's ensemble (arrays over the members; a failed run has NaN peaks and
+    failed True): peaks [m] and [N/m], collapse and its time, each member wall's b and Delta_u."""
+    peak_s1: np.ndarray
+    peak_s2: np.ndarray
+    peak_F_top: np.ndarray
+    collapsed: np.ndarray
+    t_collapse: np.ndarray
+    b: np.ndarray
+    delta_u: np.ndarray
+    failed: np.ndarray
+
+    def peaks(self):
+        return {"peak_s1": self.peak_s1, "peak_s2": self.peak_s2, "peak_F_top": self.peak_F_top,
+                "collapsed": self.collapsed}
+
+
+def _delta_u(b, psi):
+    return b * (1 + 0.75 * psi) / (1 + psi)
+
+
+def member_walls(params, factors, storey=0):
+    """{name: array}: the wall parameters of every member (the nominal's `params`, perturbed)."""
+    f = {k: v[:, storey] for k, v in factors.items()}
+    walls = {"psi": params["psi"] * f["psi"], "W": params["W"] * f["W"], "b": params["b"] * f["b"],
+             "er": np.clip(params["er"] + f["er"], 0.0, 1.0)}
+    if int(params["support"]) == 3:
+        walls["Kd"] = params["Kd"] * f["Kd"]
+    return walls
+
+
+def wall_members(params, record, ensemble, t_end):
+    """The ensemble of a wall on its own (the paper's scene): one C call for every member."""
+    factors = ensemble.factors()
+    walls = member_walls(params, factors)
+    fixed = {k: v for k, v in params.items() if k not in walls}
+    out = engine.run_many(record.t, record.ag, scale=factors["scale"][:, 0], t_end=t_end, **fixed, **walls)
+    failed = (out["code"] != 0) & ~np.isfinite(out["peak_s1"])
+    kd = walls.get("Kd", 0.0)
+    f_top = np.asarray(kd) * out["peak_s2"] if int(params["support"]) == 3 else np.zeros(ensemble.size)
+    return Members(out["peak_s1"], out["peak_s2"], f_top, out["collapsed"] & ~failed, out["t_collapse"],
+                   walls["b"], _delta_u(walls["b"], walls["psi"]), failed)
+
+
+def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end):
+    """The ensemble of a wall tied to a diaphragm with mass (scene b): the diaphragm's stiffness,
+    mass and damping and the tie perturbed too; one scene run per member."""
+    factors = ensemble.factors()
+    walls = member_walls(params, factors)
+    runs = []
+    for k in range(ensemble.size):
+        wall = dict(params, **{name: float(v[k]) for name, v in walls.items() if name != "Kd"})
+        d = dataclasses.replace(diaphragm, stiffness=diaphragm.stiffness * factors["Kd"][k, 0],
+                                mass=diaphragm.mass * factors["diaphragm_mass"][k, 0],
+                                damping=min(2.0, diaphragm.damping * factors["diaphragm_damping"][k, 0]))
+        member_tie = tie * factors["tie"][k, 0]
+        spec = monolithic.wall_under_diaphragm_spec(wall, d, member_tie)
+        runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end, [member_tie]))
+    return _collect(runs, walls, 0)
+
+
+def building_members(building, record, ensemble, t_end):
+    """The ensemble of a building (scene c): [Members per storey]. Every storey's wall (psi via
+    its overburden, W, b, e_r), diaphragm (stiffness, mass, damping) and tie perturbed, each storey
+    by its own draws; the in-plane walls as given."""
+    n = len(building.storeys)
+    factors = ensemble.factors(n)
+    runs, walls_per_storey = [], [dict() for _ in range(n)]
+    for k in range(ensemble.size):
+        storeys = []
+        for i, s in enumerate(building.storeys):
+            f = {name: v[k, i] for name, v in factors.items()}
+            wall = dataclasses.replace(s.wall, b=s.wall.b * f["b"], W=s.wall.W * f["W"],
+                                       overburden=s.wall.overburden * f["psi"],
+                                       e_r=float(np.clip(s.wall.e_r + f["er"], 0.0, 1.0)))
+            d = dataclasses.replace(s.diaphragm, stiffness=s.diaphragm.stiffness * f["Kd"],
+                                    mass=s.diaphragm.mass * f["diaphragm_mass"],
+                                    damping=min(2.0, s.diaphragm.damping * f["diaphragm_damping"]))
+            storeys.append(dataclasses.replace(s, wall=wall, diaphragm=d, tie=s.tie * f["tie"]))
+        member = dataclasses.replace(building, storeys=tuple(storeys))
+        params = [member.wall_parameters(i) for i in range(n)]
+        for i, p in enumerate(params):
+            for name in ("b", "psi"):
+                walls_per_storey[i].setdefault(name, []).append(p[name])
+        runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
+                               [s.tie for s in storeys]))
+    return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
+
+
+def _scene_run(spec, params, record, scale, t_end, ties):
+    """(peak_s1, peak_s2, peak_F_top, collapsed, t_collapse) per storey, or None for a run that
+    failed (the solver refused it or its energy balance did not close)."""
+    member = dataclasses.replace(record, ag=record.ag * float(scale))
+    try:
+        result, r = monolithic.respond(spec, params, member, t_end=t_end)
+    except (monolithic.BuildingError, RuntimeError):
+        return None
+    f_top = [tie * np.nan for tie in ties]  # the tie force needs the histories: not kept for members
+    return [(s.peak_s1_m, s.peak_s2_m, f, s.collapsed, s.t_collapse_s if s.collapsed else np.nan)
+            for s, f in zip(result.storeys, f_top)]
+
+
+def _collect(runs, walls, storey):
+    rows = [r[storey] if r is not None else (np.nan, np.nan, np.nan, False, np.nan) for r in runs]
+    s1, s2, f, collapsed, t_c = (np.array(col) for col in zip(*rows))
+    failed = np.array([r is None for r in runs])
+    b = np.asarray(walls["b"], dtype=float)
+    return Members(s1.astype(float), s2.astype(float), f.astype(float), collapsed.astype(bool), t_c.astype(float),
+                   b, _delta_u(b, np.asarray(walls["psi"], dtype=float)), failed)
+
+
+@dataclasses.dataclass(frozen=True)
+class Summary:
+    """What a case's ensemble says: its size and failed runs, the probability of collapse and of
+    each limit state, the 16/50/84 % peaks of s1 and s2 [m] (inf where that share of the
+    ensemble collapses: a collapsed wall's peak is no displacement) and whether the nominal run's
+    outcome flips inside the ensemble."""
+    size: int
+    failed: int
+    collapse_probability: float
+    limit_probabilities: dict
+    s1_percentiles: tuple
+    s2_percentiles: tuple
+    flips: bool
+
+    def to_dict(self):
+        return {"size": self.size, "failed": self.failed, "collapse_probability": self.collapse_probability,
+                "limit_state_probabilities": dict(self.limit_probabilities),
+                "s1_p16_m": self.s1_percentiles[0], "s1_p50_m": self.s1_percentiles[1],
+                "s1_p84_m": self.s1_percentiles[2], "s2_p16_m": self.s2_percentiles[0],
+                "s2_p50_m": self.s2_percentiles[1], "s2_p84_m": self.s2_percentiles[2], "flips": self.flips}
+
+
+def reached(members, states):
+    """{state name: bool array, 'collapsed': bool array} over the members that ran; a state whose
+    quantity no member has (the tie force of scene runs) is left out."""
+    ok = ~members.failed
+    peaks = {k: v[ok] for k, v in members.peaks().items()}
+    out = {s.name: s.exceeded_many(peaks, members.b[ok], members.delta_u[ok]) for s in states
+           if np.isfinite(peaks[f"peak_{s.quantity}"]).any() or peaks["collapsed"].all()}
+    out["collapsed"] = peaks["collapsed"]
+    return out
+
+
+def summarize(members, states, nominal):
+    """A Summary of Members under the limit states; nominal: {name: reached} of the nominal run,
+    with 'collapsed'."""
+    ok = ~members.failed
+    outcome = reached(members, states)
+    probability = {s.name: float(outcome[s.name].mean()) if s.name in outcome and ok.any() else np.nan
+                   for s in states}
+    collapse = float(outcome["collapsed"].mean()) if ok.any() else np.nan
+    flips = any(r.size and np.mean(r != bool(nominal[name])) >= FLIP_SHARE for name, r in outcome.items())
+    demand = [np.where(members.collapsed[ok], np.inf, q[ok]) for q in (members.peak_s1, members.peak_s2)]
+    s1, s2 = (percentiles(d) for d in demand)
+    return Summary(int(members.failed.size), int(members.failed.sum()), collapse, probability, s1, s2, bool(flips))
+
+
+def percentiles(values, q=(16, 50, 84)):
+    """Percentiles (linear interpolation) where a percentile at or beside an infinite value is inf."""
+    v = np.sort(np.asarray(values, dtype=float))
+    if not v.size:
+        return tuple(np.nan for _ in q)
+    out = []
+    for p in q:
+        pos = p / 100 * (v.size - 1)
+        lo, hi = int(np.floor(pos)), int(np.ceil(pos))
+        out.append(np.inf if np.isinf(v[hi]) else float(v[lo] + (v[hi] - v[lo]) * (pos - lo)))
+    return tuple(out)

@@ -1,0 +1,102 @@
+"""A building file co-simulated (`rockingwall couple-building --building`, rockingwall.building.cosim)
+and the energy stop of the coupled runs (rockingwall.coupling.energy_guard):
+
+- past the limit, the assessor's building at its real masses ends with an error naming the cause
+  and the remedy, exit 1, no peak or collapse printed (without the stop the same run "collapses"
+  both walls at 0.1 s under 1e-6 g: the issue this fixes);
+- within the limit (light walls on heavy diaphragms) the co-simulation equals the one-integration
+  solver within 1 %;
+- `rockingwall couple` stops too: the stiff tie at the old 1 ms step over 15 s ends with the error,
+  before the false collapse it used to report at 8.1 s, and writes nothing;
+- the Building FMU's dashpots cd_i: a free vibration decays by the damping ratio they stand for,
+  and with the defaults (0) it does not decay at all.
+"""
+import numpy as np
+import pytest
+from fmpy import simulate_fmu
+
+from rockingwall import records
+from rockingwall.building import building_file, cosim, monolithic, scene as bs
+from rockingwall.commands import couple as couple_command
+from rockingwall.commands import couple_building
+
+LIGHT = """
+[building]
+name = "two storeys, light walls on heavy diaphragms"
+tie = "1e5 N/m/m"
+[[storey]]
+height = "2.5 m"
+wall = { b = "150 mm", W = "6.622 kN/m" }
+diaphragm = { stiffness = "700 kN/m/m", mass = "2000 kg/m", damping = 0.05 }
+[[storey]]
+height = "2.5 m"
+wall = { b = "150 mm", W = "6.622 kN/m" }
+diaphragm = { stiffness = "700 kN/m/m", mass = "2000 kg/m", damping = 0.05 }
+"""
+
+
+def test_the_assessors_building_past_the_limit_ends_with_the_error(repo, capsys):
+    path = repo / "examples" / "two-storey-brick.toml"
+    status = couple_building.main(["--building", str(path), "--record", "elcentro", "--pga", "1e-6", "--t-end", "1"])
+    out, err = capsys.readouterr()
+    assert status == 1
+    assert "went unstable" in err and "storey 2" in err and "0.36 times" in err
+    assert f"`rockingwall building {path}`" in err and "BuildingWithWalls.fmu" in err
+    assert "peak" not in out and "collapsed" not in out and out == ""
+    # the same run without the stop: the scheme's motion, reported as collapses
+    scene = cosim.scene_of(building_file.read(path))
+    r = bs.run(scene, records.el_centro().to_pga(1e-6), 1.0, 1e-3, order=2, energy_stop=None)
+    assert sorted(r["collapsed"]) == [1, 2] and max(r["collapsed"].values()) < 0.2
+
+
+def test_within_the_limit_co_simulation_equals_one_integration(tmp_path, capsys):
+    path = tmp_path / "light.toml"
+    path.write_text(LIGHT)
+    building = building_file.read(path)
+    rec = records.el_centro().to_pga(0.12)
+    mono, _ = monolithic.simulate_building(building, rec, t_end=8.0)
+    r = bs.run(cosim.scene_of(building), rec, 8.0, 1e-3, order=2)
+    assert not r["collapsed"] and r.energy_share_max < 0.01
+    for s in mono.storeys:
+        i = s.storey
+        assert not s.collapsed and s.peak_s1_m > 0.02  # rocking, standing
+        assert r.peak(i, "s1") == pytest.approx(s.peak_s1_m, rel=0.01)
+        assert r.peak(i, "s2") == pytest.approx(s.peak_s2_m, rel=0.01)
+        assert np.abs(r[f"u_diaph_{i}"] - r[f"u_floor_{i}"]).max() == pytest.approx(s.diaphragm_peak_m, rel=0.01)
+    # and the command prints them
+    assert couple_building.main(["--building", str(path), "--record", "elcentro", "--pga", "0.12", "--t-end", "2"]) == 0
+    assert "wall in storey 2: peak s1" in capsys.readouterr().out
+
+
+def test_couple_stops_the_stiff_tie_at_the_old_step(build_dir, tmp_path, capsys):
+    out = tmp_path / "c.csv"
+    status = couple_command.main([f"--wall-fmu={build_dir / 'RockingWall.fmu'}",
+                                  f"--diaphragm-fmu={build_dir / 'Diaphragm.fmu'}", f"--out={out}",
+                                  f"--plot={tmp_path / 'c.png'}", "--set=b=0.23", "--set=h=3.2", "--set=W=14080",
+                                  "--set=psi=0.2", "--Kd=1e6", "--m=400", "--k=30e3", "--scale=0.4705",
+                                  "--t-end=15", "--macro-step=1e-3"])
+    captured = capsys.readouterr()
+    assert status == 1
+    assert "went unstable" in captured.err and "--monolithic" in captured.err and "2.35e-05" in captured.err
+    assert not out.exists() and not (tmp_path / "c.png").exists() and "peak" not in captured.out
+
+
+def free_vibration(build_dir, cd):
+    start = {"nStoreys": 1, "storeyLaw": 0, "diaphragmLaw": 0, "m_1": 1000.0, "k_1": 1e11,
+             "cs_1": 2 * np.sqrt(1e14), "md_1": 600.0, "kd_1": 6e4, "rayleighMass": 0.0,
+             "rayleighStiffness": 0.0, "u_diaph_1": 0.01}
+    if cd is not None:
+        start["cd_1"] = cd
+    res = simulate_fmu(str(build_dir / "Building.fmu"), fmi_type="ModelExchange", stop_time=3.0, output_interval=1e-3,
+                       start_values=start, output=["u_diaph_1"], relative_tolerance=1e-9)
+    return res["time"], res["u_diaph_1"]
+
+
+def test_building_dashpot_is_the_damping_ratio(build_dir):
+    zeta = 0.05
+    t, y = free_vibration(build_dir, 2 * zeta * np.sqrt(6e4 * 600.0))
+    peaks = [y[k] for k in range(1, len(y) - 1) if y[k] > y[k - 1] and y[k] > y[k + 1] and y[k] > 0]
+    decrement = np.mean(np.log(np.array(peaks[:-1]) / np.array(peaks[1:])))
+    assert decrement == pytest.approx(2 * np.pi * zeta / np.sqrt(1 - zeta ** 2), rel=0.01)
+    _, undamped = free_vibration(build_dir, None)  # the default cd_1 = 0: no decay
+    assert undamped.max() == pytest.approx(0.01, rel=1e-4) and undamped[-500:].max() == pytest.approx(0.01, rel=1e-3)

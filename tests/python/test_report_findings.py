@@ -1,0 +1,188 @@
+"""Outputs an engineer puts in a report: what each one said wrongly, and what it says now. Each
+test is named after the finding it fixes (an assessor's trial of `run` and `assess`)."""
+import ast
+import json
+import pathlib
+
+import matplotlib.figure
+import numpy as np
+import pandas as pd
+import pytest
+
+import rockingwall as rw
+from rockingwall import assessment_plots
+from rockingwall.cli import main
+
+PACKAGE = pathlib.Path(rw.__file__).parent
+WALL = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013"]
+PULSE = "gaussian:0.04,1.0"
+
+
+@pytest.fixture()
+def figures(monkeypatch):
+    """Every figure saved while the test runs (the plots close them after saving)."""
+    saved = []
+    original = matplotlib.figure.Figure.savefig
+
+    def keep(self, *a, **k):
+        saved.append(self)
+        return original(self, *a, **k)
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", keep)
+    return saved
+
+
+def test_finding2_fragility_colours_are_keyed_to_kd_in_every_panel(tmp_path, figures):
+    """'roof connection' has a fit for K_d = 200 only: its curve must be K_d = 200's colour, not
+    the first colour of the panel, which the other panels give K_d = 20."""
+    rows = []
+    for state, kd20 in [("0.6 Delta_u", 0.45), ("roof connection", np.nan)]:
+        rows.append(dict(Kd_kN_per_m_per_m=20.0, limit_state=state, records=4, median=kd20, median_5=np.nan,
+                         median_95=np.nan, beta=0.3, beta_5=np.nan, beta_95=np.nan, warnings=""))
+        rows.append(dict(Kd_kN_per_m_per_m=200.0, limit_state=state, records=4, median=0.387, median_5=0.3,
+                         median_95=0.5, beta=0.38, beta_5=0.03, beta_95=0.76, warnings=""))
+    assessment_plots.fragility(pd.DataFrame(rows), "PGA [g]", tmp_path / "fragility.png")
+    (fig,) = figures
+    colour = {}
+    for ax in fig.axes:
+        for line in ax.get_lines():
+            label = line.get_label()
+            if label.startswith("K_d = 200"):
+                colour.setdefault("200", set()).add(line.get_color())
+            elif label.startswith("K_d = 20 "):
+                colour.setdefault("20", set()).add(line.get_color())
+    assert len(colour["200"]) == 1 and len(colour["20"]) == 1 and colour["200"] != colour["20"]
+    roof = next(ax for ax in fig.axes if ax.get_title() == "roof connection")
+    drawn = [line for line in roof.get_lines() if len(line.get_xdata())]
+    assert [line.get_color() for line in drawn] == list(colour["200"])
+
+
+def write_csv(path, record, factor):
+    np.savetxt(path, np.column_stack([record.t, record.ag * factor]), delimiter=",", header="time,acc", comments="")
+
+
+def test_finding3_a_record_in_cm_s2_is_read_with_its_unit_or_warned_about(tmp_path, capsys):
+    record = rw.read_record(PULSE)  # m/s^2
+    write_csv(tmp_path / "pulse_cms2.csv", record, 100.0)
+    write_csv(tmp_path / "pulse_g.csv", record, 1 / 9.81)
+    args = ["run", *WALL, "--Kd", "20kN/m/m", "--scale", "1"]
+    assert main([*args, str(tmp_path / "pulse_g.csv")]) == 0
+    in_g = capsys.readouterr().out
+    assert main([*args, "--csv-units", "cm/s2", str(tmp_path / "pulse_cms2.csv")]) == 0
+    in_cms2 = capsys.readouterr().out
+    assert in_g.splitlines()[-1].split()[1:] == in_cms2.splitlines()[-1].split()[1:]  # same PGA and peaks
+    pga = record.pga / 9.81
+    assert f"{pga:.3g}" in in_g.splitlines()[-1]  # the record's PGA printed with --scale
+    # the slip: cm/s^2 read as g, PGA about 100 x 9.81 x pga g: above 100 g it is refused, units named
+    assert main([*args, str(tmp_path / "pulse_cms2.csv")]) == 2
+    assert "units" in capsys.readouterr().err
+    # a record ten times weaker in cm/s^2, read as g (25 g): it runs with the warning, --strict refuses it
+    write_csv(tmp_path / "weak_cms2.csv", record, 10.0)
+    assert main([*args, str(tmp_path / "weak_cms2.csv")]) == 0
+    captured = capsys.readouterr()
+    assert "cm/s^2" in captured.err and f"{10 * 9.81 * pga:.3g} g" in captured.err
+    assert main([*args, "--strict", str(tmp_path / "weak_cms2.csv")]) == 2
+    assert "--strict" in capsys.readouterr().err
+
+
+def test_finding5_strict_turns_a_plausibility_warning_into_an_error(capsys):
+    args = ["run", *WALL, "--Kd", "30", "--pga", "0.3", PULSE]  # K_d in N/m per m: a unit slip
+    assert main(args) == 0
+    assert "kN/m per m" in capsys.readouterr().err
+    assert main([*args, "--strict"]) == 2
+    assert "--strict" in capsys.readouterr().err
+
+
+def assess(tmp_path, *args):
+    """rockingwall assess PULSE ARGS (the record first: --pga takes every number after it)."""
+    return main(["assess", PULSE, *map(str, args), "--out", str(tmp_path)])
+
+
+def test_finding5_collapse_is_a_time_and_a_column_never_a_displacement(tmp_path, capsys):
+    assert assess(tmp_path, *WALL, "--kd-values", "20kN/m/m", "--pga", "0.3", "3") == 0
+    out = capsys.readouterr().out
+    cases = pd.read_csv(tmp_path / "cases.csv")
+    fallen = cases[cases.collapsed].iloc[0]
+    standing = cases[~cases.collapsed].iloc[0]
+    assert np.isnan(fallen.peak_s1_mm) and np.isnan(fallen.s1_over_Delta_u) and fallen.t_collapse_s > 0
+    assert standing.peak_s1_mm > 0 and np.isnan(standing.t_collapse_s)
+    assert f"collapsed at {fallen.t_collapse_s:.2f} s" in out
+
+
+def test_finding5_simply_supported_wall_echoes_no_kd_and_titles_name_none(tmp_path, capsys, figures):
+    assert assess(tmp_path, *WALL, "--support", "simplySupported", "--pga", "0.2") == 0
+    out = capsys.readouterr().out
+    assert "K_d" not in out
+    ida = next(f for f in figures if f.axes[0].get_ylabel() == "PGA [g]" and f.axes[0].get_title())
+    assert "K_d" not in ida.axes[0].get_title()
+
+
+def test_finding5_ida_title_names_no_unused_kd_and_fits_the_figure(tmp_path, figures):
+    assert assess(tmp_path, *WALL, "--kd-values", "20kN/m/m", "200kN/m/m", "--pga", "0.2", "0.3") == 0
+    ida = next(f for f in figures if len(f.axes) == 1)
+    title = ida.axes[0].title
+    assert "K_d" not in title.get_text()  # the wall's unused default (1000 kN/m per m) once stood there
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    renderer = FigureCanvasAgg(ida).get_renderer()
+    box, frame = title.get_window_extent(renderer), ida.bbox
+    assert frame.x0 <= box.x0 and box.x1 <= frame.x1 and box.y1 <= frame.y1
+
+
+def test_finding5_no_estimate_names_the_limit_state_not_collapse(tmp_path, capsys):
+    assert assess(tmp_path, *WALL, "--kd-values", "20kN/m/m", "--pga", "0.05", "0.1",
+                  "--limit", "big: s2 >= 2m") == 0
+    out = capsys.readouterr().out
+    line = next(x for x in out.splitlines() if x.strip().startswith("K_d = 20 kN/m per m, big"))
+    assert "no run reaches big" in line and "collapse or none" not in out
+
+
+def test_finding5_intervals_print_two_significant_figures_and_unbounded(tmp_path, capsys):
+    """'beta 0.76 [0.07, 37222767.96]': two significant figures, and 'unbounded' where resamples have
+    no finite beta. Records made to have a share that falls with the intensity in some resamples."""
+    from rockingwall import assessment_report
+    row = dict(Kd_kN_per_m_per_m=200.0, limit_state="0.6 Delta_u", over="records", records=4, median=0.38729833,
+               median_5=0.3, median_95=0.5, beta=0.7573512, beta_5=0.0723, beta_95=np.inf, warnings="")
+    line = assessment_report.fragility_line(row, "Kd_kN_per_m_per_m")
+    assert "median 0.387 [0.3, 0.5]" in line and "beta 0.76 [0.072, unbounded]" in line
+
+
+def test_finding5_every_json_the_package_writes_is_strict():
+    """json.dump writes NaN, which is not JSON: every writer goes through rockingwall.strict_json
+    (json.dumps stays only where the text is hashed, never written: the sweep's run key)."""
+    offenders = []
+    for path in PACKAGE.rglob("*.py"):
+        if path.name == "strict_json.py":
+            continue
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr in ("dump", "dumps") \
+                    and isinstance(node.func.value, ast.Name) and node.func.value.id == "json":
+                offenders.append(f"{path.relative_to(PACKAGE)}:{node.lineno}")
+    assert offenders == ["sweep/provenance.py:65"]
+
+
+def test_finding5_run_json_of_a_collapse_parses_strictly(capsys):
+    assert main(["run", *WALL, "--Kd", "20kN/m/m", "--pga", "3", PULSE, "--json", "--ensemble", "10"]) == 0
+    text = capsys.readouterr().out
+
+    def refuse(name):
+        raise ValueError(f"not JSON: {name}")
+    data = json.loads(text, parse_constant=refuse)
+    run = data["runs"][0]
+    assert run["collapsed"] and run["ensemble"]["s1_p84_m"] is None  # inf: a collapsed percentile
+
+
+def test_finding7_a_report_table_in_markdown_and_result_summary(tmp_path, capsys):
+    assert assess(tmp_path, *WALL, "--kd-values", "20kN/m/m", "--pga", "0.2", "3", "--ensemble", "20",
+                  "--table", "md", "--sa-period", "0.6") == 0
+    out = capsys.readouterr().out.splitlines()
+    header = next(i for i, x in enumerate(out) if x.startswith("| record"))
+    columns = [c.strip() for c in out[header].strip("|").split("|")]
+    assert columns[:2] == ["record", "PGA [g]"] and {"peak s1 [mm]", "s1/0.6Δu", "limit states reached",
+                                                      "P(collapse)", "Sa(0.6 s) [g]"} <= set(columns)
+    rows = [[c.strip() for c in x.strip("|").split("|")] for x in out[header + 2:header + 4]]
+    assert rows[0][1] == "0.2" and rows[1][columns.index("peak s1 [mm]")].startswith("collapsed at")
+    assert any(x.startswith("scene: the paper's") for x in out[header + 4:])
+    wall = rw.Wall.make(b=0.23, h=3.6, W=14904.0, psi=0.2013, Kd=20e3)
+    result = rw.simulate(wall, rw.read_record(PULSE).to_pga(0.2), ensemble=20)
+    table = result.summary()
+    assert "| record | PGA [g] |" in table and f"{result.peak_s1 * 1e3:.1f}" in table
+    assert f"{result.peak_s1 / (0.6 * wall.delta_u):.2f}" in table and "scene: the paper's" in table

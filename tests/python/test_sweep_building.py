@@ -1,0 +1,63 @@
+"""Sweeps of a building file (rockingwall.sweep.building_runs): one row per storey, record and
+intensity, each the storey's wall in the building solved in one integration; resumable, and an
+edited building file makes its rows stale."""
+import shutil
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from rockingwall.building import building_file, monolithic
+from rockingwall.commands import sweep as sweep_command
+from rockingwall.records import read_at2
+from rockingwall.sweep import suites
+
+
+@pytest.fixture
+def building(tmp_path, repo):
+    path = tmp_path / "house.toml"
+    shutil.copy(repo / "examples" / "two-storey-brick.toml", path)
+    return path
+
+
+def sweep(building, out, *extra):
+    return sweep_command.main(["--building", str(building), "--suite", "fema", "--records", "ff07a", "ff03a",
+                               "--pga", "0.2", "0.5", "--tail", "1", "--out", str(out), "--scheduler",
+                               "synchronous", "--no-progress", *extra])
+
+
+def test_a_building_sweep_has_one_row_per_storey_as_the_building_run_gives(building, tmp_path):
+    out = tmp_path / "sweep.csv"
+    assert sweep(building, out) == 0
+    rows = pd.read_csv(out)
+    assert len(rows) == 2 * 2 * 2 and set(rows.status) == {"ok"} and set(rows.model) == {"building"}
+    assert sorted(rows.wall.unique()) == ["two-storey brick, timber floors: storey 1",
+                                          "two-storey brick, timber floors: storey 2"]
+    fema = {r.name: r for r in suites.fema_farfield(suites.fema_cache())}
+    b = building_file.read(building)
+    for row in rows.itertuples():
+        record = read_at2(fema[row.record].path).scaled(row.scale)
+        result, _ = monolithic.simulate_building(b, record, t_end=float(record.t[-1]) + 1.0)
+        s = result.storeys[int(row.wall[-1]) - 1]
+        assert row.collapsed == s.collapsed
+        assert row.peak_s1 == pytest.approx(s.peak_s1_m, rel=1e-12)
+        assert row.peak_s2 == pytest.approx(s.peak_s2_m, rel=1e-12)
+    assert np.allclose(rows.scale * rows.record_pga_g, rows.pga_g)
+
+
+def test_a_resumed_building_sweep_reuses_rows_until_the_file_changes(building, tmp_path, capsys):
+    out = tmp_path / "sweep.csv"
+    assert sweep(building, out) == 0
+    assert sweep(building, out) == 0
+    assert "nothing to do" in capsys.readouterr().out
+    building.write_text(building.read_text().replace('stiffness = "20 kN/m/m"', 'stiffness = "200 kN/m/m"'))
+    assert sweep(building, out) == 0
+    rows = pd.read_csv(out)
+    assert (rows.kd_kN == 200.0).sum() == 4  # the upper storey's runs again, with the new roof
+
+
+def test_a_bad_building_file_is_refused_with_its_line(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[[storey]]\nheight = "3 m"\n')
+    assert sweep(bad, tmp_path / "out.csv", "--dry-run") == 2
+    assert f"{bad}:1: storey 1.wall is missing" in capsys.readouterr().err
