@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 from scipy.integrate import solve_ivp
-from scipy.optimize import brentq
+from scipy.optimize import brentq, minimize_scalar
 
 from . import inputs as _inputs
 from .dynamics import make_model
@@ -101,7 +101,8 @@ def _base_uplift_rotation(p, model):
 
 def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK45", rtol=1e-5,
              atol=1e-10, max_step=np.inf, t_out=None, progress=False, rest_dt=1e-3,
-             zeno_count=200, zeno_window=1e-6, max_events=200000, stop_at_samples=False):
+             zeno_count=200, zeno_window=1e-6, max_events=200000, stop_at_samples=False,
+             exact_peaks=False):
     """Simulate model `p` (a Params) under ground acceleration `ag` (callable t -> m/s^2 or
     inputs.Signal, positive toward +x) and top-spring far-end displacement `u_top` (flexibleTop
     only) from t = 0 to t_end.  Returns a Result (see its docstring).
@@ -112,6 +113,9 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
     stop_at_samples: integrate from one sample of the Signal inputs to the next (where the input,
     linear between samples, has its kinks), as the FMU's hosts and the exact engine do: slower,
     and more accurate on records than steps that straddle the kinks.
+    exact_peaks: the peaks at the extrema of the dense output (a bounded search around every local
+    maximum of |s1|, |s2| on the refined grid), not at the grid's points, which miss a peak by up
+    to (omega dt / 8)^2 / 2 of it (5e-4 at 2 Hz and a record's 0.02 s samples).
     """
     if not isinstance(p, Params):
         raise TypeError("p must be an rwref.Params")
@@ -228,6 +232,8 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
             yin = sol.sol(tin)
             for k in range(tin.size):
                 rec.peek(tin[k], yin[:, k])
+            if exact_peaks:
+                _refine_peaks(rec, model, sol.sol, np.sort(np.concatenate([ts, tin])))
         out_points(t_start, ts[-1], sol=sol.sol)
         for k in range(1, ts.size):
             rec.add(ts[k], ys[:, k])
@@ -280,6 +286,19 @@ def simulate(p, ag, t_end, u_top=None, q0=(0.0, 0.0), dq0=(0.0, 0.0), method="RK
     res.peak_s2 = rec.peak2
     res.nfev = nfev
     return res
+
+
+def _refine_peaks(rec, model, dense, tg):
+    """Raise rec's peaks to the maxima of |s1| and |s2| between the points tg of one step: a
+    bounded search on the dense output around each interior point where the sampled |s| peaks."""
+    yg = dense(tg)
+    s = np.abs(np.array([model.outputs(tg[k], yg[:, k])[:2] for k in range(tg.size)]))
+    for j in range(2):
+        v = s[:, j]
+        for k in np.flatnonzero((v[1:-1] >= v[:-2]) & (v[1:-1] >= v[2:]) & (v[1:-1] > 0)) + 1:
+            r = minimize_scalar(lambda tt: -abs(model.outputs(tt, dense(tt))[j]), bounds=(tg[k - 1], tg[k + 1]),
+                                method="bounded", options={"xatol": 1e-13})
+            rec.peek(r.x, dense(r.x))
 
 
 def _next_sample(agf, uf, t, t_end):
