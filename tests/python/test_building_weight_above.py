@@ -49,6 +49,10 @@ def test_the_lower_wall_carries_the_upper_walls_weight_without_their_mass():
     v = with_walls.start_values(b)
     assert v["psi_1"] == pytest.approx(PSI_GROUND, rel=1e-12)
     assert v["psiWeightOnly_1"] == pytest.approx(PSI_WO_GROUND, rel=1e-12) and v["psiWeightOnly_2"] == 0.0
+    # and the echo says so
+    lines = b.describe().splitlines()
+    assert "overburden 3.2 kN/m + walls above 16.4 kN/m (weight only)" in lines[2]
+    assert "overburden 1.5 kN/m, dohertyHinge" in lines[4]
 
 
 def test_the_lower_walls_delta_u_counts_the_weight_above():

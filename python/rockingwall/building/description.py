@@ -146,8 +146,11 @@ class Building:
                                        else "flexible")]
         for i, s in enumerate(self.storeys, 1):
             w, d = s.wall, s.diaphragm
+            above = self.weight_above(i - 1)
             lines.append(f"storey {i}: h = {s.height:g} m; wall b = {w.b * 1e3:g} mm, W = {w.W / 1e3:.4g} kN/m, "
-                         f"overburden {w.overburden / 1e3:.4g} kN/m, {w.hinge_law}, e_r = {w.e_r:g}")
+                         f"overburden {w.overburden / 1e3:.4g} kN/m"
+                         + (f" + walls above {above / 1e3:.4g} kN/m (weight only)" if above else "")
+                         + f", {w.hinge_law}, e_r = {w.e_r:g}")
             lines.append(f"  diaphragm: {d.stiffness / 1e3:.4g} kN/m per m, {d.mass:.4g} kg/m, "
                          f"{100 * d.damping:.3g} % damping ({d.law}; own period {d.period:.3g} s); "
                          f"tie {s.tie:.3g} N/m per m")
