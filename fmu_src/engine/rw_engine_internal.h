@@ -200,7 +200,7 @@ static inline int rwe_substeps_for(double rate, double *len)
  * hinges are closed.) */
 static inline int rwe_q_fixes_region(const rw_engine *e, const rw_span *sp)
 {
-    return e->law->q_only && sp->aq.valid;
+    return rw_moments_of_q_alone(&e->P) && sp->aq.valid;
 }
 
 /* ---- the functions one file gives another ------------------------------------------------------

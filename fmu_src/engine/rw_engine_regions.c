@@ -185,8 +185,8 @@ static rw_cache_entry *region_closed(rw_engine *e, const rw_regime *m, double g0
     rw_cache_entry *c = cache_find(e, m->closed_b, m->closed_m, key);
     const double mt = d->M[0][0] + 2.0 * d->M[0][1] + d->M[1][1];
     g0[0] = g0[1] = 0.0;
-    if (m->closed_b && !m->closed_m) g0[1] = -d->cap_m * m->side_m / d->M[1][1];
-    if (!m->closed_b && m->closed_m) g0[0] = -d->cap_b * m->side_b / mt;
+    if (m->closed_b && !m->closed_m) g0[1] = -rw_cap_m_of(d, m->side_m) * m->side_m / d->M[1][1];
+    if (!m->closed_b && m->closed_m) g0[0] = -rw_cap_b_of(d, m->side_b) * m->side_b / mt;
     if (!c) {
         rw_modes2 E;
         if (m->closed_b && m->closed_m) {
@@ -223,7 +223,7 @@ rw_cache_entry *rwe_region_of(rw_engine *e, const rw_regime *m, const double x[R
     /* affine in q on the region: a law of q alone, and the rigid law, whose moments are constant for
      * the region's sides (its collapse test takes the sides from the rotations, which keep the
      * region's signs until the event that changes them) */
-    if (e->law->q_only || e->rigid) {
+    if (rw_moments_of_q_alone(&e->P) || e->rigid) {
         aq->valid = 1;
         memcpy(aq->c, c, sizeof c);
         memcpy(aq->J, J, sizeof J);

@@ -131,8 +131,8 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const 
  * crossing sees |q1| at the breakpoint to rounding: a relative margin of 1e-6 accepts it. */
 static int base_past_elastic(const rw_params *p, const rw_derived *d, const double x[RW_NX])
 {
-    const double margin = 1e-6 * 2.0 * d->D1 / p->h;
-    if (p->support == RW_SIMPLY_SUPPORTED) return fabs(x[0]) - 2.0 * d->D1 / p->h >= -margin;
+    const double D1 = d->dir[RW_SIDE(x[0])].D1, margin = 1e-6 * 2.0 * D1 / p->h; /* of the direction of q1 */
+    if (p->support == RW_SIMPLY_SUPPORTED) return fabs(x[0]) - 2.0 * D1 / p->h >= -margin;
     return rw_line_value(&d->breaks[0], x, NULL, NULL) >= -margin;
 }
 

@@ -14,7 +14,7 @@ static const rw_hinge_law *law(const rw_params *p)
 }
 
 /* Sides from the signs of the rotations themselves (the tracked side where a rotation is 0), so
- * that for the rigid law -q.Q = cap_b|q1| + cap_m|x| >= 0 (docs/model.md "Collapse"). */
+ * that for the rigid law -q.Q = cap_b(sign q1)|q1| + cap_m(sign x)|x| >= 0 (docs/model.md "Collapse"). */
 static int side_of(double z, int tracked)
 {
     return z > 0.0 ? 1 : (z < 0.0 ? -1 : tracked);
@@ -107,10 +107,10 @@ void rw_indicator_lines(const rw_params *p, const rw_derived *d, const rw_regime
         memcpy(L + RW_Z_BREAK, d->breaks, sizeof d->breaks); /* the law's kinks of Q(q) */
         L[RW_Z_TOPPLE] = none;
     } else if (p->support == RW_SIMPLY_SUPPORTED && !rigid) {
-        const rw_indicator_line d1 = {{1.0, 0.0}, 1.0, 0.0, -2.0 * d->D1 / p->h, 0};
-        const rw_indicator_line d2 = {{1.0, 0.0}, 1.0, 0.0, -2.0 * d->D2 / p->h, 0};
-        L[RW_Z_BREAK] = d1;
-        L[RW_Z_BREAK + 1] = d2;
+        /* |D| = Delta_1, Delta_2 of the direction of D, in the rotation q1 = 2D/h */
+        const rw_direction *pos = &d->dir[RW_SIDE(1)], *neg = &d->dir[RW_SIDE(-1)];
+        L[RW_Z_BREAK] = rw_kink_line(1.0, 0.0, 2.0 * pos->D1 / p->h, 2.0 * neg->D1 / p->h);
+        L[RW_Z_BREAK + 1] = rw_kink_line(1.0, 0.0, 2.0 * pos->D2 / p->h, 2.0 * neg->D2 / p->h);
     }
     L[RW_Z_COLLAPSE] = none;
 }
@@ -185,9 +185,10 @@ static double collapse_indicator(const rw_params *p, const rw_derived *d, const 
         if (dz) *dz = -sgn(x[0]) * (r->xd[0]) / d->alpha;
         return 1.0 - fabs(x[0]) / d->alpha;
     }
-    if (p->support == RW_SIMPLY_SUPPORTED) {
-        if (dz) *dz = -sgn(x[0]) * r->xd[0] * p->h / 2.0 / d->Du;
-        return 1.0 - fabs(x[0] * p->h / 2.0) / d->Du;
+    if (p->support == RW_SIMPLY_SUPPORTED) { /* Delta_u of the direction of D */
+        const double Du = d->dir[RW_SIDE(x[0])].Du;
+        if (dz) *dz = -sgn(x[0]) * r->xd[0] * p->h / 2.0 / Du;
+        return 1.0 - fabs(x[0] * p->h / 2.0) / Du;
     }
     return collapse_2dof(p, d, m, x, Q, r, dz);
 }
@@ -232,7 +233,7 @@ int rw_collapse_reason(const rw_params *p, const rw_derived *d, const rw_regime 
     int past;
     if (p->support == RW_PARAPET) return fabs(x[0]) >= d->alpha ? RW_PAST_INSTABILITY : RW_STANDING;
     if (p->support == RW_SIMPLY_SUPPORTED)
-        return fabs(x[0] * p->h / 2.0) >= d->Du ? RW_PAST_INSTABILITY : RW_STANDING;
+        return fabs(x[0] * p->h / 2.0) >= d->dir[RW_SIDE(x[0])].Du ? RW_PAST_INSTABILITY : RW_STANDING;
     past = !law(p)->elastic(d, x, x + 2) && rw_collapse_G(p, d, m, in, x) <= 0.0;
     if (past) return RW_PAST_INSTABILITY;
     /* a guard on states the linearised model cannot describe (an importer's unstable integrator

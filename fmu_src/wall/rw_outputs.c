@@ -16,17 +16,18 @@ double rw_energy(const rw_params *p, const rw_derived *d, const rw_regime *m, co
     switch (p->support) {
     case RW_PARAPET: {
         const double s = m->closed_b ? 1.0 : m->side_b;
-        return 0.5 * (4.0 / 3.0) * (p->W / p->g) * d->R * d->R * v1 * v1 +
+        return 0.5 * (4.0 / 3.0) * (p->W / p->g) * d->R * d->R * v1 * v1 / d->Ir +
                p->W * d->R * (cos(s * d->alpha - q1) - cos(d->alpha));
     }
     case RW_SIMPLY_SUPPORTED: {
         const double D = fabs(q1 * p->h / 2.0), dD = v1 * p->h / 2.0;
+        const rw_direction *r = &d->dir[RW_SIDE(q1)]; /* the integral of F(D) in the direction of D */
         double V;
-        if (law(p)->set_valued) V = d->Fr * (D - D * D / (2.0 * d->Du));
-        else if (D <= d->D1) V = d->Fi * D * D / (2.0 * d->D1);
-        else if (D <= d->D2) V = d->Fi * d->D1 / 2.0 + d->Fi * (D - d->D1);
-        else V = d->Fi * d->D1 / 2.0 + d->Fi * (d->D2 - d->D1) +
-                 d->Fr * ((D - d->D2) - (D * D - d->D2 * d->D2) / (2.0 * d->Du));
+        if (law(p)->set_valued) V = r->Fr * (D - D * D / (2.0 * r->Du));
+        else if (D <= r->D1) V = r->Fi * D * D / (2.0 * r->D1);
+        else if (D <= r->D2) V = r->Fi * r->D1 / 2.0 + r->Fi * (D - r->D1);
+        else V = r->Fi * r->D1 / 2.0 + r->Fi * (r->D2 - r->D1) +
+                 r->Fr * ((D - r->D2) - (D * D - r->D2 * r->D2) / (2.0 * r->Du));
         return 0.5 * p->W / (3.0 * p->g) * dD * dD + V;
     }
     default: {

@@ -34,7 +34,12 @@ P(delta2B,    10, Real,    "1",     0.21,   0.0,   1.0,  "See delta2A; together 
 P(hingeSat,   11, Real,    "1",     2.0,    0.1,   20.0, "semiRigidHinge, semiRigidPaper: hinge moments saturate at mid-height displacement hingeSat*Delta_1 (also < Delta_u)") \
 P(restRate,   12, Real,    "rad/s", 1e-5,   1e-12, 0.1,  "Rigid hinges close when the relative rate after an impact or switch is below this") \
 P(support,    13, Integer, "",      3,      1,     3,    "Top support: 1 free top (parapet), 2 pinned top (simplySupported), 3 spring Kd (flexibleTop)") \
-P(hingeLaw,   14, Integer, "",      4,      1,     4,    "Hinge law: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge (simplySupported: 2-4 all mean Doherty's trilinear)")
+P(hingeLaw,   14, Integer, "",      4,      1,     4,    "Hinge law: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge (simplySupported: 2-4 all mean Doherty's trilinear)") \
+P(pointing,   15, Real,    "m",     0,      0.0,   1.5,  "Depth of recessed mortar pointing on EACH face: the reactions' lever arms use the effective thickness t = b - 2*pointing (also < b/2)") \
+P(eBaseRatio, 16, Real,    "1",     1,      0.0,   1.0,  "Base reaction's distance from the centreline over t/2: 1 on the face of the effective section (the paper), less when set in from it") \
+P(eHingeRatio, 17, Real,   "1",     1,      0.0,   1.0,  "Mid-height hinge reaction's distance from the centreline over t/2 (1: the face)") \
+P(eTop,       18, Real,    "m",     0,      -1.5,  1.5,  "Eccentricity of the overburden Wd (psi) from the centreline, positive toward +x, the inner face (joists bearing on it); also within b/2") \
+P(psiWeightOnly, 19, Real, "1",     0,      0.0,   20.0, "Weight-only overburden Wo/W1 at the top's centreline: weight without mass (the walls above, whose mass their own equations carry)")
 /* clang-format on */
 
 #define RW_C_TYPE_Real double

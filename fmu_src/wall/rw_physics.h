@@ -50,6 +50,16 @@ typedef struct {
     int none;
 } rw_indicator_line;
 
+/* The breakpoint where w = a0 q1 + a1 q2 reaches lim_p (w > 0) or -lim_n (w < 0), as a line:
+ * z = c + |w| + t w with t = (lim_n - lim_p)/(lim_p + lim_n), c = -(1 + t) lim_p, zero at both
+ * (|w| = lim_p, resp. -c/(1 - t) = lim_n); |w| - lim when both limits are lim. */
+static inline rw_indicator_line rw_kink_line(double a0, double a1, double lim_p, double lim_n)
+{
+    const double t = (lim_n - lim_p) / (lim_p + lim_n);
+    const rw_indicator_line line = {{a0, a1}, 1.0, t, -(1.0 + t) * lim_p, 0};
+    return line;
+}
+
 /* z of the line at the rotations q = (x[0], x[1]) and its rate *dz along the rotation rates
  * (xd[0], xd[1]) (xd, dz may be NULL); no branch, so that the engine's loop over all lines stays
  * short */
@@ -60,17 +70,29 @@ static inline double rw_line_value(const rw_indicator_line *L, const double *x, 
     return L->c + L->s * fabs(w) + L->t * w;
 }
 
+/* The quantities of one direction d of the mid-height's motion (docs/model.md "Derived"; +1 toward
+ * +x, the inner face): they differ between the directions when the top load is eccentric. */
 typedef struct {
-    double h;                  /* wall height (for the laws written in mid-height displacements) */
-    double W1, Wd;             /* W1 = W2 = W/2, Wd = psi*W1 */
-    double Du, Fr, F0, Rel;    /* Delta_u, F_r, F0, R_el (Table 5.1) */
+    double Du, Fr, F0, Rel;    /* Delta_u(d), F_r(d), F0(d), R_el(d) (Table 5.1; C8's Delta_i) */
     double D1, D2, Fi;         /* Delta_1, Delta_2 (Eq. 5.1, 5.2), plateau F_i */
     double theta_y;            /* 2*hingeSat*Delta_1/h */
-    double cap_b, cap_m;       /* hinge capacities */
+} rw_direction;
+
+/* index of a side or a direction (+1 -> 0, -1 -> 1; 0 counts as +1) in the arrays below */
+#define RW_SIDE(s) ((s) < 0)
+
+typedef struct {
+    double h;                  /* wall height (for the laws written in mid-height displacements) */
+    double W1, Wd, Wo;         /* W1 = W2 = W/2, Wd = psi*W1 (weight and mass), Wo = psiWeightOnly*W1 (weight) */
+    double e_b, e_m, Et;       /* the reactions' lever arms (eBaseRatio, eHingeRatio of t/2), Et = Wd*eTop */
+    rw_direction dir[2];       /* per direction d of the mid-height's motion, [RW_SIDE(d)] */
+    double cap_b, cap_m;       /* the hinge capacities' means over both sides: (2 W1 + Wd + Wo) e_b, (W1 + Wd + Wo) e_m */
+    double cap_bs[2], cap_ms[2]; /* the capacities on a hinge's side s, [RW_SIDE(s)]: cap - s*Et */
     double M[2][2], K[2][2];   /* Eq. 3.2, 3.3 */
     double pa[2];              /* p = pa*ag (Eq. 3.4, sign per convention) */
     double fu;                 /* f_u = fu*u_top*(1,1), fu = Kd*h/2 */
-    double Bp, Hp, R, alpha, p2; /* parapet (Housner) */
+    double Bp, Hp, R, alpha, p2; /* parapet (Housner): pivot's lever arm e_b, h/2, pivot to centroid, ... */
+    double Ir;                 /* parapet: (4/3) R^2 over its inertia about the pivot per mass (1 with the pivot on the face) */
     double zscale;             /* normalisation of the 2DOF collapse indicator (W*h) */
     double q_topple;           /* 2b/h: rotation at which a body's centre of gravity passes over its pivot */
     double inv_q_topple;       /* its inverse */
@@ -135,12 +157,17 @@ typedef struct {
      * itself (to rounding, as at the event there) the direction of motion dq decides */
     int (*elastic)(const rw_derived *d, const double q[2], const double dq[2]);
     /* 1 if Q depends on q alone (not on the sides, no kink at zero rotation), so that Q = c + J q
-     * holds on the whole linear region the motion is in (the exact engine evaluates it so) */
+     * holds on the whole linear region the motion is in (the exact engine evaluates it so), on a
+     * symmetric wall: rw_moments_of_q_alone says it for a wall */
     int q_only;
 } rw_hinge_law;
 
 /* The law of a hingeLaw value, NULL if none. */
 const rw_hinge_law *rw_hinge_law_of(int id);
+
+/* The capacity of a hinge turning to side s (the base: q1, the mid-height hinge: q2 - q1) */
+static inline double rw_cap_b_of(const rw_derived *d, double s) { return d->cap_bs[RW_SIDE(s)]; }
+static inline double rw_cap_m_of(const rw_derived *d, double s) { return d->cap_ms[RW_SIDE(s)]; }
 
 /* offsets of the hinge event indicators (rotation, relative force margin) */
 #define RW_EPS_Q(d) (0.1 * (d)->tiny)
@@ -167,12 +194,25 @@ typedef struct {
 int rw_params_validate(const rw_params *p, char *msg, size_t n);
 void rw_derive(const rw_params *p, rw_derived *d);
 
+/* The wall's statics as a user reads them (the package's Wall): per direction d of the
+ * mid-height's motion, [RW_SIDE(d)], Delta_u(d) (NZSEE C8's Delta_i) and F_r(d); per side s of a
+ * hinge, [RW_SIDE(s)], its capacity. */
+typedef struct {
+    double Du[2], Fr[2], cap_b[2], cap_m[2];
+} rw_statics;
+/* Checks the parameters (rw_params_validate), then fills s. 0 = ok, else msg filled. */
+int rw_wall_statics(const rw_params *p, rw_statics *s, char *msg, size_t n);
+
 /* Is the hinge law set-valued (rest / closed-hinge states)? */
 int rw_is_rigid(const rw_params *p);
+/* 1 when the hinge moments are a function of q alone, affine on the whole region between the law's
+ * breakpoints (rw_hinge_law.q_only), on this wall: not where an eccentric top load (psi and eTop
+ * not 0) gives each side its own capacity and breakpoints, whose slopes differ at zero rotation. */
+int rw_moments_of_q_alone(const rw_params *p);
 /* 1 when the mid-height hinge's switch changes the `condition` output and nothing else: flexibleTop
- * under a law of q alone (semiRigidHinge, dohertyHinge; the rigid law's and semiRigidPaper's
- * moments take the sides). The exact engine does not stop there, and brings the side up to date
- * (rw_sync_mid_side) at its events and where it reports. */
+ * with moments of q alone (rw_moments_of_q_alone: semiRigidHinge, dohertyHinge on a symmetric wall;
+ * the rigid law's and semiRigidPaper's moments take the sides). The exact engine does not stop
+ * there, and brings the side up to date (rw_sync_mid_side) at its events and where it reports. */
 int rw_mid_switch_is_bookkeeping(const rw_params *p);
 
 /* Dynamics (rw_dynamics.c) --------------------------------------------------------------------- */
@@ -185,7 +225,9 @@ void rw_force_1dof_affine(const rw_params *p, const rw_derived *d, const rw_regi
                           double *F0, double *F1);
 void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                     const double x[RW_NX], double dx[RW_NX]);
-/* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"). */
+/* Generalised moments a closed rigid hinge must resist (spec "Opening tendency"), less the
+ * asymmetry delta = (cap(+1) - cap(-1))/2 of its capacities: the hinge opens where |f| exceeds
+ * rw_caps' mean capacity, on side sign(f) (docs/model.md "Rigid hinges"). */
 void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                       const double x[RW_NX], double *f_b, double *f_m);
 /* The moments rw_closed_forces gives under m, (f_b, f_m) = c + G q + g_ag ag + g_u u_top, with the
@@ -194,7 +236,8 @@ typedef struct {
     double c[2], G[2][2], g_ag[2], g_u[2], inv_cap[2];
 } rw_closed_form;
 void rw_closed_force_form(const rw_params *p, const rw_derived *d, const rw_regime *m, rw_closed_form *f);
-/* Capacities matching rw_closed_forces (parapet: g tan(alpha), simplySupported: F_r, 2DOF: cap_b, cap_m). */
+/* Capacities matching rw_closed_forces, their means over both sides (parapet: g tan(alpha),
+ * simplySupported: (F_r(+1) + F_r(-1))/2, 2DOF: cap_b, cap_m). */
 void rw_caps(const rw_params *p, const rw_derived *d, double *cap_b, double *cap_m);
 
 /* Event indicators (rw_indicators.c) ----------------------------------------------------------- */

@@ -47,6 +47,7 @@
 #define rw_init_regime FMU_SYMBOL(rw_init_regime)
 #define rw_is_rigid FMU_SYMBOL(rw_is_rigid)
 #define rw_mid_switch_is_bookkeeping FMU_SYMBOL(rw_mid_switch_is_bookkeeping)
+#define rw_moments_of_q_alone FMU_SYMBOL(rw_moments_of_q_alone)
 #define rw_open_hinges FMU_SYMBOL(rw_open_hinges)
 #define rw_param_by_name FMU_SYMBOL(rw_param_by_name)
 #define rw_param_by_vr FMU_SYMBOL(rw_param_by_vr)
@@ -58,5 +59,6 @@
 #define rw_s1 FMU_SYMBOL(rw_s1)
 #define rw_s2 FMU_SYMBOL(rw_s2)
 #define rw_sync_mid_side FMU_SYMBOL(rw_sync_mid_side)
+#define rw_wall_statics FMU_SYMBOL(rw_wall_statics)
 
 #endif

@@ -148,6 +148,27 @@ def params(**values):
     return p
 
 
+class _Statics(ctypes.Structure):
+    _fields_ = [("Du", ctypes.c_double * 2), ("Fr", ctypes.c_double * 2), ("cap_b", ctypes.c_double * 2),
+                ("cap_m", ctypes.c_double * 2)]
+
+
+def statics(**values):
+    """The wall's statics from the C model (rw_wall_statics): {"Delta_u", "F_r"} per direction of
+    the mid-height's motion and {"cap_b", "cap_m"} per side of a hinge, each a dict {+1: .., -1: ..}
+    (+1 toward +x, the inner face). ValueError with the C message when the parameters break a
+    rule (docs/model.md "Parameters")."""
+    lib = library()
+    fn = lib.rw_wall_statics
+    fn.argtypes = [ctypes.c_void_p, ctypes.POINTER(_Statics), ctypes.c_char_p, ctypes.c_size_t]
+    fn.restype = ctypes.c_int
+    p, out, msg = params(**values), _Statics(), ctypes.create_string_buffer(512)
+    if fn(ctypes.byref(p), ctypes.byref(out), msg, len(msg)):
+        raise ValueError(msg.value.decode(errors="replace"))
+    return {name: {1: getattr(out, field)[0], -1: getattr(out, field)[1]}
+            for name, field in (("Delta_u", "Du"), ("F_r", "Fr"), ("cap_b", "cap_b"), ("cap_m", "cap_m"))}
+
+
 def peak_F_top(params, peak_s2):
     """Peak |F_top| [N/m] of a wall on its own (u_top = 0): F_top = Kd (s2 - u_top), so Kd times
     the peak of s2 with the spring (support 3), else 0."""

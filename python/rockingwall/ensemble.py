@@ -12,6 +12,7 @@ fitted over the records and the members together. Paper scene: the exact engine,
 one C call (engine.run_many); a diaphragm with mass or a building: the scene solver, one run per
 member (milliseconds each on its exact engine)."""
 import dataclasses
+import math
 
 import numpy as np
 
@@ -109,8 +110,19 @@ class Members:
                 "collapsed": self.collapsed}
 
 
-def _delta_u(b, psi):
-    return b * (1 + 0.75 * psi) / (1 + psi)
+def _delta_u(params):
+    """Delta_u [m] of one member's wall by the C model (the smaller direction's), NaN for a wall
+    that cannot stand (its run fails too)."""
+    try:
+        return min(engine.statics(**params)["Delta_u"].values())
+    except ValueError:
+        return math.nan
+
+
+def _delta_u_of_members(fixed, walls, n):
+    """Delta_u [m] of every member: the fixed parameters with the member's perturbed ones."""
+    return np.array([_delta_u({**fixed, **{k: float(np.broadcast_to(v, (n,))[j]) for k, v in walls.items()}})
+                     for j in range(n)])
 
 
 def member_walls(params, factors, storey=0):
@@ -133,7 +145,7 @@ def wall_members(params, record, ensemble, t_end):
     kd = walls.get("Kd", 0.0)
     f_top = np.asarray(kd) * out["peak_s2"] if int(params["support"]) == 3 else np.zeros(ensemble.size)
     return Members(out["peak_s1"], out["peak_s2"], f_top, out["collapsed"] & ~failed, out["t_collapse"],
-                   walls["b"], _delta_u(walls["b"], walls["psi"]), failed)
+                   walls["b"], _delta_u_of_members(fixed, walls, ensemble.size), failed)
 
 
 def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end):
@@ -150,7 +162,8 @@ def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end):
         member_tie = tie * factors["tie"][k, 0]
         spec = monolithic.wall_under_diaphragm_spec(wall, d, member_tie)
         runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end, [member_tie]))
-    return _collect(runs, walls, 0)
+    fixed = {k: v for k, v in params.items() if k not in walls}
+    return _collect(runs, dict(walls, delta_u=_delta_u_of_members(fixed, walls, ensemble.size)), 0)
 
 
 def building_members(building, record, ensemble, t_end):
@@ -174,8 +187,8 @@ def building_members(building, record, ensemble, t_end):
         member = dataclasses.replace(building, storeys=tuple(storeys))
         params = [member.wall_parameters(i) for i in range(n)]
         for i, p in enumerate(params):
-            for name in ("b", "psi"):
-                walls_per_storey[i].setdefault(name, []).append(p[name])
+            walls_per_storey[i].setdefault("b", []).append(p["b"])
+            walls_per_storey[i].setdefault("delta_u", []).append(_delta_u(p))
         runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
                                [s.tie for s in storeys]))
     return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
@@ -200,7 +213,7 @@ def _collect(runs, walls, storey):
     failed = np.array([r is None for r in runs])
     b = np.asarray(walls["b"], dtype=float)
     return Members(s1.astype(float), s2.astype(float), f.astype(float), collapsed.astype(bool), t_c.astype(float),
-                   b, _delta_u(b, np.asarray(walls["psi"], dtype=float)), failed)
+                   b, np.asarray(walls["delta_u"], dtype=float), failed)
 
 
 @dataclasses.dataclass(frozen=True)

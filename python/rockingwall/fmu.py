@@ -42,7 +42,8 @@ from .names import HINGE_LAWS, SUPPORTS  # noqa: E402  (the one copy of the name
 PARAMETER_NAMES = {
     "h": "h", "b": "b", "W": "W", "psi": "psi", "Kd": "Kd", "er": "er", "g": "g",
     "delta1_ratio": "delta1Ratio", "delta2_a": "delta2A", "delta2_b": "delta2B",
-    "hinge_sat": "hingeSat", "rest_rate": "restRate",
+    "hinge_sat": "hingeSat", "rest_rate": "restRate", "pointing": "pointing", "e_base_ratio": "eBaseRatio",
+    "e_hinge_ratio": "eHingeRatio", "e_top": "eTop", "psi_weight_only": "psiWeightOnly",
 }
 
 OUTPUTS = ["s1", "s2", "F_top", "collapsed", "impacts", "q1", "q2", "dq1", "dq2"]

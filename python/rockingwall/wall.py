@@ -5,7 +5,7 @@ import dataclasses
 import warnings
 
 from . import names, units
-from .engine import parameter_table
+from .engine import parameter_table, statics
 
 # Values that are valid for the model but unusual for an unreinforced-masonry wall and its
 # diaphragm: a value outside is most often a unit slip (kN typed for N). (low, high) in SI.
@@ -15,6 +15,8 @@ PLAUSIBLE = {
     "W": (1.0e3, 2.0e5, "N/m"),
     "psi": (0.0, 6.0, "1"),
 }
+# NZSEE C8's statics of the wall: named in describe() when not at their defaults
+STATICS = ("pointing", "eBaseRatio", "eHingeRatio", "eTop", "psiWeightOnly")
 KD_PLAUSIBLE = (5.0e2, 1.0e10)        # N/m per m: a very flexible timber floor .. rigid
 UNIT_WEIGHT_PLAUSIBLE = (10e3, 30e3)  # N/m^3: W/(b h) of masonry (brick, stone, block)
 
@@ -27,7 +29,8 @@ class PlausibilityWarning(UserWarning):
 class Wall:
     """Parameters of one wall and its supports, by the FMU's names and in SI units:
     h [m], b [m], W [N per m of wall], psi [1] (Wd/W1: overburden over the weight of ONE body,
-    W1 = W/2), Kd [N/m per m of wall], er [1], support, hingeLaw, and the rest of
+    W1 = W/2), Kd [N/m per m of wall], er [1], support, hingeLaw, NZSEE C8's statics (pointing [m],
+    eBaseRatio, eHingeRatio [1], eTop [m], psiWeightOnly [1]), and the rest of
     `rockingwall info`. Unset parameters take the table's defaults."""
     params: dict
 
@@ -54,12 +57,14 @@ class Wall:
         return Wall.make(**{**self.params, **values})
 
     def check(self):
-        """ValueError with the parameter, value and range when a value is outside the model's range."""
+        """ValueError with the parameter, value and range when a value is outside the model's range,
+        or naming the parameters when they break a rule that ties them together (the C model's)."""
         table = parameter_table()
         for key, value in self.params.items():
             table[key].check(value)
         if not self.params["b"] < self.params["h"]:
             raise ValueError(f"b = {self.params['b']} m must be less than h = {self.params['h']} m")
+        self.statics()
 
     def implausible(self):
         """Messages for values outside the plausible range of masonry walls and diaphragms."""
@@ -79,17 +84,28 @@ class Wall:
                        "W is the weight per metre of wall in N/m")
         return out
 
+    def statics(self):
+        """The C model's statics: Delta_u and F_r per direction, the hinge capacities per side
+        (rockingwall.engine.statics)."""
+        return statics(**self.params)
+
     @property
     def delta_u(self):
         """Delta_u [m]: the mid-height displacement at which the 1DOF's restoring force reaches
-        zero, b (1 + 0.75 psi)/(1 + psi) (the paper's Table 5.1)."""
-        psi = self.params["psi"]
-        return self.params["b"] * (1 + 0.75 * psi) / (1 + psi)
+        zero (NZSEE C8's Delta_i; b (1 + 0.75 psi)/(1 + psi) for the paper's walls, Table 5.1),
+        the smaller of the two directions when an eccentric top load makes them differ."""
+        return min(self.delta_u_by_direction.values())
+
+    @property
+    def delta_u_by_direction(self):
+        """{+1: Delta_u moving toward +x (inward), -1: toward -x (outward)} [m]."""
+        return self.statics()["Delta_u"]
 
     def describe(self, with_kd=True):
         """One line for titles and reports; with_kd=False leaves K_d out (a study over several)."""
-        p = self.params
-        return (f"b = {p['b']:g} m, h = {p['h']:g} m, W = {p['W'] / 1e3:g} kN/m, psi = {p['psi']:g}, "
+        p, table = self.params, parameter_table()
+        statics = "".join(f", {name} = {p[name]:g}" for name in STATICS if p[name] != table[name].default)
+        return (f"b = {p['b']:g} m, h = {p['h']:g} m, W = {p['W'] / 1e3:g} kN/m, psi = {p['psi']:g}{statics}, "
                 f"e_r = {p['er']:g}, {names.SUPPORT_NAMES[int(p['support'])]}"
                 + (f", K_d = {units.format_kd(p['Kd'])}" if with_kd and int(p["support"]) == 3 else "")
                 + f", hinge law {names.HINGE_LAW_NAMES[int(p['hingeLaw'])]}")

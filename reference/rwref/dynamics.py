@@ -136,7 +136,7 @@ class Parapet(_Base):
     def energy(self, t, y):
         p = self.p
         th, w = y[0], y[2]
-        return 0.5 * (4 / 3) * (p.W / p.g) * p.R**2 * w**2 + p.W * p.R * (math.cos(self.alpha - abs(th)) - math.cos(self.alpha))
+        return 0.5 * (p.W / p.g) * p.inertia_per_mass * w**2 + p.W * p.R * (math.cos(self.alpha - abs(th)) - math.cos(self.alpha))
 
 
 # ---------------------------------------------------------------------------------------------
@@ -147,7 +147,13 @@ class SimplySupported(_Base):
     def __init__(self, p, ag, u):
         super().__init__(p, ag, u)
         self.rigid = p.hinge_law == "rigid"
-        self.thr = 2 * p.F_r * p.g / p.W  # rigid uplift |ag| > (4b/h)(1 + 0.75 psi) g
+        self.dirs = {1.0: p.direction(1), -1.0: p.direction(-1)}
+        # rigid: at rest while -F_r(-1) <= -W ag/(2g) <= F_r(+1), i.e. -thr(+1) <= ag <= thr(-1)
+        self.thr = {d: 2 * r.F_r * p.g / p.W for d, r in self.dirs.items()}
+
+    def dir(self, v):
+        """The direction of a displacement (or side) v: +1 at zero."""
+        return self.dirs[-1.0 if v < 0 else 1.0]
 
     def initial(self, q0, dq0):
         q1, w = float(q0[0]), float(dq0[0])
@@ -160,17 +166,19 @@ class SimplySupported(_Base):
         return np.array([q1, -q1, w, -w]), st
 
     def force(self, D, st):
-        """Resisting force F(D) (N/m): trilinear (Fig. 5.2, semi-rigid) or rigid."""
-        p = self.p
+        """Resisting force F(D) (N/m) of the direction of D: trilinear (Fig. 5.2, semi-rigid) or
+        rigid (on the active side s: -F_r s + (F_r/Delta_u) D)."""
         a = abs(D)
         if self.rigid:
-            return -p.F_r * st.side_b * (1 - a / p.Delta_u)
-        if a <= p.Delta_1:
-            f = p.F_i * a / p.Delta_1
-        elif a <= p.Delta_2:
-            f = p.F_i
+            r = self.dir(st.side_b)
+            return -r.F_r * st.side_b + r.F_r / r.Delta_u * D
+        r = self.dir(D)
+        if a <= r.Delta_1:
+            f = r.F_i * a / r.Delta_1
+        elif a <= r.Delta_2:
+            f = r.F_i
         else:
-            f = p.F_r * (1 - a / p.Delta_u)
+            f = r.F_r * (1 - a / r.Delta_u)
         return -_sign(D) * f
 
     def rhs(self, t, y, st):
@@ -187,17 +195,18 @@ class SimplySupported(_Base):
         h2 = p.h / 2
         ev = [Event("base", "base", lambda t, y: y[0], lambda y, dy: dy[0], lambda y, dy: dy[2])]
         if not self.rigid:
-            for name, d in (("bp1", p.Delta_1), ("bp2", p.Delta_2)):
-                ev.append(Event(name, "breakpoint", lambda t, y, d=d: abs(y[0]) * h2 - d,
+            for name, key in (("bp1", "Delta_1"), ("bp2", "Delta_2")):
+                ev.append(Event(name, "breakpoint", lambda t, y, k=key: abs(y[0]) * h2 - getattr(self.dir(y[0]), k),
                                 lambda y, dy: _sign(y[0]) * dy[0] * h2))
-        ev.append(Event("collapse", "collapse", lambda t, y: p.Delta_u - abs(y[0]) * h2, fixed=1.0))
+        ev.append(Event("collapse", "collapse", lambda t, y: self.dir(y[0]).Delta_u - abs(y[0]) * h2, fixed=1.0))
         return ev
 
     def rest_margin(self, t, st):
-        return self.thr - abs(self.ag(t))
+        a = self.ag(t)
+        return min(self.thr[1.0] + a, self.thr[-1.0] - a)
 
     def resolve(self, t, y, st):
-        if self.rigid and st.base_closed and abs(self.ag(t)) > self.thr:
+        if self.rigid and st.base_closed and self.rest_margin(t, st) < 0:
             st.base_closed = False
             st.side_b = -_sign(self.ag(t))
             st.pending["base"] = (st.side_b, True)
@@ -226,24 +235,25 @@ class SimplySupported(_Base):
         raise AssertionError(ev.kind)
 
     def collapse_now(self, y, st, t=0.0):
-        return abs(y[0]) * self.p.h / 2 >= self.p.Delta_u
+        return abs(y[0]) * self.p.h / 2 >= self.dir(y[0]).Delta_u
 
     def outputs(self, t, y):
         return y[0] * self.p.h / 2, 0.0, 0.0
 
     def potential(self, D):
-        p = self.p
+        """The integral of -F from 0 to D, in the direction of D."""
+        r = self.dir(D)
         a = abs(D)
         if self.rigid:
-            return p.F_r * (a - a * a / (2 * p.Delta_u))
-        d1, d2 = p.Delta_1, p.Delta_2
+            return r.F_r * (a - a * a / (2 * r.Delta_u))
+        d1, d2 = r.Delta_1, r.Delta_2
         if a <= d1:
-            return p.F_i * a * a / (2 * d1)
-        v = p.F_i * d1 / 2
+            return r.F_i * a * a / (2 * d1)
+        v = r.F_i * d1 / 2
         if a <= d2:
-            return v + p.F_i * (a - d1)
-        v += p.F_i * (d2 - d1)
-        return v + p.F_r * ((a - d2) - (a * a - d2 * d2) / (2 * p.Delta_u))
+            return v + r.F_i * (a - d1)
+        v += r.F_i * (d2 - d1)
+        return v + r.F_r * ((a - d2) - (a * a - d2 * d2) / (2 * r.Delta_u))
 
     def energy(self, t, y):
         p = self.p
@@ -266,7 +276,8 @@ class FlexibleTop(_Base):
         self.det = self.m11 * self.m22 - self.m12**2
         self.pa1, self.pa2 = p.p_per_ag
         self.fu = p.fu_per_u[0]
-        self.cb, self.cm = p.cap_b, p.cap_m
+        self.cb = {s: p.cap_b_side(s) for s in (1.0, -1.0)}   # the capacities on each side
+        self.cm = {s: p.cap_m_side(s) for s in (1.0, -1.0)}
         self.ks = self.k11 + 2 * self.k12 + self.k22
         self.ms = self.m11 + 2 * self.m12 + self.m22
 
@@ -301,10 +312,10 @@ class FlexibleTop(_Base):
             return np.zeros(4)
         F1, F2 = self.F(t)
         if self.rigid and st.base_closed:  # q1 = dq1 = 0; row 2 alone
-            a2 = (F2 - self.k22 * q2 - self.cm * st.side_m) / self.m22
+            a2 = (F2 - self.k22 * q2 - self.cm[st.side_m] * st.side_m) / self.m22
             return np.array([0.0, v2, 0.0, a2])
         if self.rigid and st.mid_closed:  # q1 = q2 = theta
-            a = (F1 + F2 - self.ks * q1 - self.cb * st.side_b) / self.ms
+            a = (F1 + F2 - self.ks * q1 - self.cb[st.side_b] * st.side_b) / self.ms
             return np.array([v1, v1, a, a])
         Q1, Q2 = self.Q(q1, q2, st)
         r1 = F1 - self.k11 * q1 - self.k12 * q2 + Q1
@@ -317,21 +328,33 @@ class FlexibleTop(_Base):
     def f_b_baseclosed(self, t, y, st):
         F1, F2 = self.F(t)
         q2 = y[1]
-        a2 = (F2 - self.k22 * q2 - self.cm * st.side_m) / self.m22
-        return F1 - self.k12 * q2 + self.cm * st.side_m - self.m12 * a2
+        a2 = (F2 - self.k22 * q2 - self.cm[st.side_m] * st.side_m) / self.m22
+        return F1 - self.k12 * q2 + self.cm[st.side_m] * st.side_m - self.m12 * a2
 
     def f_m_midclosed(self, t, y, st):
         F1, F2 = self.F(t)
         th = y[0]
-        a = (F1 + F2 - self.ks * th - self.cb * st.side_b) / self.ms
+        a = (F1 + F2 - self.ks * th - self.cb[st.side_b] * st.side_b) / self.ms
         return F2 - (self.k12 + self.k22) * th - (self.m12 + self.m22) * a
+
+    @staticmethod
+    def margin(f, cap):
+        """cbar - |f - delta| of a closed hinge with the capacities cap[+1], cap[-1]: >= 0 while it
+        holds (-cap[-1] <= f <= cap[+1]), 0 at either limit."""
+        cbar, delta = (cap[1.0] + cap[-1.0]) / 2, (cap[1.0] - cap[-1.0]) / 2
+        return cbar - abs(f - delta)
+
+    @staticmethod
+    def opening_side(f, cap):
+        """The side a closed hinge opens to under the moment f, or 0 if it holds."""
+        return 1.0 if f > cap[1.0] else (-1.0 if -f > cap[-1.0] else 0.0)
 
     def G_t(self, t, y, st):
         """Collapse indicator G(q) = q . (K q - Q(q)) (docs/model.md "Collapse"); the spring counts as
         if the diaphragm held still, so a pushed-but-stable wall (u_top != 0) is not flagged.
 
         Q(q) is the hinge law as a function of q: sides from the signs of q1 and x = q2 - q1 themselves
-        (not the tracked sides), so for the rigid law -q.Q = cap_b|q1| + cap_m|x| >= 0."""
+        (not the tracked sides), so for the rigid law -q.Q = cap_b(s_b)|q1| + cap_m(s_m)|x| >= 0."""
         q1, q2 = y[0], y[1]
         sb = _sign(q1) or st.side_b
         sm = _sign(q2 - q1) or st.side_m
@@ -356,16 +379,18 @@ class FlexibleTop(_Base):
                Event("topple", "collapse", lambda t, y: self.q_topple - max(abs(y[0]), abs(y[1])), fixed=1.0)]
         if self.rigid:
             if st.base_closed:  # mid open
-                return [mid, Event("open_b", "open_b", lambda t, y: self.cb - abs(self.f_b_baseclosed(t, y, st)), fixed=1.0)] + col
+                return [mid, Event("open_b", "open_b", lambda t, y: self.margin(self.f_b_baseclosed(t, y, st), self.cb),
+                                   fixed=1.0)] + col
             if st.mid_closed:
-                return [base, Event("open_m", "open_m", lambda t, y: self.cm - abs(self.f_m_midclosed(t, y, st)), fixed=1.0)] + col
+                return [base, Event("open_m", "open_m", lambda t, y: self.margin(self.f_m_midclosed(t, y, st), self.cm),
+                                    fixed=1.0)] + col
             return [base, mid] + col
         bps = [Event(name, "breakpoint", lambda t, y, f=raw: f(y), rate) for name, raw, rate in self.law.breakpoints()]
         return [base, mid] + bps + col
 
     def rest_margin(self, t, st):
         F1, F2 = self.F(t)
-        return min(self.cb - abs(F1 + F2), self.cm - abs(F2))
+        return min(self.margin(F1 + F2, self.cb), self.margin(F2, self.cm))
 
     def resolve(self, t, y, st):
         """Opening tests of closed rigid hinges; repeated until consistent (docs/model.md)."""
@@ -377,16 +402,16 @@ class FlexibleTop(_Base):
             F1, F2 = self.F(t)
             if st.base_closed and st.mid_closed:
                 fb, fm = F1 + F2, F2
-                ob, om = abs(fb) > self.cb, abs(fm) > self.cm
+                sb, sm = self.opening_side(fb, self.cb), self.opening_side(fm, self.cm)
+                ob, om = sb != 0, sm != 0
                 if not (ob or om):
                     return y, rec
-                sb, sm = _sign(fb), _sign(fm)
                 if ob and om:
                     # base alone if the mid hinge then holds; else mid alone if the base then holds; else both
-                    a = (F1 + F2 - self.cb * sb) / self.ms
-                    holds_m = abs(F2 - (self.m12 + self.m22) * a) <= self.cm
-                    a2 = (F2 - self.cm * sm) / self.m22
-                    holds_b = abs(F1 + self.cm * sm - self.m12 * a2) <= self.cb
+                    a = (F1 + F2 - self.cb[sb] * sb) / self.ms
+                    holds_m = not self.opening_side(F2 - (self.m12 + self.m22) * a, self.cm)
+                    a2 = (F2 - self.cm[sm] * sm) / self.m22
+                    holds_b = not self.opening_side(F1 + self.cm[sm] * sm - self.m12 * a2, self.cb)
                     ob = holds_m or not holds_b
                     om = (not holds_m)
                 if ob:
@@ -398,16 +423,16 @@ class FlexibleTop(_Base):
                 rec.append("open")
                 continue
             if st.base_closed:
-                fb = self.f_b_baseclosed(t, y, st)
-                if abs(fb) > self.cb:
-                    st.base_closed, st.side_b = False, _sign(fb)
+                sb = self.opening_side(self.f_b_baseclosed(t, y, st), self.cb)
+                if sb:
+                    st.base_closed, st.side_b = False, sb
                     st.pending["base"] = (st.side_b, True)
                     rec.append("open")
                     continue
             if st.mid_closed:
-                fm = self.f_m_midclosed(t, y, st)
-                if abs(fm) > self.cm:
-                    st.mid_closed, st.side_m = False, _sign(fm)
+                sm = self.opening_side(self.f_m_midclosed(t, y, st), self.cm)
+                if sm:
+                    st.mid_closed, st.side_m = False, sm
                     st.pending["mid"] = (st.side_m, True)
                     rec.append("open")
                     continue

@@ -255,7 +255,7 @@ static void unknown_value_reference(const fmi_adapter *A, unsigned vr)
 static void test_value_references_types_and_sizes(const fmi_adapter *A)
 {
     /* none of these is a variable in either version (FMI 3.0 adds time, 0, and the event indicators, 50-57) */
-    const unsigned unknown[] = {15, 19, 22, 39, 46, 49, 58, 999, 0xFFFFFFFFu};
+    const unsigned unknown[] = {24, 29, 22, 39, 46, 49, 58, 999, 0xFFFFFFFFu};
     const unsigned mixed[3] = {RW_VR_h, RW_VR_b, 999};
     const size_t sizes[] = {0, RW_NUMBER_OF_STATES - 1, RW_NUMBER_OF_STATES + 1};
     const char *const no_such[1] = {"noSuchCategory"};

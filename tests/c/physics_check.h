@@ -22,6 +22,15 @@ static inline rw_params paper_params(void)
     return p;
 }
 
+/* the paper's wall with the statics parameters away from their defaults: pointing 7.5 mm on each
+ * face, the reactions set in from the faces, the top load 40 mm toward +x, weight-only overburden */
+static inline rw_params eccentric_params(void)
+{
+    rw_params p = paper_params();
+    p.pointing = 0.0075; p.eBaseRatio = 0.8; p.eHingeRatio = 0.9; p.eTop = 0.04; p.psiWeightOnly = 0.6;
+    return p;
+}
+
 static inline void init(const rw_params *p, rw_derived *d, rw_regime *m, const rw_input *in, double x[RW_NX])
 {
     rw_derive(p, d);

@@ -245,7 +245,7 @@ static void test_instantiate_arguments_of_fmi2(void)
 /* vr 0 is no variable in FMI 2.0 (FMI 3.0's time); the model has no String variables */
 static void test_value_references_of_fmi2(void)
 {
-    const fmi2ValueReference unknown[] = {0, 15, 19, 22, 39, 46, 999, 0xFFFFFFFFu};
+    const fmi2ValueReference unknown[] = {0, 24, 29, 22, 39, 46, 999, 0xFFFFFFFFu};
     unknown_value_reference(&FMI2, 0);
     for (size_t i = 0; i < sizeof unknown / sizeof unknown[0]; i++) {
         char num[32];

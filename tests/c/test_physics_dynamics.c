@@ -107,48 +107,84 @@ static void test_validation(void)
     CHECK(rw_params_validate(&p, msg, sizeof msg) && strstr(msg, "hingeSat"), "saturation past Delta_u accepted");
 }
 
-static void test_against_sympy(const char *json_path)
+/* json_numbers under an optional section (NULL: the top level) */
+static int section_numbers(const char *json, const char *section, const char *const *keys, double *out, int n)
 {
+    const char *path[6];
+    int k = 0;
+    if (section) path[k++] = section;
+    while (*keys && k < 5) path[k++] = *keys++;
+    path[k] = NULL;
+    return json_numbers(json, path, out, n);
+}
+
+/* The parameters of a section of the JSON: the paper's wall, the statics parameters as written */
+static rw_params sympy_params(const char *json, const char *section)
+{
+    static const char *const names[] = {"pointing", "eBaseRatio", "eHingeRatio", "eTop", "psiWeightOnly"};
     rw_params p = paper_params();
+    size_t i;
+    for (i = 0; i < sizeof names / sizeof names[0]; i++) {
+        const char *k[] = {"params", names[i], NULL};
+        double v = NAN;
+        char msg[512];
+        CHECK(section_numbers(json, section, k, &v, 1) == 1, "%s: params.%s missing", section ? section : "top", names[i]);
+        CHECK(rw_param_set(&p, rw_param_by_name(names[i]), v, msg, sizeof msg) == 0, "%s", msg);
+    }
+    return p;
+}
+
+/* The derived quantities of one section (the test's wall, or its eccentric variant) against sympy */
+static void check_sympy_section(const char *json, const char *section)
+{
+    rw_params p = sympy_params(json, section);
     rw_derived d;
-    char *json = json_path ? read_file(json_path) : NULL;
     double v[4];
     int i, j;
     static const int sides[5][2] = {{0, 0}, {1, -1}, {-1, 1}, {1, 1}, {-1, -1}}; /* condition: side_b, side_m */
+    static const char *const side_keys[2] = {"+1", "-1"};
     rw_derive(&p, &d);
-    if (!json) {
-        printf("FAIL: cannot read %s (run scripts/derive_equations.py --json)\n", json_path ? json_path : "(none)");
-        failures++;
-        return;
-    }
     {
         const char *k[] = {"params", "psi", NULL};
-        CHECK(json_numbers(json, k, v, 1) == 1 && v[0] == p.psi, "JSON params differ from the test's");
+        CHECK(section_numbers(json, section, k, v, 1) == 1 && v[0] == p.psi, "JSON params differ from the test's");
     }
     {
         const char *k[] = {"M", NULL};
-        CHECK(json_numbers(json, k, v, 4) == 4, "M not found");
+        CHECK(section_numbers(json, section, k, v, 4) == 4, "M not found");
         for (i = 0; i < 2; i++)
             for (j = 0; j < 2; j++) check_close("M", d.M[i][j], v[2 * i + j], 1e-12);
     }
     {
         const char *k[] = {"K", NULL};
-        CHECK(json_numbers(json, k, v, 4) == 4, "K not found");
+        CHECK(section_numbers(json, section, k, v, 4) == 4, "K not found");
         for (i = 0; i < 2; i++)
             for (j = 0; j < 2; j++) check_close("K", d.K[i][j], v[2 * i + j], 1e-12);
     }
     {
         const char *k[] = {"p_per_ag", NULL};
-        CHECK(json_numbers(json, k, v, 2) == 2, "p_per_ag not found");
+        CHECK(section_numbers(json, section, k, v, 2) == 2, "p_per_ag not found");
         check_close("p1/ag", d.pa[0], v[0], 1e-12);
         check_close("p2/ag", d.pa[1], v[1], 1e-12);
     }
     {
         const char *k1[] = {"cap_b", NULL}, *k2[] = {"cap_m", NULL};
-        CHECK(json_numbers(json, k1, v, 1) == 1, "cap_b not found");
+        CHECK(section_numbers(json, section, k1, v, 1) == 1, "cap_b not found");
         check_close("cap_b", d.cap_b, v[0], 1e-12);
-        CHECK(json_numbers(json, k2, v, 1) == 1, "cap_m not found");
+        CHECK(section_numbers(json, section, k2, v, 1) == 1, "cap_m not found");
         check_close("cap_m", d.cap_m, v[0], 1e-12);
+    }
+    for (i = 0; i < 2; i++) { /* per side s = +1, -1 of a hinge, per direction d = +1, -1 */
+        const char *kb[] = {"cap_b_side", side_keys[i], NULL}, *km[] = {"cap_m_side", side_keys[i], NULL};
+        const char *ku[] = {"Delta_u", side_keys[i], NULL}, *kr[] = {"F_r", side_keys[i], NULL};
+        const double s = i == 0 ? 1.0 : -1.0;
+        CHECK(section_numbers(json, section, kb, v, 1) == 1, "cap_b_side not found");
+        check_close("cap_b(s)", rw_cap_b_of(&d, s), v[0], 1e-12);
+        CHECK(section_numbers(json, section, km, v, 1) == 1, "cap_m_side not found");
+        check_close("cap_m(s)", rw_cap_m_of(&d, s), v[0], 1e-12);
+        CHECK(section_numbers(json, section, ku, v, 1) == 1, "Delta_u not found");
+        check_close("Delta_u(d)", d.dir[RW_SIDE(s)].Du, v[0], 1e-12);
+        CHECK(section_numbers(json, section, kr, v, 1) == 1, "F_r not found");
+        check_close("F_r(d)", d.dir[RW_SIDE(s)].Fr, v[0], 1e-12);
     }
     {   /* F_base = -base_mass*ag - base_per_qdd . q'' - F_top: each coefficient alone (q = 0, u_top = 0) */
         const char *km[] = {"base_mass", NULL}, *kc[] = {"base_per_qdd", NULL};
@@ -157,7 +193,8 @@ static void test_against_sympy(const char *json_path)
         rw_regime m = {0, 0, 1, -1, 0, 0, 0};
         rw_input in = {1.0, 0.0};
         double dx[RW_NX] = {0, 0, 0, 0};
-        CHECK(json_numbers(json, km, &mass, 1) == 1 && json_numbers(json, kc, c, 2) == 2, "base force not found");
+        CHECK(section_numbers(json, section, km, &mass, 1) == 1 && section_numbers(json, section, kc, c, 2) == 2,
+              "base force not found");
         check_close("F_base per ag", rw_F_base(&p, &d, &m, &in, x0, dx), -mass, 1e-12);
         in.ag = 0.0;
         for (i = 0; i < 2; i++) {
@@ -174,11 +211,24 @@ static void test_against_sympy(const char *json_path)
         rw_regime m = {0, 0, sides[i][0], sides[i][1], 0, 0, 0};
         double q[RW_NX] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1], 0, 0}, Q[2], a, b;
         rw_hinge_Q(&p, &d, &m, q, Q);
-        CHECK(json_numbers(json, ka, &a, 1) == 1 && json_numbers(json, kb, &b, 1) == 1, "condition %d missing", i);
+        CHECK(section_numbers(json, section, ka, &a, 1) == 1 && section_numbers(json, section, kb, &b, 1) == 1,
+              "condition %d missing", i);
         check_close("A_c", Q[0], a, 1e-12);
         check_close("B_c", Q[1], b, 1e-12);
         CHECK(rw_condition(&p, &m) == i, "condition from sides = %d, expected %d", rw_condition(&p, &m), i);
     }
+}
+
+static void test_against_sympy(const char *json_path)
+{
+    char *json = json_path ? read_file(json_path) : NULL;
+    if (!json) {
+        printf("FAIL: cannot read %s (run scripts/derive_equations.py --json)\n", json_path ? json_path : "(none)");
+        failures++;
+        return;
+    }
+    check_sympy_section(json, NULL);
+    check_sympy_section(json, "eccentric");
     free(json);
 }
 
@@ -192,29 +242,47 @@ static void test_table_5_1(void)
         rw_derived d;
         p.psi = want[i][0];
         rw_derive(&p, &d);
-        CHECK(fabs(d.Du - want[i][1]) < 0.0006, "Delta_u(psi=%g) = %g", p.psi, d.Du);
-        CHECK(fabs(d.Rel / 1000.0 - want[i][2]) < 0.0006, "R_el(psi=%g) = %g", p.psi, d.Rel);
-        CHECK(fabs(d.Rel / p.W - want[i][3]) < 0.0006, "F0/W(psi=%g) = %g", p.psi, d.Rel / p.W);
+        int k;
+        for (k = 0; k < 2; k++) { /* both directions of the paper's wall */
+            const rw_direction *r = &d.dir[k];
+            CHECK(fabs(r->Du - want[i][1]) < 0.0006, "Delta_u(psi=%g) = %g", p.psi, r->Du);
+            CHECK(fabs(r->Rel / 1000.0 - want[i][2]) < 0.0006, "R_el(psi=%g) = %g", p.psi, r->Rel);
+            CHECK(fabs(r->Rel / p.W - want[i][3]) < 0.0006, "F0/W(psi=%g) = %g", p.psi, r->Rel / p.W);
+        }
     }
 }
 
+/* Doherty's trilinear law of each direction, on the paper's wall and on an eccentric one (whose
+ * directions differ) */
 static void test_trilinear(void)
 {
-    rw_params p = paper_params();
-    rw_derived d;
-    rw_regime m = {0, 0, 1, 1, 0, 0, 0};
-    p.support = RW_SIMPLY_SUPPORTED;
-    rw_derive(&p, &d);
-    check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, d.D1 / 2), -d.Fi / 2, 1e-12);
-    check_close("F(D1)", rw_force_1dof(&p, &d, &m, d.D1), -d.Fi, 1e-12);
-    check_close("F((D1+D2)/2)", rw_force_1dof(&p, &d, &m, (d.D1 + d.D2) / 2), -d.Fi, 1e-12);
-    check_close("F(D2)", rw_force_1dof(&p, &d, &m, d.D2), -d.Fi, 1e-12);
-    check_close("F(D2+)", rw_force_1dof(&p, &d, &m, d.D2 * (1 + 1e-12)), -d.Fi, 1e-9);
-    check_close("F(Du)", rw_force_1dof(&p, &d, &m, d.Du), 0.0, 1e-9);
-    check_close("F(-0.1)", rw_force_1dof(&p, &d, &m, -0.1), -rw_force_1dof(&p, &d, &m, 0.1), 1e-12);
-    check_close("F_i", d.Fi, d.Fr * (1 - d.D2 / d.Du), 1e-12);
-    check_close("Delta_1", d.D1, 0.05 * d.Du, 1e-12);
-    check_close("Delta_2", d.D2, 0.92 * d.D1 + 0.21 * d.Du, 1e-12);
+    int wall, k;
+    for (wall = 0; wall < 2; wall++) {
+        rw_params p = wall ? eccentric_params() : paper_params();
+        rw_derived d;
+        rw_regime m = {0, 0, 1, 1, 0, 0, 0};
+        p.support = RW_SIMPLY_SUPPORTED;
+        rw_derive(&p, &d);
+        for (k = 0; k < 2; k++) {
+            const rw_direction *r = &d.dir[k];
+            const double s = k == 0 ? 1.0 : -1.0;
+            check_close("F(D1/2)", rw_force_1dof(&p, &d, &m, s * r->D1 / 2), -s * r->Fi / 2, 1e-12);
+            check_close("F(D1)", rw_force_1dof(&p, &d, &m, s * r->D1), -s * r->Fi, 1e-12);
+            check_close("F((D1+D2)/2)", rw_force_1dof(&p, &d, &m, s * (r->D1 + r->D2) / 2), -s * r->Fi, 1e-12);
+            check_close("F(D2)", rw_force_1dof(&p, &d, &m, s * r->D2), -s * r->Fi, 1e-12);
+            check_close("F(D2+)", rw_force_1dof(&p, &d, &m, s * r->D2 * (1 + 1e-12)), -s * r->Fi, 1e-9);
+            check_close("F(Du)", rw_force_1dof(&p, &d, &m, s * r->Du), 0.0, 1e-9);
+            check_close("F_i", r->Fi, r->Fr * (1 - r->D2 / r->Du), 1e-12);
+            check_close("Delta_1", r->D1, 0.05 * r->Du, 1e-12);
+            check_close("Delta_2", r->D2, 0.92 * r->D1 + 0.21 * r->Du, 1e-12);
+        }
+        if (wall == 0)
+            check_close("F(-0.1)", rw_force_1dof(&p, &d, &m, -0.1), -rw_force_1dof(&p, &d, &m, 0.1), 1e-12);
+        else /* the eccentric top load makes the wall stronger toward +x, where it bears */
+            CHECK(d.dir[0].Fr > d.dir[1].Fr * 1.01 && d.dir[0].Du > d.dir[1].Du * 1.01,
+                  "eccentric wall: F_r %g, %g and Delta_u %g, %g not larger toward +x", d.dir[0].Fr, d.dir[1].Fr,
+                  d.dir[0].Du, d.dir[1].Du);
+    }
 }
 
 int main(int argc, char **argv)

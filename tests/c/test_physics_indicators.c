@@ -33,9 +33,9 @@ static void test_indicators(void)
                   "law %d: indicator %d jumps %g -> %g", law, i, z1[i], z2[i]);
         /* breakpoint indicator of the semi-rigid laws */
         if (law != RW_RIGID) {
-            y[0] = d.theta_y * 0.999;
+            y[0] = d.dir[0].theta_y * 0.999;
             rw_event_indicators(&p, &d, &m, &in, y, z1);
-            y[0] = d.theta_y * 1.001;
+            y[0] = d.dir[0].theta_y * 1.001;
             rw_event_indicators(&p, &d, &m, &in, y, z2);
             CHECK(z1[RW_Z_BREAK] < 0 && z2[RW_Z_BREAK] > 0, "law %d: breakpoint indicator", law);
         }
@@ -56,9 +56,9 @@ static void indicators_along(const rw_params *p, const rw_derived *d, const rw_r
 
 /* The rates the exact engine brackets and refines roots with (rw_event_indicator_rates) against
  * central differences of the indicators along the same motion, for both supports the engine
- * covers, every law, both sides of each hinge and (rigid) every closed state; the values are the
- * FMU's own. Points where a kink lies within the difference step are skipped (the one-sided
- * differences disagree there). */
+ * covers, every law, both sides of each hinge and (rigid) every closed state, on the paper's wall
+ * and on an eccentric one; the values are the FMU's own. Points where a kink lies within the
+ * difference step are skipped (the one-sided differences disagree there). */
 static void test_indicator_rates(void)
 {
     static const int supports[2] = {RW_SIMPLY_SUPPORTED, RW_FLEXIBLE_TOP};
@@ -67,7 +67,7 @@ static void test_indicator_rates(void)
     for (si = 0; si < 2; si++)
         for (law = 1; law <= 4; law++)
             for (trial = 0; trial < 400; trial++) {
-                rw_params p = paper_params();
+                rw_params p = trial % 8 >= 4 ? eccentric_params() : paper_params(); /* both, every closed state */
                 rw_derived d;
                 rw_regime m;
                 rw_input in, rate;
@@ -190,40 +190,53 @@ static void test_closed_force_form(void)
     CHECK(compared == 1200, "closed forms compared: %d", compared);
 }
 
+/* Collapse where the restoring force vanishes: the 2DOF along the simply supported shape and the
+ * 1DOF at Delta_u of the direction of motion, the parapet at alpha; the paper's wall (psi = 0) and
+ * an eccentric one, whose directions differ */
 static void test_collapse(void)
 {
-    rw_params p = paper_params();
-    rw_derived d;
     rw_regime m;
     rw_input in = {0, 0};
     double x[RW_NX];
-    int law;
-    p.psi = 0.0;
-    for (law = 1; law <= 3; law++) {
-        /* 2DOF along the simply supported shape q2 = -q1: G(q) = 0 at D = Delta_u (outside elastic range) */
-        double th;
-        p.hingeLaw = law;
-        rw_derive(&p, &d);
-        th = 2 * d.Du / p.h;
-        x[0] = 0.999 * th; x[1] = -x[0]; x[2] = x[3] = 0;
-        init(&p, &d, &m, &in, x);
-        if (law != RW_SEMI_RIGID_PAPER) /* the paper law's Q is not a potential: its root differs */
-            CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "law %d collapsed before Delta_u", law);
-        x[0] = 1.001 * th; x[1] = -x[0];
-        init(&p, &d, &m, &in, x);
-        if (law != RW_SEMI_RIGID_PAPER)
-            CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "law %d not collapsed past Delta_u", law);
-    }
-    p.support = RW_SIMPLY_SUPPORTED;
-    rw_derive(&p, &d);
-    x[0] = 2 * d.Du / p.h * 1.0001;
-    CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "1DOF not collapsed past Delta_u");
-    p.support = RW_PARAPET;
-    rw_derive(&p, &d);
-    x[0] = d.alpha * 0.999;
-    CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "parapet collapsed before alpha");
-    x[0] = -d.alpha * 1.001;
-    CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "parapet not collapsed past alpha");
+    int wall, k, law;
+    for (wall = 0; wall < 2; wall++)
+        for (k = 0; k < 2; k++) {
+            rw_params p = wall ? eccentric_params() : paper_params();
+            rw_derived d;
+            const double s = k == 0 ? 1.0 : -1.0;
+            if (!wall) p.psi = 0.0;
+            for (law = 1; law <= 3; law++) {
+                /* 2DOF along the simply supported shape q2 = -q1: G(q) = 0 at D = Delta_u (outside elastic range) */
+                double th;
+                p.hingeLaw = law;
+                rw_derive(&p, &d);
+                th = s * 2 * d.dir[k].Du / p.h;
+                x[0] = 0.999 * th; x[1] = -x[0]; x[2] = x[3] = 0;
+                init(&p, &d, &m, &in, x);
+                if (law != RW_SEMI_RIGID_PAPER) /* the paper law's Q is not a potential: its root differs */
+                    CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "wall %d law %d side %+g collapsed before Delta_u", wall,
+                          law, s);
+                x[0] = 1.001 * th; x[1] = -x[0];
+                init(&p, &d, &m, &in, x);
+                if (law != RW_SEMI_RIGID_PAPER)
+                    CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "wall %d law %d side %+g not collapsed past Delta_u",
+                          wall, law, s);
+            }
+            p.support = RW_SIMPLY_SUPPORTED;
+            rw_derive(&p, &d);
+            x[0] = s * 2 * d.dir[k].Du / p.h * 0.9999;
+            x[1] = -x[0];
+            CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "wall %d: 1DOF collapsed before Delta_u(%+g)", wall, s);
+            x[0] = s * 2 * d.dir[k].Du / p.h * 1.0001;
+            x[1] = -x[0];
+            CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "wall %d: 1DOF not collapsed past Delta_u(%+g)", wall, s);
+            p.support = RW_PARAPET;
+            rw_derive(&p, &d);
+            x[0] = s * d.alpha * 0.999;
+            CHECK(!rw_collapse_reason(&p, &d, &m, &in, x), "parapet collapsed before alpha");
+            x[0] = s * d.alpha * 1.001;
+            CHECK(rw_collapse_reason(&p, &d, &m, &in, x), "parapet not collapsed past alpha");
+        }
 }
 
 /* The collapse test at the event where a hinge leaves its elastic range: the state sits on the
@@ -243,7 +256,7 @@ static void test_collapse_where_the_elastic_range_ends(void)
     p.er = 0.5190288381649051; p.delta1Ratio = 0.19495750897142883; p.hingeSat = 2.326972415937138;
     p.hingeLaw = RW_DOHERTY_HINGE; p.Kd = 0.0;
     rw_derive(&p, &d);
-    x[0] = -2.0 * d.D1 / p.h * (1.0 - 1e-13); /* the breakpoint, on the elastic side by rounding */
+    x[0] = -2.0 * d.dir[RW_SIDE(-1)].D1 / p.h * (1.0 - 1e-13); /* the breakpoint, on the elastic side by rounding */
     x[1] = x[0] - 0.0512;
     x[2] = -0.2039; x[3] = -0.7509;            /* moving out of the elastic range */
     init(&p, &d, &m, &in, x);

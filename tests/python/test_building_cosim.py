@@ -53,13 +53,14 @@ def test_within_the_limit_co_simulation_equals_one_integration(tmp_path, capsys)
     path = tmp_path / "light.toml"
     path.write_text(LIGHT)
     building = building_file.read(path)
-    rec = records.el_centro().to_pga(0.12)
+    # 0.18 g: the lower wall, under the upper one's weight (weight-only overburden), rocks too
+    rec = records.el_centro().to_pga(0.18)
     mono, _ = monolithic.simulate_building(building, rec, t_end=8.0)
     r = bs.run(cosim.scene_of(building), rec, 8.0, 1e-3, order=2)
     assert not r["collapsed"] and r.energy_share_max < 0.01
     for s in mono.storeys:
         i = s.storey
-        assert not s.collapsed and s.peak_s1_m > 0.02  # rocking, standing
+        assert not s.collapsed and s.peak_s1_m > 0.012  # rocking (twice Delta_1 or more), standing
         assert r.peak(i, "s1") == pytest.approx(s.peak_s1_m, rel=0.01)
         assert r.peak(i, "s2") == pytest.approx(s.peak_s2_m, rel=0.01)
         assert np.abs(r[f"u_diaph_{i}"] - r[f"u_floor_{i}"]).max() == pytest.approx(s.diaphragm_peak_m, rel=0.01)

@@ -46,8 +46,10 @@ from rwref import inputs
 STUDY_FINDINGS = (361, 651, 736)
 
 
+# and 40 scenes of walls with NZSEE C8's statics (engine_scenes.STATICS_SEEDS): capacities and
+# breakpoints that differ between the hinges' sides
 SCENES = (range(*(int(v) for v in os.environ["RW_ENGINE_SCENES"].split(":"))) if os.environ.get("RW_ENGINE_SCENES")
-          else [*range(200), *STUDY_FINDINGS])
+          else [*range(200), *STUDY_FINDINGS, *range(es.STATICS_SEEDS, es.STATICS_SEEDS + 40)])
 
 
 TERMINATE_DELAY = 1e-6

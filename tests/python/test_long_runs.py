@@ -17,6 +17,11 @@ CASES = {  # name: --set arguments (free rocking from an initial tilt, no input)
     "flexibleTop semiRigidHinge": ["support=3", "hingeLaw=3", "q1=0.02", "Kd=5e4"],
     "flexibleTop dohertyHinge": ["support=3", "hingeLaw=4", "q1=0.02", "Kd=5e4"],
 }
+# the same with NZSEE C8's statics away from their defaults: pointing, reactions set in from the
+# faces, an eccentric overburden (capacities and breakpoints that differ between the sides) and a
+# weight-only overburden; the parapet takes pointing and eBaseRatio only
+C8 = ["psi=0.5", "pointing=0.005", "eBaseRatio=0.9", "eHingeRatio=0.95", "eTop=0.04", "psiWeightOnly=0.6"]
+CASES.update({f"{name} C8": sets + C8 for name, sets in list(CASES.items())})
 
 
 def free_rocking(exe, fmu, tmp_path, sets, er, stop):

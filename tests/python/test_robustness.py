@@ -220,3 +220,19 @@ def test_limit_states_in_delta_u_are_each_members_own():
     thin, thick = 0.2, 0.3
     du = [thin * (1 + 0.75 * 0.2013) / 1.2013, thick * (1 + 0.75 * 0.2013) / 1.2013]
     assert list(state.exceeded_many(peaks, [thin, thick], du)) == [True, False]
+
+
+def test_members_delta_u_takes_the_walls_statics(capitola):
+    """A member's Delta_u is its own wall's, pointing and the weight of the walls above included:
+    with every top load on the centreline and the reactions on the faces of t = b - 2 pointing,
+    t (1 + 0.75 psi_t)/(1 + psi_t) with psi_t = psi + psiWeightOnly (by hand, docs/model.md), not
+    the paper's b (1 + 0.75 psi)/(1 + psi)."""
+    wall = rw.Wall.make(**ASSESSOR, Kd=20e3, pointing=0.01, psiWeightOnly=1.2)
+    record = capitola.to_pga(0.1)
+    e = ens.Ensemble(size=4, seed=3)
+    members = ens.wall_members(wall.params, record, e, float(record.t[-1]))
+    f = e.factors()
+    for k in range(4):
+        t = ASSESSOR["b"] * f["b"][k, 0] - 0.02
+        psi_t = ASSESSOR["psi"] * f["psi"][k, 0] + 1.2
+        assert members.delta_u[k] == pytest.approx(t * (1 + 0.75 * psi_t) / (1 + psi_t), rel=1e-12)

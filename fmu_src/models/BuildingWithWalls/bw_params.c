@@ -19,6 +19,7 @@ static const char *wall_parameter_name(int slot)
     case 6: return "Kd";
     case 7: return "er";
     case 8: return "hingeLaw";
+    case 9: return "psiWeightOnly";
     default: return NULL;
     }
 }

@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from .. import scene_engine
+from .. import engine, scene_engine
 from ..errors import RockingWallError
 from ..coupling.rules import ENERGY_SHARE_MAX
 
@@ -64,9 +64,9 @@ class BuildingResult:
 
 
 def delta_u(params):
-    """Delta_u [m] of a wall: b (1 + 0.75 psi)/(1 + psi) (the paper's Table 5.1)."""
-    psi = params["psi"]
-    return params["b"] * (1 + 0.75 * psi) / (1 + psi)
+    """Delta_u [m] of a wall (the C model's, b (1 + 0.75 psi)/(1 + psi) for the paper's walls,
+    Table 5.1): the smaller of its two directions."""
+    return min(engine.statics(**params)["Delta_u"].values())
 
 
 def storey_spec(wall_params, diaphragm, in_plane=None):

@@ -14,9 +14,10 @@ def start_values(building):
          "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
          "rayleighStiffness": 0.0, **{FMU_HYSTERESIS_NAMES[k]: x for k, x in building.hysteresis().items()}}
     for i, s in enumerate(building.storeys, 1):
-        w, d = s.wall, s.diaphragm
+        w, d, wall = s.wall, s.diaphragm, building.wall_parameters(i - 1)
         v.update({f"hasWall_{i}": 1, f"h_{i}": s.height, f"b_{i}": w.b, f"W_{i}": w.W,
-                  f"psi_{i}": 2.0 * w.overburden / w.W, f"tie_{i}": s.tie, f"er_{i}": w.e_r,
+                  f"psi_{i}": wall["psi"], f"psiWeightOnly_{i}": wall["psiWeightOnly"], f"tie_{i}": s.tie,
+                  f"er_{i}": w.e_r,
                   f"hingeLaw_{i}": hinge_law_code(w.hinge_law),
                   f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"zetad_{i}": d.damping})
         if d.law != "linear":

@@ -12,6 +12,7 @@ from ..wall import Wall
 WALL_FLAGS = {  # flag -> parameter; values may carry units ('30kN/m/m', '230mm')
     "--b": "b", "--h": "h", "--W": "W", "--psi": "psi", "--Kd": "Kd", "--er": "er",
     "--support": "support", "--hinge-law": "hingeLaw",
+    "--pointing": "pointing", "--e-top": "eTop", "--psi-weight-only": "psiWeightOnly",
 }
 
 
@@ -28,6 +29,13 @@ def add_wall_arguments(parser):
     g.add_argument("--er", help="coefficient of restitution at base impacts [1]")
     g.add_argument("--support", help="parapet, simplySupported, flexibleTop (default flexibleTop)")
     g.add_argument("--hinge-law", help="rigid, semiRigidPaper, semiRigidHinge, dohertyHinge (default)")
+    g.add_argument("--pointing", help="depth of recessed mortar pointing on each face [m]: the effective "
+                   "thickness is b - 2 x pointing (NZSEE C8)")
+    g.add_argument("--e-top", help="eccentricity of the overburden (psi) from the centreline [m], positive "
+                   "toward the inner face (joists bearing on it; outward: --e-top=-20mm); the reactions' "
+                   "eccentricities: --set eBaseRatio=.. --set eHingeRatio=..")
+    g.add_argument("--psi-weight-only", help="weight-only overburden ratio Wo/W1 [1]: the weight of the walls "
+                   "above, whose mass their own equations carry (not moving with the top as mass, unlike --psi)")
     g.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
                    help="any other parameter by name (rockingwall info lists them)")
 

@@ -10,8 +10,10 @@ def parser(sub):
 
 
 def main(args):
-    print(f"{'name':<12}{'unit':<7}{'default':>9}  {'range':<18}description")
-    for name, unit, start, lo, hi, desc in parameters():
-        print(f"{name:<12}{unit:<7}{start:>9}  {f'[{lo}, {hi}]':<18}{desc}")
+    rows = parameters()
+    width = max(len("name"), *(len(row[0]) for row in rows)) + 2
+    print(f"{'name':<{width}}{'unit':<7}{'default':>9}  {'range':<18}description")
+    for name, unit, start, lo, hi, desc in rows:
+        print(f"{name:<{width}}{unit:<7}{start:>9}  {f'[{lo}, {hi}]':<18}{desc}")
     print("\nUnits: N/m2 is N/m per metre of wall. Values may be given with a unit: '30kN/m/m', '230mm', '14.08kN/m'.")
     return 0
