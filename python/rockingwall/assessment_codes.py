@@ -33,13 +33,6 @@ OPTIONS = {
     "--building-height": ("building_height", "m", None, "the building's height h_n (C8) and H (NTC) [m] "
                           "(default: the attachment height plus the wall's h, a wall in the top storey; for a "
                           "parapet the attachment height, the roof)"),
-    "--top-eccentricity": ("top_eccentricity", "m", 0.0, "the top load's eccentricity from the wall's "
-                           "centreline, positive toward the inner face (joists bearing on it) [m] (default 0); "
-                           "the codes only: the time histories run the model's wall"),
-    "--pointing": ("pointing", "m", 0.0, "depth of recessed mortar pointing on each face [m]: effective "
-                   "thickness b - 2 pointing (default 0); the codes only"),
-    "--e-base": ("e_base", "m", None, "the base reaction's distance from the centreline [m] (default: the face)"),
-    "--e-hinge": ("e_hinge", "m", None, "the hinge reaction's distance from the centreline [m] (default: the face)"),
     "--code-hazard": ("code_hazard", None, "site", "where the codes' ground motion comes from: 'site' (default: "
                       "the options below) or 'pga' (each case's PGA is C8's C(0) and NTC's a_g S)"),
     "--nz-Z": ("nz_Z", "1", 0.4, "NZS 1170.5 hazard factor Z (default 0.4)"),
@@ -95,17 +88,21 @@ class CodeChecks:
 
 
 def element_of(wall, values):
-    """The codes' FaceLoadedWall or Parapet of the model's wall (support, h, b, W, psi)."""
+    """The codes' FaceLoadedWall or Parapet of the model's wall: the same statics the time histories
+    run (support, h, b, W; the overburden psi W/2 at eTop, the weight-only overburden psiWeightOnly
+    W/2 at the centreline, the pointing, the reactions' positions eBaseRatio and eHingeRatio of t/2)."""
     p = wall.params
-    support = int(p["support"])
-    if support == SUPPORTS["parapet"]:
-        if values["top_eccentricity"] or values["e_hinge"] is not None:
-            raise ValueError("--top-eccentricity and --e-hinge: a parapet has no top load and no hinge")
-        return Parapet(h=p["h"], b=p["b"], W=p["W"], pointing=values["pointing"], e_base=values["e_base"])
-    load = p["psi"] * p["W"] / 2.0   # psi = 2 P / W
-    loads = (TopLoad(load, values["top_eccentricity"]),) if load > 0 or values["top_eccentricity"] else ()
-    return FaceLoadedWall(h=p["h"], b=p["b"], W=p["W"], top_loads=loads, pointing=values["pointing"],
-                          e_base=values["e_base"], e_hinge=values["e_hinge"])
+    pointing = p.get("pointing", 0.0)
+    half_t = (p["b"] - 2.0 * pointing) / 2.0
+    e_base = p.get("eBaseRatio", 1.0) * half_t
+    if int(p["support"]) == SUPPORTS["parapet"]:
+        if p.get("eTop", 0.0) or p.get("psiWeightOnly", 0.0):
+            raise ValueError("--e-top, --psi-weight-only: a parapet has no top load")
+        return Parapet(h=p["h"], b=p["b"], W=p["W"], pointing=pointing, e_base=e_base)
+    loads = tuple(TopLoad(ratio * p["W"] / 2.0, e) for ratio, e in  # psi = 2 P / W
+                  ((p["psi"], p.get("eTop", 0.0)), (p.get("psiWeightOnly", 0.0), 0.0)) if ratio > 0)
+    return FaceLoadedWall(h=p["h"], b=p["b"], W=p["W"], top_loads=loads, pointing=pointing,
+                          e_base=e_base, e_hinge=p.get("eHingeRatio", 1.0) * half_t)
 
 
 def heights(wall, values):
@@ -138,8 +135,8 @@ FLAG_OF = {"Z": "--nz-Z", "soil class": "--nz-soil", "R": "--nz-R", "N": "--nz-N
            "topography": "--ntc-topography", "FC": "--ntc-FC", "q": "--ntc-q", "T1": "--ntc-T1",
            "H": "--building-height", "z": "--attachment-height", "h_i": "--attachment-height",
            "h_n": "--building-height", "S_X1": "--asce-SX1", "storey": "--asce-storey",
-           "top load eccentricity": "--top-eccentricity", "pointing depth": "--pointing", "e_base": "--e-base",
-           "e_hinge": "--e-hinge"}
+           "top load eccentricity": "--e-top", "pointing depth": "--pointing", "e_base": "eBaseRatio",
+           "e_hinge": "eHingeRatio"}
 
 
 def checks_by_hazard(wall, codes, values, pgas=(), given=()):
