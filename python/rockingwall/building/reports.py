@@ -9,6 +9,13 @@ def _collapse(s):
     return f"collapsed at {s.t_collapse_s:.2f} s" if s.collapsed else "standing"
 
 
+# what the floor's peak acceleration is, said wherever it is printed: above the ground storey it
+# carries the jolt of the walls' impacts through the stiff tie and grows with the tie's stiffness
+FLOOR_ACC_CAVEAT = ("the floor's peak acceleration above the ground carries the jolt of the walls' impacts "
+                    "through the tie and grows with the tie's stiffness: an upper bound, not a design value "
+                    "(docs/your-building.md, \"Tie\")")
+
+
 def table(building, results):
     """The building echoed with units, the scene, then one row per storey and record."""
     lines = [building.describe(), scenes.building(building).text(), "",
@@ -23,6 +30,8 @@ def table(building, results):
                          f"{s.diaphragm_peak_m * 1e3:>16.1f}{s.base_peak_acc_m_s2 / 9.81:>15.3f}  {_collapse(s)}")
     lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
                  "floor acc: the floor the wall stands on, absolute")
+    if len(building.storeys) > 1 or not building.rigid_in_plane:
+        lines.append(f"warning: {FLOOR_ACC_CAVEAT}")
     return "\n".join(lines)
 
 
@@ -32,6 +41,7 @@ def to_json(building, results):
     base_peak_acc_m_s2, and also delta_u_m, s1_over_Delta_u, impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
+                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_CAVEAT},
                    "runs": [r.to_dict() for r in results]})
 
 
