@@ -95,7 +95,10 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     rw_linear_input in;
     rw_engine_step_report step;
     int rc;
-    if (S->engine_state == 0 && S->P.support == RW_PARAPET) S->engine_state = -1;
+    if (S->P.support == RW_PARAPET) {
+        snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+        return FMU_NOT_EXACT;
+    }
     if (S->engine_state == 0) {
         S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
         if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */
