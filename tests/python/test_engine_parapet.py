@@ -101,3 +101,14 @@ def test_command_line_leaves_a_stocky_parapet_to_fmi2sim_and_says_so():
     with contextlib.redirect_stdout(buf):
         main(["run", "--wall", "paper1", "--support", "parapet", "--h", "1.0", "--pga", "0.2", "elcentro"])
     assert "solved by fmi2sim (a parapet with b/h > 0.1" in buf.getvalue()
+
+
+def test_assess_names_fmi2sim_for_a_stocky_parapet(tmp_path):
+    import contextlib
+    import io
+    from rockingwall.cli import main
+    buf = io.StringIO()
+    with contextlib.redirect_stdout(buf):
+        main(["assess", "--wall", "paper1", "--support", "parapet", "--h", "1.0", "elcentro", "--pga", "0.1",
+              "--ensemble", "0", "--out", str(tmp_path / "assess")])
+    assert "solved by fmi2sim (a parapet with b/h > 0.1" in buf.getvalue()
