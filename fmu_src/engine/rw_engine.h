@@ -22,11 +22,16 @@ typedef struct {
 } rw_linear_input;
 
 /* error codes of rw_engine_run (0 = ok) */
+/* The parapet (support 1) runs in Housner's small-rotation form, whose peaks stay within 1 % of the
+ * nonlinear block's up to this b/h (docs/engine.md "The parapet"); stockier parapets are refused
+ * (RW_ENGINE_UNSUPPORTED) and stay on CVODE. */
+#define RW_ENGINE_PARAPET_MAX_B_OVER_H 0.1
+
 enum {
     RW_ENGINE_OK = 0,
     RW_ENGINE_BAD_ARGUMENT = 1,   /* NULL pointer, bad record or grid, bad option */
     RW_ENGINE_BAD_PARAMETERS = 2, /* rw_params_validate refused them */
-    RW_ENGINE_UNSUPPORTED = 3,    /* the parapet, or a region the engine cannot decompose */
+    RW_ENGINE_UNSUPPORTED = 3,    /* a parapet stockier than the small-rotation limit, or a region the engine cannot decompose */
     RW_ENGINE_ZENO = 4,           /* too many events at one instant (result holds the run so far) */
     RW_ENGINE_NO_MEMORY = 5
 };

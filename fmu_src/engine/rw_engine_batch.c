@@ -147,11 +147,9 @@ int rw_engine_run(const rw_params *p, const rw_record *rec, const rw_engine_opti
     if (rc) return rc;
     e = rw_engine_new(p, res->message, sizeof res->message);
     if (!e) {
-        if (p->support == RW_PARAPET && !rw_params_validate(p, res->message, sizeof res->message)) {
-            snprintf(res->message, sizeof res->message,
-                     "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+        if (!rw_params_validate(p, res->message, sizeof res->message) &&
+            rwe_parapet_beyond_small_rotation(p, res->message, sizeof res->message))
             return RW_ENGINE_UNSUPPORTED;
-        }
         return strstr(res->message, "memory") ? RW_ENGINE_NO_MEMORY : RW_ENGINE_BAD_PARAMETERS;
     }
     if (o->max_events_per_instant > 0) e->max_same_instant = o->max_events_per_instant;

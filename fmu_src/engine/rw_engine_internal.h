@@ -238,6 +238,11 @@ static inline int rwe_q_fixes_region(const rw_engine *e, const rw_span *sp)
 #define rwe_quiet_segment FMU_SYMBOL(rwe_quiet_segment)
 #define rwe_begin FMU_SYMBOL(rwe_begin)
 #define rwe_fill_outputs FMU_SYMBOL(rwe_fill_outputs)
+#define rwe_parapet_beyond_small_rotation FMU_SYMBOL(rwe_parapet_beyond_small_rotation)
+
+/* ---- set-up (rw_engine_object.c) ---- */
+/* 1 (msg filled) for a parapet stockier than RW_ENGINE_PARAPET_MAX_B_OVER_H, else 0 */
+RWE_INTERNAL int rwe_parapet_beyond_small_rotation(const rw_params *p, char *msg, size_t n);
 
 /* ---- regions (rw_engine_regions.c) ---- */
 /* The region the state x (moving along dq_sel) is in, under the regime m: its cache entry, the

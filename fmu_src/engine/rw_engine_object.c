@@ -37,6 +37,19 @@ static double rocking_rate(const rw_engine *e)
     return sqrt(e->D.p2) * RW_PHASE_PER_SUBSTEP / 0.25;
 }
 
+/* The parapet is solved in Housner's small-rotation form (rw_engine_regions.c): a block stockier
+ * than h/b = 1/RW_ENGINE_PARAPET_MAX_B_OVER_H, where that form's peaks depart from the nonlinear
+ * block's by more than 1 % (docs/engine.md "The parapet"), is refused and stays on CVODE. */
+int rwe_parapet_beyond_small_rotation(const rw_params *p, char *msg, size_t n)
+{
+    if (p->support != RW_PARAPET || p->b <= RW_ENGINE_PARAPET_MAX_B_OVER_H * p->h) return 0;
+    snprintf(msg, n,
+             "the parapet's b/h = %.4g is beyond the engine's small-rotation form (b/h <= %g, where its peaks stay "
+             "within 1 %% of Housner's nonlinear block): use CVODE (fmi2sim)",
+             p->b / p->h, RW_ENGINE_PARAPET_MAX_B_OVER_H);
+    return 1;
+}
+
 int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
 {
     if (!e || !p) {
@@ -44,10 +57,7 @@ int rw_engine_init(rw_engine *e, const rw_params *p, char *msg, size_t n)
         return 1;
     }
     if (rw_params_validate(p, msg, n)) return 1;
-    if (p->support == RW_PARAPET) {
-        snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
-        return 1;
-    }
+    if (rwe_parapet_beyond_small_rotation(p, msg, n)) return 1;
     memset(e, 0, sizeof *e);
     e->P = *p;
     rw_derive(p, &e->D);

@@ -176,6 +176,30 @@ static rw_cache_entry *region_1dof(rw_engine *e, const rw_regime *m, const doubl
     return c;
 }
 
+/* The parapet (support 1) in Housner's small-rotation form: theta'' = p^2 (theta - s alpha) - p^2 ag/g,
+ * the model's sin(s alpha - theta) and cos(s alpha - theta) taken as s alpha - theta and 1 (exact
+ * for a slender block; docs/engine.md "The parapet" gives where it departs from the FMU's
+ * nonlinear block). Mode 0 = q1 = theta (unstable: lam = -p^2), mode 1 = q2 - q1 = 0 (slaved);
+ * at rest (base closed) nothing moves. */
+static rw_cache_entry *region_parapet(rw_engine *e, const rw_regime *m, double g0[2])
+{
+    const double key[4] = {0, 0, 0, 0};
+    const int closed = m->closed_b;
+    rw_cache_entry *c = cache_find(e, closed, 0, key);
+    g0[0] = closed ? 0.0 : -e->D.p2 * m->side_b * e->D.alpha;
+    g0[1] = 0.0;
+    if (!c) {
+        rw_modes2 E;
+        identity_modes(&E, 1.0, -1.0);
+        if (!closed) {
+            E.lam[0] = -e->D.p2;
+            E.ga[0] = -e->D.p2 / e->P.g;
+        }
+        c = cache_add(e, closed, 0, key, &E);
+    }
+    return c;
+}
+
 /* Closed rigid hinges (docs/model.md "Rigid hinges"): base closed, mid open: q1 = 0 and row 2
  * alone; mid closed, base open: q1 = q2 = theta (mode 1 = q2 - q1 = 0); both closed: rest. */
 static rw_cache_entry *region_closed(rw_engine *e, const rw_regime *m, double g0[2])
@@ -217,6 +241,7 @@ rw_cache_entry *rwe_region_of(rw_engine *e, const rw_regime *m, const double x[R
     rw_cache_entry *ce;
     aq->valid = 0;
     if (e->P.support == RW_SIMPLY_SUPPORTED) return region_1dof(e, m, x, dq_sel, g0);
+    if (e->P.support == RW_PARAPET) return region_parapet(e, m, g0);
     e->law->moments(&e->D, m->side_b, m->side_m, x, dq_sel, Q, J);
     c[0] = Q[0] - J[0][0] * x[0] - J[0][1] * x[1];
     c[1] = Q[1] - J[1][0] * x[0] - J[1][1] * x[1];

@@ -16,6 +16,8 @@ from .records import G_STD
 from .wall import Wall
 
 ENGINES = ("exact", "fmi2sim", "fmpy")
+PARAPET_ON_CVODE = (f"fmi2sim (a parapet with b/h > {engine_module.PARAPET_MAX_B_OVER_H}: beyond the exact "
+                    "engine's small-rotation form)")
 TAIL_S = 0.0  # the run ends with the record; a free-vibration tail is asked for with `tail`
 
 
@@ -81,7 +83,9 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
     grid = output_grid(float(record.t[0]), t_end, output_interval)
     if diaphragm is not None:
         return _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie)
-    run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy}[engine]
+    if engine == "exact" and not engine_module.covers(wall.params):
+        engine = PARAPET_ON_CVODE  # beyond the engine's small-rotation form: said in the result
+    run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy, PARAPET_ON_CVODE: _fmi2sim}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
     return Result(wall, record.name, engine, peak_s1, peak_s2, engine_module.peak_F_top(wall.params, peak_s2),

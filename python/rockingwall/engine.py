@@ -94,6 +94,17 @@ class _Result(ctypes.Structure):
                 ("impact_cap", ctypes.c_size_t), ("message", ctypes.c_char * 256)]
 
 
+# rw_engine.h's RW_ENGINE_PARAPET_MAX_B_OVER_H: the parapet runs on the engine in Housner's
+# small-rotation form up to this b/h, where its peaks stay within 1 % of the nonlinear block's
+PARAPET_MAX_B_OVER_H = 0.1
+
+
+def covers(params):
+    """True where the engine solves the wall: every support but a parapet stockier than
+    PARAPET_MAX_B_OVER_H, which stays on CVODE (fmi2sim)."""
+    return int(params["support"]) != 1 or float(params["b"]) <= PARAPET_MAX_B_OVER_H * float(params["h"])
+
+
 class EngineError(RockingWallError, RuntimeError):
     """The engine refused or could not finish a run: its code and message."""
 

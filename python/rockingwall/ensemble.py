@@ -137,6 +137,10 @@ def member_walls(params, factors, storey=0):
 
 def wall_members(params, record, ensemble, t_end):
     """The ensemble of a wall on its own (the paper's scene): one C call for every member."""
+    if not engine.covers(params):
+        raise ValueError(f"the ensemble runs on the exact engine, which takes parapets up to b/h = "
+                         f"{engine.PARAPET_MAX_B_OVER_H} (its small-rotation form); this one has b/h = "
+                         f"{params['b'] / params['h']:.3g}: run it without an ensemble (--ensemble 0)")
     factors = ensemble.factors()
     walls = member_walls(params, factors)
     fixed = {k: v for k, v in params.items() if k not in walls}

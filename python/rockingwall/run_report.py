@@ -19,6 +19,8 @@ def table(wall, results):
             spread = " / ".join("collapse" if v == float("inf") else f"{v * 1e3:.0f}" for v in e.s1_percentiles)
             line += f"  {e.collapse_probability:>11.2f}  {spread}" + ("  FLIPS" if e.flips else "")
         lines.append(line.rstrip())
+    engines = sorted({r.engine for r in results if r.engine != "exact"})
+    lines += [f"solved by {name}" for name in engines]
     if ensemble:
         e = next(r.ensemble for r in results if r.ensemble is not None)
         lines.append(f"ensemble: {e.size} runs per record within the inputs' uncertainty; FLIPS: the nominal "

@@ -105,7 +105,7 @@ def test_quiet_segments_take_the_general_path_s_motion(law, kd):
     (dict(t=[0.0, 1.0, 1.0], ag=[0.0, 0.0, 0.0]), 1),
     (dict(t=[0.0, 1.0], ag=[0.0, math.nan]), 1),
     (dict(t=[0.0, 1.0], ag=[0.0, 1.0], t_end=-1.0), 1),
-    (dict(t=[0.0, 1.0], ag=[0.0, 1.0], support=1), 3),
+    (dict(t=[0.0, 1.0], ag=[0.0, 1.0], support=1, b=0.5, h=1.0), 3),  # a stocky parapet
     (dict(t=[0.0, 1.0], ag=[0.0, 1.0], b=3.0, h=2.0), 2),
     (dict(t=[0.0, 1.0], ag=[0.0, 1.0], t_out=[0.5, 0.2]), 1),
 ])
@@ -150,6 +150,6 @@ def test_command_line_run_matches_the_binding(build_dir, workdir):
     got = json.loads(proc.stdout)
     r = rw_engine.run(sig.t, sig.a, t_end=30.0, Kd=5e4, hingeLaw=3)
     assert got["peak_s1"] == r.peak_s1 and got["impacts"] == r.impacts
-    bad = subprocess.run([str(build_dir / "rwengine"), "--input", str(csv), "--set", "support=1"], capture_output=True,
-                         text=True, timeout=60)
+    bad = subprocess.run([str(build_dir / "rwengine"), "--input", str(csv), "--set", "support=1", "--set", "b=0.5",
+                          "--set", "h=1.0"], capture_output=True, text=True, timeout=60)
     assert bad.returncode == 2 and "parapet" in bad.stderr

@@ -2,8 +2,9 @@
  *
  * Inputs held or ramped over a communication step are exactly linear, and every support / hinge
  * law but the parapet is piecewise linear, so the step is exact: it does not depend on the
- * tolerance the master passes (cs_cvode.c's CVODE does). The parapet's nonlinear Housner block
- * returns FMU_NOT_EXACT and stays on CVODE. The engine applies the model's own event update
+ * tolerance the master passes (cs_cvode.c's CVODE does). The FMU's parapet is Housner's nonlinear
+ * block (the engine solves its small-rotation form only): it returns FMU_NOT_EXACT and stays on
+ * CVODE. The engine applies the model's own event update
  * (rw_event_update) and collapse test, so the FMU's outputs (impacts, collapsed, condition,
  * dissipated) are the ones the CVODE path gives. One difference: CVODE runs RW_TERMINATE_DELAY
  * past a collapse before terminating; here the step ends at the collapse itself. */
@@ -143,6 +144,10 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     rw_engine_step_report step;
     double rec_slope, rec_next;
     int rc;
+    if (S->P.support == RW_PARAPET) {
+        snprintf(msg, n, "the parapet (support = 1, Housner's nonlinear block) is not covered by the exact engine: use CVODE");
+        return FMU_NOT_EXACT;
+    }
     if (S->engine_state == 0) {
         S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
         if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */

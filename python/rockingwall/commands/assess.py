@@ -22,9 +22,9 @@ import sys
 
 from tqdm import tqdm
 
-from .. import (assessment, assessment_building, assessment_codes, assessment_report, intensity, limits, records,
-               scenes, strict_json, units)
-from ..api import ENGINES
+from .. import (assessment, assessment_building, assessment_codes, assessment_report, engine, intensity, limits,
+               records, scenes, strict_json, units)
+from ..api import ENGINES, PARAPET_ON_CVODE
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
@@ -162,6 +162,8 @@ def wall_study(args):
         head.append(("diaphragm stiffness K_d: " if diaphragm else "K_d: ") + ", ".join(map(units.format_kd, kds)))
     head += [f"Delta_u = {wall.delta_u * 1e3:.1f} mm; limit states: " + "; ".join(s.describe() for s in states),
              scene]
+    if args.engine == "exact" and diaphragm is None and not engine.covers(wall.params):
+        head.append(f"solved by {PARAPET_ON_CVODE}")
 
     def run(lvs, ensemble):
         return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
