@@ -11,7 +11,6 @@ cs_i; no Rayleigh damping. The Bouc-Wen shape and pinching are the building's
 (description.Building.hysteresis), as the scene solver's, so both run the same law."""
 import math
 
-from .description import FMU_HYSTERESIS_NAMES
 from .scene import Scene, WallSpec
 
 RIGID_STOREY_K = 1e11       # N/m per m: the in-plane walls of a storey taken as rigid
@@ -22,7 +21,7 @@ DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
 def building_start_values(building):
     """(Real, Integer) start values of the Building FMU for a description.Building."""
     n = len(building.storeys)
-    real = {FMU_HYSTERESIS_NAMES[k]: v for k, v in building.hysteresis().items()}
+    real = building.fmu_hysteresis()
     real.update(rayleighMass=0.0, rayleighStiffness=0.0)
     for i, s in enumerate(building.storeys, 1):
         d = s.diaphragm

@@ -120,6 +120,10 @@ class Building:
         """The diaphragms' one Bouc-Wen shape and pinching (Diaphragm.hysteresis)."""
         return self.storeys[0].diaphragm.hysteresis()
 
+    def fmu_hysteresis(self):
+        """hysteresis() by the Building FMUs' parameter names (FMU_HYSTERESIS_NAMES)."""
+        return {FMU_HYSTERESIS_NAMES[k]: v for k, v in self.hysteresis().items()}
+
     @property
     def rigid_in_plane(self):
         return self.storeys[0].in_plane is None

@@ -101,5 +101,4 @@ def _array(values):
 
 def write_result(r, path):
     """The child's result arrays (and collapsed_at) as strict JSON (NaN written as null), for run_child."""
-    with open(path, "w") as fh:
-        strict_json.dump({k: (np.asarray(v).tolist() if v is not None else None) for k, v in r.items()}, fh)
+    strict_json.write({k: (np.asarray(v).tolist() if v is not None else None) for k, v in r.items()}, path)
