@@ -87,7 +87,7 @@ rw_wine_test(win64_test_fmu_state_dg test_fmu_state_dg.exe)
 rw_wine_test(win64_test_engine test_engine.exe)
 rw_wine_test(win64_test_physics_dynamics test_physics_dynamics.exe ${CMAKE_BINARY_DIR}/tests/c/derive_equations.json)
 set_tests_properties(win64_test_physics_dynamics PROPERTIES FIXTURES_REQUIRED "wine_prefix;derive_json")
-foreach(_unit hinge_laws indicators events)
+foreach(_unit hinge_laws indicators events rigid_tie)
   rw_wine_test(win64_test_physics_${_unit} test_physics_${_unit}.exe)
 endforeach()
 

@@ -37,7 +37,7 @@ MODELS = {
         description="Unreinforced masonry wall in out-of-plane rocking: parapet, simply supported, "
                     "or two rigid bodies with a flexible diaphragm spring at the top (2DOF)",
         sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_indicators.c", "rw_outputs.c",
-                 "rw_events.c", "rw_engine_indicators.c", "rw_engine_search.c", "rw_engine_peaks.c",
+                 "rw_events.c", "rw_rigid_tie.c", "rw_engine_indicators.c", "rw_engine_search.c", "rw_engine_peaks.c",
                  "rw_engine_events.c", "rw_engine_resolve.c", "rw_engine_band.c", "rw_engine_stepper.c",
                  "rw_engine_object.c", "rw_engine_regions.c", "rw_engine_batch.c", "rw_model.c",
                  "cs_exact.c", "rw_ground_motion.c"] + SHARED_SOURCES,

@@ -209,6 +209,9 @@ def matrix():
                   Case(f"{t} er=1 600 s", "flexibleTop", law, er=1.0, duration=600.0),
                   Case(f"{t} 1e-6 g rtol=1e-10", "flexibleTop", law, amp_g=1e-6, rtol=1e-10,
                        expect=expectation("flexibleTop", law, 1e-6))]
+    for law in ("semiRigidPaper", "dohertyHinge"):  # with semiRigidHinge's above: every law a stiff tie is held for
+        cases.append(Case(f"{label('flexibleTop', law)} Kd=1e12 El Centro x0.5", "flexibleTop", law, Kd=1e12,
+                          record="elcentro", amp_g=0.5, duration=60.0))
     cases += free_rocking()
     return cases
 

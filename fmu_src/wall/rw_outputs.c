@@ -79,6 +79,12 @@ double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX])
 double rw_F_base(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX], const double dx[RW_NX])
 {
+    return rw_F_base_given_top(p, d, m, in, x, dx, rw_F_top(p, in, x));
+}
+
+double rw_F_base_given_top(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                           const double x[RW_NX], const double dx[RW_NX], double F_top)
+{
     const double m_wall = p->W / p->g, m_over = d->Wd / p->g;
     switch (p->support) {
     case RW_PARAPET: { /* one block, its centroid at R from the pivot: x_G'' = R cos(s a - th) th'' + R sin(s a - th) th'^2 */
@@ -90,7 +96,7 @@ double rw_F_base(const rw_params *p, const rw_derived *d, const rw_regime *m, co
                                  Base and top support together: the top's reaction is not split off */
         return -(m_wall + m_over) * in->ag - m_wall * p->h / 4.0 * dx[2];
     default: /* c . q'' with c = -pa */
-        return -(m_wall + m_over) * in->ag + d->pa[0] * dx[2] + d->pa[1] * dx[3] - rw_F_top(p, in, x);
+        return -(m_wall + m_over) * in->ag + d->pa[0] * dx[2] + d->pa[1] * dx[3] - F_top;
     }
 }
 

@@ -289,7 +289,24 @@ double rw_F_top(const rw_params *p, const rw_input *in, const double x[RW_NX]);
  * the bodies and the overburden (docs/model.md "Base force"); dx = rw_derivatives(x). */
 double rw_F_base(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                  const double x[RW_NX], const double dx[RW_NX]);
+/* The same with the top's force F_top given (the rigid tie's reaction, rw_rigid_tie_motion) */
+double rw_F_base_given_top(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                           const double x[RW_NX], const double dx[RW_NX], double F_top);
 int rw_condition(const rw_params *p, const rw_regime *m);
+
+/* A stiff tie held rigid (rw_rigid_tie.c) ---------------------------------------------------------
+ * omega^2 of the wall's stiffest mode without the spring over that of the tie's own mode. */
+double rw_tie_stiffness_ratio(const rw_params *p, const rw_derived *d);
+/* Below this ratio the tie is held rigid: the answers differ by about the ratio (relative), less
+ * than the tolerance integrators are run at (fmi2sim's default rtol is 1e-8) */
+#define RW_RIGID_TIE_RATIO 1e-5
+/* 1 if a flexible-top wall may move with its tie held rigid from x on: a law without rest states,
+ * the ratio below RW_RIGID_TIE_RATIO, the far end still (u_top = 0) and the top at rest there
+ * (q1 + q2 = 0, dq1 + dq2 = 0) */
+int rw_tie_holds_rigid(const rw_params *p, const rw_derived *d, const rw_input *in, const double x[RW_NX]);
+/* The derivatives with the tie held rigid (q2 = -q1), and the tie's force F_top (the reaction) */
+void rw_rigid_tie_motion(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                         const double x[RW_NX], double dx[RW_NX], double *F_top);
 
 /* Event rules (rw_events.c) -------------------------------------------------------------------- */
 typedef void (*rw_log_fn)(void *ctx, const char *message);

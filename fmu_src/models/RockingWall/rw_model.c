@@ -85,6 +85,18 @@ static void view(rw_data *S, int initializing, rw_regime *m, double x[RW_NX])
     if (initializing) rw_init_regime(&S->P, &S->D, &S->in, x, m, NULL, NULL);
 }
 
+/* The derivatives and the tie's force, with the tie held rigid where the instance does so */
+static double motion(const rw_data *S, const rw_regime *m, const double x[RW_NX], double dx[RW_NX])
+{
+    double F_top;
+    if (S->tie_rigid) {
+        rw_rigid_tie_motion(&S->P, &S->D, m, &S->in, x, dx, &F_top);
+        return F_top;
+    }
+    rw_derivatives(&S->P, &S->D, m, &S->in, x, dx);
+    return rw_F_top(&S->P, &S->in, x);
+}
+
 static int state_index(unsigned vr)
 {
     switch (vr) {
@@ -100,11 +112,11 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
 {
     rw_data *S = (rw_data *)M;
     rw_regime m;
-    double x[RW_NX], dx[RW_NX];
+    double x[RW_NX], dx[RW_NX], F_top;
     size_t i;
     (void)time;
     view(S, initializing, &m, x);
-    rw_derivatives(&S->P, &S->D, &m, &S->in, x, dx);
+    F_top = motion(S, &m, x, dx);
     for (i = 0; i < n; i++) {
         const rw_param_info *param = rw_param_by_vr(vr[i]);
         const int k = state_index(vr[i]);
@@ -116,8 +128,8 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
         case RW_VR_u_top: v[i] = S->in.u_top; break;
         case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
         case RW_VR_s2: v[i] = rw_s2(&S->P, x); break;
-        case RW_VR_F_top: v[i] = rw_F_top(&S->P, &S->in, x); break;
-        case RW_VR_F_base: v[i] = rw_F_base(&S->P, &S->D, &m, &S->in, x, dx); break;
+        case RW_VR_F_top: v[i] = F_top; break;
+        case RW_VR_F_base: v[i] = rw_F_base_given_top(&S->P, &S->D, &m, &S->in, x, dx, F_top); break;
         case RW_VR_energy: v[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
         case RW_VR_P_ground: v[i] = rw_ground_power(&S->P, &S->D, &m, &S->in, x); break;
         case RW_VR_dissipated: v[i] = S->dissipated; break;
@@ -167,6 +179,10 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
         S->ag_scale = value;
     } else { /* RW_VR_u_top, the only other settable Real */
         S->in.u_top = value;
+        if (value != 0.0 && S->tie_rigid) {
+            S->tie_rigid = 0;
+            physics_log(S, "u_top is driven: the tie is no longer held rigid, its own mode is integrated");
+        }
     }
     return 0;
 }
@@ -252,6 +268,18 @@ static void check_collapse(rw_data *S)
     S->log->warning(S->log->ctx, buf);
 }
 
+/* A tie far stiffer than the wall is held rigid (rw_rigid_tie.c): say so, with the ratio */
+static void hold_stiff_tie(rw_data *S)
+{
+    char buf[512];
+    S->tie_rigid = rw_tie_holds_rigid(&S->P, &S->D, &S->in, S->x);
+    if (!S->tie_rigid) return;
+    snprintf(buf, sizeof buf, "the tie (Kd = %g N/m per m) is held rigid (q2 = -q1, F_top its reaction): the wall's "
+             "stiffest mode has %.3g of its omega^2, below %g; the answer differs by about that ratio and the tie's "
+             "oscillation is not integrated", S->P.Kd, rw_tie_stiffness_ratio(&S->P, &S->D), RW_RIGID_TIE_RATIO);
+    physics_log(S, buf);
+}
+
 static int exit_init(void *M, double time, const fmu_logger *log, char *msg, size_t n)
 {
     rw_data *S = (rw_data *)M;
@@ -263,6 +291,7 @@ static int exit_init(void *M, double time, const fmu_logger *log, char *msg, siz
     update_ground(S);
     rw_derive(&S->P, &S->D);
     rw_init_regime(&S->P, &S->D, &S->in, S->x, &S->regime, physics_log, S);
+    hold_stiff_tie(S);
     S->impacts = 0;
     S->collapsed = 0;
     S->dissipated = 0.0;
@@ -284,7 +313,7 @@ static void set_states(void *M, const double x[])
 static void derivatives(void *M, double dx[])
 {
     rw_data *S = (rw_data *)M;
-    rw_derivatives(&S->P, &S->D, &S->regime, &S->in, S->x, dx);
+    motion(S, &S->regime, S->x, dx);
 }
 
 static void event_indicators(void *M, int initializing, double z[])
