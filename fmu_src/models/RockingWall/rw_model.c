@@ -127,7 +127,7 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
         case RW_VR_agScale: v[i] = S->ag_scale; break;
         case RW_VR_u_top: v[i] = S->in.u_top; break;
         case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
-        case RW_VR_s2: v[i] = rw_s2(&S->P, x); break;
+        case RW_VR_s2: v[i] = S->tie_rigid ? F_top / S->P.Kd : rw_s2(&S->P, x); break; /* held: the tie's deflection */
         case RW_VR_F_top: v[i] = F_top; break;
         case RW_VR_F_base: v[i] = rw_F_base_given_top(&S->P, &S->D, &m, &S->in, x, dx, F_top); break;
         case RW_VR_energy: v[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
