@@ -262,6 +262,10 @@ void rw_derivatives(const rw_params *p, const rw_derived *d, const rw_regime *m,
     }
     default: { /* flexibleTop, Eq. 3.1: M q'' + K q = p + f_u + Q(q) */
         double F[2], Q[2], r[2], a[2];
+        if (m->tie_held) {
+            rw_rigid_tie_motion(p, d, m, in, x, dx, &F[0]);
+            return;
+        }
         load(d, in, F);
         if (rw_is_rigid(p) && (m->closed_b || m->closed_m)) {
             if (m->closed_b && m->closed_m) {
@@ -304,6 +308,10 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_regime *
     if (p->support == RW_SIMPLY_SUPPORTED) {
         const double Fr[2] = {d->dir[0].Fr, d->dir[1].Fr};
         *f_b = -p->W * in->ag / (2.0 * p->g) - asymmetry(Fr);
+        return;
+    }
+    if (m->tie_held && m->closed_b && m->closed_m) {
+        rw_rigid_tie_closed_forces(d, in, f_b, f_m);
         return;
     }
     load(d, in, F);

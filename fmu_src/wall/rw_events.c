@@ -60,6 +60,7 @@ static void close_base(const rw_params *p, rw_regime *m, double x[RW_NX])
 {
     m->closed_b = 1;
     x[0] = x[2] = 0.0;
+    if (m->tie_held) m->closed_m = 1; /* q2 = -q1: the mid-height hinge rests with the base */
     if (p->support != RW_FLEXIBLE_TOP || m->closed_m) x[1] = x[3] = 0.0;
 }
 
@@ -70,6 +71,22 @@ static void close_mid(rw_regime *m, double x[RW_NX])
     x[3] = x[2];
 }
 
+/* A held tie's rigid hinges rest and open together: when the mechanism's load passes its
+ * capacity (rw_rigid_tie_closed_forces), the base to that side, the mid-height hinge to the other */
+static int open_held(const rw_derived *d, rw_regime *m, const rw_input *in, double cb, rw_log_fn log, void *ctx)
+{
+    double fb, fm;
+    if (!(m->closed_b && m->closed_m)) return 0;
+    rw_rigid_tie_closed_forces(d, in, &fb, &fm);
+    if (!(fabs(fb) > cb)) return 0;
+    m->closed_b = m->closed_m = 0;
+    m->side_b = sgni(fb);
+    m->side_m = -m->side_b;
+    logf_(log, ctx, "both hinges open (sides %+d, %+d; the tie held rigid, |f| = %g > %g)", m->side_b, m->side_m,
+          fabs(fb), cb);
+    return 1;
+}
+
 int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                    const double x[RW_NX], rw_log_fn log, void *ctx)
 {
@@ -77,6 +94,7 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const 
     double cb, cm;
     if (!rw_is_rigid(p)) return 0;
     rw_caps(p, d, &cb, &cm);
+    if (m->tie_held) return open_held(d, m, in, cb, log, ctx);
     for (iter = 0; iter < 4; iter++) {
         double fb, fm;
         int ob, om;
@@ -153,6 +171,7 @@ void rw_init_regime(const rw_params *p, const rw_derived *d, const rw_input *in,
     m->closed_b = m->closed_m = 0;
     m->side_b = m->side_m = 1;
     m->uplifted_b = 0;
+    m->tie_held = 0;
     note_uplift(p, d, rigid, m, x);
     /* base hinge: rotation q1 */
     if (x[0] != 0.0) m->side_b = sgni(x[0]);
@@ -178,6 +197,20 @@ void rw_init_regime(const rw_params *p, const rw_derived *d, const rw_input *in,
           m->side_b, m->closed_m ? "closed" : "open", m->side_m);
     rw_open_hinges(p, d, m, in, x, log, ctx);
     set_offsets(d, m, x);
+}
+
+int rw_hold_tie(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in, double x[RW_NX],
+                rw_log_fn log, void *ctx)
+{
+    const int rest = rw_is_rigid(p) && x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0 && x[3] == 0.0;
+    rw_regime held = *m;
+    if (rest) held.closed_b = held.closed_m = 1; /* undo what the free top's opening test did */
+    if (!rw_tie_holds_rigid(p, d, &held, in, x)) return 0;
+    held.tie_held = 1;
+    if (rest) rw_open_hinges(p, d, &held, in, x, log, ctx);
+    set_offsets(d, &held, x);
+    *m = held;
+    return 1;
 }
 
 /* The mid-height hinge's switch: its side changes where x = q2 - q1 crosses zero. 1 if it did. */
@@ -230,7 +263,8 @@ void rw_event_update(const rw_params *p, const rw_derived *d, rw_regime *m, cons
     /* mid hinge (flexibleTop): x = q2 - q1 crossing 0 = switch of condition, no energy loss */
     if (p->support == RW_FLEXIBLE_TOP && !(rigid && m->closed_m) && mid_switch(d, m, x, log, ctx)) {
         r->regime_changed = 1;
-        if (rigid && fabs(x[3] - x[2]) < p->restRate) {
+        /* a held tie's mid-height hinge rests only with the base (close_base) */
+        if (rigid && !m->tie_held && fabs(x[3] - x[2]) < p->restRate) {
             close_mid(m, x);
             r->states_changed = 1;
             logf_(log, ctx, "mid hinge closes (|dq2-dq1| < restRate = %g)", p->restRate);

@@ -181,6 +181,9 @@ typedef struct {
     int uplifted_b;         /* semi-rigid laws: the base has passed the end of its elastic range (the
                                law's first base breakpoint) since the last base crossing, so the next
                                crossing is a base impact that is counted (docs/model.md "Impacts") */
+    int tie_held;           /* flexibleTop: the top spring is held rigid (rw_rigid_tie.c; Model Exchange
+                               sets it after rw_init_regime, which clears it): q2 = -q1, and a
+                               rigid law's hinges rest and open together */
 } rw_regime;
 
 typedef struct {
@@ -300,13 +303,26 @@ double rw_tie_stiffness_ratio(const rw_params *p, const rw_derived *d);
 /* Below this ratio the tie is held rigid: the answers differ by about the ratio (relative), less
  * than the tolerance integrators are run at (fmi2sim's default rtol is 1e-8) */
 #define RW_RIGID_TIE_RATIO 1e-5
-/* 1 if a flexible-top wall may move with its tie held rigid from x on: a law without rest states,
- * the ratio below RW_RIGID_TIE_RATIO, the far end still (u_top = 0) and the top at rest there
- * (q1 + q2 = 0, dq1 + dq2 = 0) */
-int rw_tie_holds_rigid(const rw_params *p, const rw_derived *d, const rw_input *in, const double x[RW_NX]);
-/* The derivatives with the tie held rigid (q2 = -q1), and the tie's force F_top (the reaction) */
+/* The rigid law's hinges have no elastic range: its answer converges this many times more slowly
+ * in the ratio (measured: docs/model.md "A stiff tie held rigid"), so its ratio counts so much more */
+#define RW_RIGID_LAW_TIE_FACTOR 100.0
+/* 1 if a flexible-top wall in regime m may move with its tie held rigid from x on: the ratio (times
+ * RW_RIGID_LAW_TIE_FACTOR for the rigid law) at most RW_RIGID_TIE_RATIO, the far end still
+ * (u_top = 0), the top at rest there (q1 + q2 = 0, dq1 + dq2 = 0), and a rigid law's hinges both
+ * open or both closed */
+int rw_tie_holds_rigid(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                       const double x[RW_NX]);
+/* 1 if the Model Exchange FMU holds the tie of wall p started at rest with u_top = 0 (for hosts
+ * that compare it with the exact engine, which never holds it) */
+int rw_tie_held_from_rest(const rw_params *p);
+/* The derivatives with the tie held rigid (q2 = -q1), and the tie's force F_top (the reaction; 0
+ * at rest, where the closed hinges carry everything) */
 void rw_rigid_tie_motion(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
                          const double x[RW_NX], double dx[RW_NX], double *F_top);
+/* A held tie's rigid hinges at rest: the force the mechanism q = theta (1, -1) must resist, as
+ * rw_closed_forces gives a closed base's (scaled to the base's mean capacity, less the asymmetry),
+ * and 0 for the mid-height hinge, which opens with the base */
+void rw_rigid_tie_closed_forces(const rw_derived *d, const rw_input *in, double *f_b, double *f_m);
 
 /* Event rules (rw_events.c) -------------------------------------------------------------------- */
 typedef void (*rw_log_fn)(void *ctx, const char *message);
@@ -320,6 +336,11 @@ typedef struct {
 /* Initial regime from the start states (spec "Initial state"); slaves q2 for models 1, 2. */
 void rw_init_regime(const rw_params *p, const rw_derived *d, const rw_input *in, double x[RW_NX],
                     rw_regime *m, rw_log_fn log, void *ctx);
+/* After rw_init_regime: hold the tie from here on if rw_tie_holds_rigid allows (a rigid law at
+ * rest is first closed at both hinges and opened by the held tie's rule, whatever the free top's
+ * test did). 1 if held. (rw_events.c) */
+int rw_hold_tie(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in, double x[RW_NX],
+                rw_log_fn log, void *ctx);
 /* Event-mode update: impacts, mid-hinge switches, closing and opening of rigid hinges. */
 void rw_event_update(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in,
                      double x[RW_NX], rw_event_result *r, rw_log_fn log, void *ctx);

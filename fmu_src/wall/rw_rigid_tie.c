@@ -62,10 +62,36 @@ double rw_tie_stiffness_ratio(const rw_params *p, const rw_derived *d)
     return slow / tie;
 }
 
-int rw_tie_holds_rigid(const rw_params *p, const rw_derived *d, const rw_input *in, const double x[RW_NX])
+int rw_tie_holds_rigid(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                       const double x[RW_NX])
 {
-    return p->support == RW_FLEXIBLE_TOP && !law(p)->set_valued && in->u_top == 0.0 && x[0] + x[1] == 0.0 &&
-           x[2] + x[3] == 0.0 && rw_tie_stiffness_ratio(p, d) <= RW_RIGID_TIE_RATIO;
+    const int rigid = law(p)->set_valued;
+    const double factor = rigid ? RW_RIGID_LAW_TIE_FACTOR : 1.0;
+    return p->support == RW_FLEXIBLE_TOP && in->u_top == 0.0 && x[0] + x[1] == 0.0 && x[2] + x[3] == 0.0 &&
+           !(rigid && m->closed_b != m->closed_m) && factor * rw_tie_stiffness_ratio(p, d) <= RW_RIGID_TIE_RATIO;
+}
+
+int rw_tie_held_from_rest(const rw_params *p)
+{
+    double x[RW_NX] = {0.0, 0.0, 0.0, 0.0};
+    const rw_input still = {0.0, 0.0};
+    rw_derived d;
+    rw_regime m;
+    rw_derive(p, &d);
+    rw_init_regime(p, &d, &still, x, &m, NULL, NULL);
+    return rw_hold_tie(p, &d, &m, &still, x, NULL, NULL);
+}
+
+void rw_rigid_tie_closed_forces(const rw_derived *d, const rw_input *in, double *f_b, double *f_m)
+{
+    /* theta turning to side s turns the base to s and the mid-height hinge (x = -2 theta) to -s:
+     * the mechanism resists C(s) = cap_b(s) + 2 cap_m(-s) against the load (pa1 - pa2) ag */
+    const double C_pos = d->cap_bs[RW_SIDE(1)] + 2.0 * d->cap_ms[RW_SIDE(-1)];
+    const double C_neg = d->cap_bs[RW_SIDE(-1)] + 2.0 * d->cap_ms[RW_SIDE(1)];
+    const double mean = (C_pos + C_neg) / 2.0, asym = (C_pos - C_neg) / 2.0;
+    const double cap_b = (d->cap_bs[0] + d->cap_bs[1]) / 2.0; /* rw_caps' base capacity */
+    *f_b = ((d->pa[0] - d->pa[1]) * in->ag - asym) * cap_b / mean;
+    *f_m = 0.0;
 }
 
 /* Eq. 3.1 with q = theta (1, -1) and the spring's force replaced by the constraint's reaction
@@ -74,6 +100,11 @@ void rw_rigid_tie_motion(const rw_params *p, const rw_derived *d, const rw_regim
                          const double x[RW_NX], double dx[RW_NX], double *F_top)
 {
     double Kg[2][2], Q[2], r[2], thdd, lambda;
+    if (m->closed_b && m->closed_m) { /* at rest: the closed hinges carry the load, the tie nothing */
+        dx[0] = dx[1] = dx[2] = dx[3] = 0.0;
+        *F_top = 0.0;
+        return;
+    }
     gravity_stiffness(d, Kg);
     rw_hinge_Q(p, d, m, x, Q);
     r[0] = d->pa[0] * in->ag - Kg[0][0] * x[0] - Kg[0][1] * x[1] + Q[0];

@@ -180,6 +180,16 @@ def statics(**values):
             for name, field in (("Delta_u", "Du"), ("F_r", "Fr"), ("cap_b", "cap_b"), ("cap_m", "cap_m"))}
 
 
+def tie_held(**values):
+    """Whether the Model Exchange FMU holds this wall's tie rigid when it starts at rest with its far
+    end still (rw_tie_held_from_rest; docs/model.md "A stiff tie held rigid"): this engine never
+    does, and solves the tie's mode exactly instead."""
+    fn = library().rw_tie_held_from_rest
+    fn.argtypes = [ctypes.c_void_p]
+    fn.restype = ctypes.c_int
+    return bool(fn(ctypes.byref(params(**values))))
+
+
 def peak_F_top(params, peak_s2):
     """Peak |F_top| [N/m] of a wall on its own (u_top = 0): F_top = Kd (s2 - u_top), so Kd times
     the peak of s2 with the spring (support 3), else 0."""

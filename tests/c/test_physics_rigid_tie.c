@@ -63,20 +63,26 @@ static void test_when_held(void)
     rw_derived d;
     const double on[RW_NX] = {0.01, -0.01, 0.2, -0.2}, off[RW_NX] = {0.01, -0.009, 0.2, -0.2};
     const rw_input still = {1.0, 0.0}, driven = {1.0, 1e-6};
+    rw_regime open = {0, 0, 1, -1, 0.0, 0.0, 0, 0}, half = open;
+    half.closed_m = 1;
     rw_derive(&p, &d);
-    CHECK(rw_tie_holds_rigid(&p, &d, &still, on), "a 1e12 tie on dohertyHinge must be held");
-    CHECK(!rw_tie_holds_rigid(&p, &d, &driven, on), "not with the far end moving");
-    CHECK(!rw_tie_holds_rigid(&p, &d, &still, off), "not with the top displaced");
+    CHECK(rw_tie_holds_rigid(&p, &d, &open, &still, on), "a 1e12 tie on dohertyHinge must be held");
+    CHECK(!rw_tie_holds_rigid(&p, &d, &open, &driven, on), "not with the far end moving");
+    CHECK(!rw_tie_holds_rigid(&p, &d, &open, &still, off), "not with the top displaced");
     p.Kd = 1e5;
     rw_derive(&p, &d);
-    CHECK(!rw_tie_holds_rigid(&p, &d, &still, on), "not a soft tie");
+    CHECK(!rw_tie_holds_rigid(&p, &d, &open, &still, on), "not a soft tie");
     p = stiff_wall(RW_RIGID, 1e12);
     rw_derive(&p, &d);
-    CHECK(!rw_tie_holds_rigid(&p, &d, &still, on), "not the rigid law (its rest states)");
+    CHECK(rw_tie_holds_rigid(&p, &d, &open, &still, on), "the rigid law at 1e12");
+    CHECK(!rw_tie_holds_rigid(&p, &d, &half, &still, on), "not a rigid law with one hinge closed");
+    p.Kd = 1e10; /* its ratio counts RW_RIGID_LAW_TIE_FACTOR times: 4e-7 x 100 > 1e-5 */
+    rw_derive(&p, &d);
+    CHECK(!rw_tie_holds_rigid(&p, &d, &open, &still, on), "not the rigid law at 1e10");
     p = stiff_wall(RW_DOHERTY_HINGE, 1e12);
     p.support = RW_SIMPLY_SUPPORTED;
     rw_derive(&p, &d);
-    CHECK(!rw_tie_holds_rigid(&p, &d, &still, on), "not a wall without the spring");
+    CHECK(!rw_tie_holds_rigid(&p, &d, &open, &still, on), "not a wall without the spring");
 }
 
 /* a1 + a2 of the full model at x with the top displaced by delta rotations */
@@ -127,11 +133,71 @@ static void test_motion_on_slow_manifold(void)
             }
 }
 
+/* A held tie's rigid wall at rest opens as a mechanism q = theta (1, -1): both hinges at once, at the
+ * ground acceleration where Doherty's simply supported rigid wall opens, 4 g (b/h)(1 + 0.75 psi)
+ * (W ag/(2g) = F_r, Table 5.1 with both lever arms b/2) */
+static void test_held_rigid_law_opens_as_the_simply_supported_wall(void)
+{
+    const double psis[] = {0.0, 0.5, 2.0};
+    size_t i;
+    for (i = 0; i < sizeof psis / sizeof psis[0]; i++) {
+        rw_params p = stiff_wall(RW_RIGID, 1e12);
+        rw_derived d;
+        int sign;
+        p.psi = psis[i];
+        rw_derive(&p, &d);
+        for (sign = -1; sign <= 1; sign += 2) {
+            const double ag_open = 4.0 * p.g * p.b / p.h * (1.0 + 0.75 * p.psi);
+            const rw_input below = {sign * ag_open * (1.0 - 1e-9), 0.0}, above = {sign * ag_open * (1.0 + 1e-9), 0.0};
+            double x[RW_NX] = {0.0, 0.0, 0.0, 0.0}, dx[RW_NX], F_top;
+            const rw_input none = {0.0, 0.0};
+            rw_regime m;
+            rw_init_regime(&p, &d, &none, x, &m, NULL, NULL);
+            m.tie_held = 1;
+            CHECK(m.closed_b && m.closed_m, "psi %g: the wall starts at rest", p.psi);
+            CHECK(!rw_open_hinges(&p, &d, &m, &below, x, NULL, NULL), "psi %g, sign %d: holds just below", p.psi, sign);
+            CHECK(rw_open_hinges(&p, &d, &m, &above, x, NULL, NULL) && !m.closed_b && !m.closed_m,
+                  "psi %g, sign %d: both hinges open just above", p.psi, sign);
+            /* it turns away from the ground's acceleration, the mid-height hinge to the other side */
+            CHECK(m.side_b == -sign && m.side_m == sign, "psi %g: sides %d %d", p.psi, m.side_b, m.side_m);
+            rw_rigid_tie_motion(&p, &d, &m, &above, x, dx, &F_top);
+            CHECK(m.side_b * dx[2] >= 0.0 && dx[3] == -dx[2], "psi %g: it accelerates to its side (%g)", p.psi, dx[2]);
+        }
+    }
+}
+
+/* A slow impact of a held tie's rigid wall closes both hinges and leaves the wall at rest */
+static void test_held_rigid_law_rests_with_both_hinges(void)
+{
+    rw_params p = stiff_wall(RW_RIGID, 1e12);
+    rw_derived d;
+    rw_regime m = {0, 0, 1, -1, 0.0, 0.0, 0, 1};
+    const rw_input in = {0.0, 0.0};
+    const double v = -0.5 * p.restRate / p.er;
+    double x[RW_NX] = {-1e-13, 1e-13, v, -v};
+    rw_event_result r;
+    rw_derive(&p, &d);
+    rw_event_update(&p, &d, &m, &in, x, &r, NULL, NULL);
+    CHECK(m.closed_b && m.closed_m, "both hinges closed (%d %d)", m.closed_b, m.closed_m);
+    CHECK(x[0] == 0.0 && x[1] == 0.0 && x[2] == 0.0 && x[3] == 0.0, "at rest: %g %g %g %g", x[0], x[1], x[2], x[3]);
+    {
+        /* the mid-height hinge's root found first (its indicator's offset differs from the base's):
+         * it switches side and stays open, for the base's event just after to close both */
+        rw_regime early = {0, 0, 1, 1, 0.0, 0.0, 0, 1}; /* mid-height side +1: x = -4e-11 has crossed */
+        double y[RW_NX] = {2e-11, -2e-11, -0.2 * p.restRate, 0.2 * p.restRate};
+        rw_event_update(&p, &d, &early, &in, y, &r, NULL, NULL);
+        CHECK(!early.closed_m && !early.closed_b, "the mid-height hinge must not rest alone (%d %d)", early.closed_b,
+              early.closed_m);
+    }
+}
+
 int main(void)
 {
     test_ratio();
     test_when_held();
     test_motion_on_slow_manifold();
+    test_held_rigid_law_opens_as_the_simply_supported_wall();
+    test_held_rigid_law_rests_with_both_hinges();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }

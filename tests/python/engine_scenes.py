@@ -22,9 +22,15 @@ STATICS_SEEDS = 5000
 
 
 def engine_run(sc, **kw):
-    """The exact engine on scene `sc` (its impacts logged)."""
+    """The exact engine on scene `sc` (its impacts logged). Where the Model Exchange FMU holds a rigid
+    law's stiff tie, the scene's stiff limit, which it then answers: the simply supported rigid wall
+    (docs/model.md "A stiff tie held rigid"; the semi-rigid laws' held answers differ from the full
+    model's only by the tie's quasi-static deflection, within the comparison's tolerance)."""
     from rockingwall import engine as rw_engine
-    return rw_engine.run(sc["t"], sc["ag"], t_end=sc["t_end"], impact_log=100000, **kw, **sc["params"])
+    params = dict(sc["params"])
+    if params.get("support") == 3 and params.get("hingeLaw") == 1 and rw_engine.tie_held(**params):
+        params["support"] = 2
+    return rw_engine.run(sc["t"], sc["ag"], t_end=sc["t_end"], impact_log=100000, **kw, **params)
 
 
 def wall(rng):

@@ -132,3 +132,21 @@ def test_fmpy_holds_the_tie_in_both_fmi_versions(build_dir, version):
     exact = _exact_peak_s1(case)
     print(f"FMI {version}: peak s1 {run.peak_s1:.8g} m, exact engine {exact:.8g} m, impacts {run.impacts}")
     assert abs(run.peak_s1 - exact) <= 1e-4 * exact
+
+
+@pytest.mark.parametrize("Kd", [1e11, 1e12])
+def test_the_rigid_law_rocks_in_fmpy_at_a_stiff_tie(rockingwall_fmu, fmi2sim_exe, Kd):
+    """The rigid law at a stiff tie: fmpy gave a peak of 3e-9 m (1e11) or gave up (1e12) where the
+    wall rocks to 0.607 mm, chattering between its closed-hinge states against the tie. Held, its
+    hinges rest and open together as a mechanism, and both hosts give the stiff limit: the simply
+    supported rigid wall, which the exact engine solves."""
+    case = dataclasses.replace({c.name: c for c in sc.matrix()}["2dof-rigid Kd=1e+12"], Kd=Kd)
+    sig = sc.signal(case)
+    limit = engine.run(sig.t, sig.a, t_end=case.duration, support=2, hingeLaw=1, **case.params).peak_s1
+    run = rw_fmu.simulate(rockingwall_fmu, case.duration, sig.t, sig.a, rtol=1e-6, output_interval=0.002,
+                          **case.start_values)
+    out, steps, _, _ = _fmi2sim(fmi2sim_exe, rockingwall_fmu, case)
+    peak = float(np.max(np.abs(out["s1"])))
+    print(f"K_d {Kd:g}: fmpy {run.peak_s1:.7g} m, fmi2sim {peak:.7g} m ({steps} steps), stiff limit {limit:.7g} m")
+    assert abs(run.peak_s1 - limit) <= 1e-3 * limit
+    assert abs(peak - limit) <= 1e-3 * limit

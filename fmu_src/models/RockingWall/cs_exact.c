@@ -151,7 +151,7 @@ int rw_exact_step(void *M, double t, double h, const unsigned *slope_vr, const d
     if (S->engine_state == 0) {
         S->engine_state = rw_engine_init(engine, &S->P, msg, n) ? -1 : 1;
         if (S->engine_state > 0) rw_engine_track_dissipated(engine); /* the FMU's dissipated output */
-        if (S->engine_state > 0) S->tie_rigid = 0; /* the engine solves the tie's mode exactly, at no cost */
+        if (S->engine_state > 0) S->regime.tie_held = 0; /* the engine solves the tie's mode exactly, at no cost */
     }
     warn_held_ag(S, t, h, slope_of(RW_VR_ag, slope_vr, slope, n_in), log);
     S->ag_step_end = S->ag_input + slope_of(RW_VR_ag, slope_vr, slope, n_in) * h; /* as the CVODE path leaves it */

@@ -89,7 +89,7 @@ static void view(rw_data *S, int initializing, rw_regime *m, double x[RW_NX])
 static double motion(const rw_data *S, const rw_regime *m, const double x[RW_NX], double dx[RW_NX])
 {
     double F_top;
-    if (S->tie_rigid) {
+    if (m->tie_held) {
         rw_rigid_tie_motion(&S->P, &S->D, m, &S->in, x, dx, &F_top);
         return F_top;
     }
@@ -127,7 +127,7 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
         case RW_VR_agScale: v[i] = S->ag_scale; break;
         case RW_VR_u_top: v[i] = S->in.u_top; break;
         case RW_VR_s1: v[i] = rw_s1(&S->P, x); break;
-        case RW_VR_s2: v[i] = S->tie_rigid ? F_top / S->P.Kd : rw_s2(&S->P, x); break; /* held: the tie's deflection */
+        case RW_VR_s2: v[i] = m.tie_held ? F_top / S->P.Kd : rw_s2(&S->P, x); break; /* held: the tie's deflection */
         case RW_VR_F_top: v[i] = F_top; break;
         case RW_VR_F_base: v[i] = rw_F_base_given_top(&S->P, &S->D, &m, &S->in, x, dx, F_top); break;
         case RW_VR_energy: v[i] = rw_energy(&S->P, &S->D, &m, &S->in, x); break;
@@ -179,8 +179,8 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
         S->ag_scale = value;
     } else { /* RW_VR_u_top, the only other settable Real */
         S->in.u_top = value;
-        if (value != 0.0 && S->tie_rigid) {
-            S->tie_rigid = 0;
+        if (value != 0.0 && S->regime.tie_held) {
+            S->regime.tie_held = 0;
             physics_log(S, "u_top is driven: the tie is no longer held rigid, its own mode is integrated");
         }
     }
@@ -268,12 +268,12 @@ static void check_collapse(rw_data *S)
     S->log->warning(S->log->ctx, buf);
 }
 
-/* A tie far stiffer than the wall is held rigid (rw_rigid_tie.c): say so, with the ratio */
+/* A tie far stiffer than the wall is held rigid (rw_rigid_tie.c) from the end of initialization
+ * until u_top is set nonzero (the far end then drives the tie): say so, with the ratio */
 static void hold_stiff_tie(rw_data *S)
 {
     char buf[512];
-    S->tie_rigid = rw_tie_holds_rigid(&S->P, &S->D, &S->in, S->x);
-    if (!S->tie_rigid) return;
+    if (!rw_hold_tie(&S->P, &S->D, &S->regime, &S->in, S->x, physics_log, S)) return;
     snprintf(buf, sizeof buf, "the tie (Kd = %g N/m per m) is held rigid (q2 = -q1, F_top its reaction): the wall's "
              "stiffest mode has %.3g of its omega^2, below %g; the answer differs by about that ratio and the tie's "
              "oscillation is not integrated", S->P.Kd, rw_tie_stiffness_ratio(&S->P, &S->D), RW_RIGID_TIE_RATIO);

@@ -29,9 +29,6 @@ typedef struct {
     int collapsed;
     double terminate_time;
     double dissipated;
-    /* Model Exchange: the tie is held rigid (rw_rigid_tie.c), decided at the end of initialization
-     * and dropped for good when u_top is set nonzero (the far end then drives the tie) */
-    int tie_rigid;
     /* The ground motion the FMU reads itself (agFile, agScale; rw_ground_motion.h), so that its
      * answer does not depend on how an importer holds the input: the input `ag` (ag_input) adds
      * to it, and in.ag is their sum at `time`. */
