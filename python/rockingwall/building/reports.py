@@ -3,6 +3,7 @@ strict JSON (null, never NaN), the time histories as CSV and a plot per record."
 import numpy as np
 
 from .. import scenes, strict_json
+from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
 
 def _collapse(s):
@@ -14,6 +15,21 @@ def _collapse(s):
 FLOOR_ACC_CAVEAT = ("the floor's peak acceleration above the ground carries the jolt of the walls' impacts "
                     "through the tie and grows with the tie's stiffness: an upper bound, not a design value "
                     "(docs/your-building.md, \"Tie\")")
+
+
+# what a sensitive run's peaks mean, said wherever they are printed
+SENSITIVITY_NOTE = (f"peak_sensitivity: the largest relative change of a wall's peak s1 or s2 when the record is "
+                    f"scaled by 1 -/+ {SENSITIVITY_PERTURBATION:g} (1 where a collapse comes or goes); above "
+                    f"{SENSITIVITY_SHARE:g} the motion is sensitive (impacts through a stiff tie): its peaks are one "
+                    f"sample of a spread that no solver's tolerance narrows, not digits to trust "
+                    f"(docs/your-building.md, \"Tie\")")
+
+
+def _sensitivity_lines(results):
+    return [f"sensitive: {r.record}: a change of {SENSITIVITY_PERTURBATION:g} in the record's scale moves a peak by "
+            f"{r.peak_sensitivity:.1%}; these peaks are one sample of a spread, not digits to trust (a softer tie "
+            f"or more records give the spread: docs/your-building.md, \"Tie\")"
+            for r in results if r.sensitive]
 
 
 def table(building, results):
@@ -32,7 +48,7 @@ def table(building, results):
                  "floor acc: the floor the wall stands on, absolute")
     if len(building.storeys) > 1 or not building.rigid_in_plane:
         lines.append(f"warning: {FLOOR_ACC_CAVEAT}")
-    return "\n".join(lines)
+    return "\n".join(lines + _sensitivity_lines(results))
 
 
 def to_json(building, results):
@@ -41,7 +57,7 @@ def to_json(building, results):
     base_peak_acc_m_s2, and also delta_u_m, s1_over_Delta_u, impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
-                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_CAVEAT},
+                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_CAVEAT, "peak_sensitivity": SENSITIVITY_NOTE},
                    "runs": [r.to_dict() for r in results]})
 
 
