@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from .. import engine, scene_engine
+from . import floor_acc
 from ..errors import RockingWallError
 from ..coupling.rules import ENERGY_SHARE_MAX
 
@@ -29,7 +30,9 @@ class BuildingError(RockingWallError, RuntimeError):
 class StoreyResult:
     """One storey's wall and diaphragm: peaks [m] of s1, s2 relative to the wall's own base, Delta_u
     [m], collapse and its time [s] (None if standing), the diaphragm's peak displacement relative
-    to its supports [m], the peak absolute acceleration of the floor the wall stands on [m/s2]."""
+    to its supports [m], the peak absolute acceleration of the floor the wall stands on [m/s2]:
+    low-pass filtered at floor_acc.CUTOFF_HZ (None where not computed), and raw (which grows with
+    the tie's stiffness: the jolt of the walls' impacts)."""
     storey: int
     peak_s1_m: float
     peak_s2_m: float
@@ -39,6 +42,7 @@ class StoreyResult:
     diaphragm_peak_m: float
     base_peak_acc_m_s2: float
     impacts: int
+    base_peak_acc_raw_m_s2: float = None
 
     @property
     def s1_over_delta_u(self):
@@ -65,6 +69,8 @@ class BuildingResult:
     steps: int
     events: int
     peak_sensitivity: float = None   # the largest share a peak moved under the check; None: not run
+    floor_sample_dt_s: float = None  # the sampling of the floor's filtered acceleration; None: not computed
+    floor_resolved: bool = None      # False: even the finest sampling left the filtered peaks apart
 
     @property
     def sensitive(self):
@@ -73,6 +79,8 @@ class BuildingResult:
     def to_dict(self):
         return {"record": self.record, "solver": self.solver, "storeys": [s.to_dict() for s in self.storeys],
                 "peak_sensitivity": self.peak_sensitivity, "sensitive": self.sensitive,
+                "floor_acc": {"cutoff_hz": floor_acc.CUTOFF_HZ, "sample_dt_s": self.floor_sample_dt_s,
+                              "resolved": self.floor_resolved},
                 "energy": {"ground_work_J_per_m": self.work_ground_J_m, "damping_J_per_m": self.work_damping_J_m,
                            "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
 
@@ -142,13 +150,18 @@ def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
     return worst
 
 
-def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False):
+def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
+            filter_floor=True):
     """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
     solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
     check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
-    runs) and give the largest change of a peak (BuildingResult.peak_sensitivity)."""
+    runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
+    the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
+    base_peak_acc_m_s2 is None."""
     r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
     share = check_energy(r, record.name)
+    floor, floor_dt, resolved = (floor_acc.peaks(spec, record, t_end, rtol, r.engine) if filter_floor
+                                 else ([None] * len(wall_params_list), None, None))
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
@@ -156,23 +169,25 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
         storeys.append(StoreyResult(
             storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
-            diaphragm_peak_m=float(r.peak_diaphragm[i]), base_peak_acc_m_s2=float(r.peak_base_acc[i]),
-            impacts=int(r.impacts[i])))
+            diaphragm_peak_m=float(r.peak_diaphragm[i]),
+            base_peak_acc_m_s2=None if floor[i] is None else float(floor[i]),
+            base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i])))
     result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
-                            peak_sensitivity=peak_sensitivity(spec, record, r, t_end, rtol) if check_sensitivity else None)
+                            peak_sensitivity=peak_sensitivity(spec, record, r, t_end, rtol) if check_sensitivity else None,
+                            floor_sample_dt_s=floor_dt, floor_resolved=resolved)
     return result, r
 
 
 def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None,
-                      check_sensitivity=False):
+                      check_sensitivity=False, filter_floor=True):
     """The response of every storey of a description.Building under a Record (solver,
-    check_sensitivity: as respond's)."""
+    check_sensitivity, filter_floor: as respond's)."""
     t_out = None
     if output_interval:
         end = float(record.t[-1]) if t_end is None else float(t_end)
         t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
     params = [building.wall_parameters(i) for i in range(len(building.storeys))]
     return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver,
-                   check_sensitivity=check_sensitivity)
+                   check_sensitivity=check_sensitivity, filter_floor=filter_floor)
