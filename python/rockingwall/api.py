@@ -94,7 +94,7 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
 
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
-    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid)
+    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
                             "s2": h.s2[:, 0]})

@@ -29,7 +29,7 @@ def run_cases(building, lvs, states, ensemble=None):
     walls = storey_walls(building)
 
     def one(lv):
-        result, _ = monolithic.simulate_building(building, lv.record)
+        result, _ = monolithic.simulate_building(building, lv.record, filter_floor=False)
         members = (ens.building_members(building, lv.record, ensemble, float(lv.record.t[-1]))
                    if ensemble is not None else [None] * len(walls))
         rows = []

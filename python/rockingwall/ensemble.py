@@ -203,7 +203,7 @@ def _scene_run(spec, params, record, scale, t_end, ties):
     failed (the solver refused it or its energy balance did not close)."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
-        result, r = monolithic.respond(spec, params, member, t_end=t_end)
+        result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False)
     except (monolithic.BuildingError, RuntimeError):
         return None
     f_top = [tie * np.nan for tie in ties]  # the tie force needs the histories: not kept for members

@@ -190,8 +190,11 @@ def _ptr(a):
     return a.ctypes.data_as(ctypes.POINTER(_D)) if a is not None else None
 
 
-def _histories(n_out):
-    return [np.full((n_out, MAX_STOREYS), np.nan) if n_out else None for _ in range(4)]
+HISTORIES = ("s1", "s2", "diaphragm", "base_acc")
+
+
+def _histories(n_out, keep):
+    return [np.full((n_out, MAX_STOREYS), np.nan) if n_out and name in keep else None for name in HISTORIES]
 
 
 @functools.cache
@@ -214,12 +217,13 @@ def state_size(spec):
     return 12 * len(spec.storeys)
 
 
-def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None):
+def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, histories=HISTORIES):
     """One run of the scene from rest (or the start state x0, state_size(spec) values) under the
     record (t [s], ag [m/s2], linear between samples, the ends held), to t_end (default: the
     record's end). engine: "exact", "cvode", or None for the exact engine where it covers the
     scene and CVODES (at rtol) elsewhere; the result says which ran. Raises SceneError, or
-    ValueError for an engine name it does not know."""
+    ValueError for an engine name it does not know. histories: which of HISTORIES to keep on the
+    grid t_out (the others are None)."""
     if engine is None:
         engine = "exact" if exact_covers(spec)[0] else "cvode"
     if engine not in ENGINES:
@@ -236,7 +240,7 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None):
             raise ValueError(f"x0 has {x0.size} values; this scene has {state_size(spec)} states")
         start = np.zeros(MAX_STOREYS * 12)
         start[:x0.size] = x0
-    hist = _histories(n_out)
+    hist = _histories(n_out, histories)
     res = _Result()
     res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out = (_ptr(h) for h in hist)
     opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), _ptr(start))

@@ -125,8 +125,11 @@ def test_the_assessors_building_closes_its_energy_balance_at_0_3_g(fema, buildin
     assert r.max_work > 100.0  # J/m: the record does work
     assert result.residual_share < 0.01
     assert result.work_damping_J_m > 0 and result.event_losses_J_m > 0
-    # the floor amplifies the ground motion for the upper wall: its base moves more than the ground
-    assert result.storeys[1].base_peak_acc_m_s2 > result.storeys[0].base_peak_acc_m_s2
+    # the upper wall stands on the floor diaphragm, which moves on its own (filtered at 25 Hz: not
+    # the ground's peak); unfiltered, the tie's ringing after the impacts multiplies that peak
+    upper, ground = result.storeys[1], result.storeys[0]
+    assert abs(upper.base_peak_acc_m_s2 / ground.base_peak_acc_m_s2 - 1) > 0.01
+    assert upper.base_peak_acc_raw_m_s2 > 5 * upper.base_peak_acc_m_s2
 
 
 def test_a_run_whose_energy_does_not_close_is_an_error_not_a_result():

@@ -7,10 +7,19 @@ import math
 import numpy as np
 
 from .. import engine, scene_engine
+from . import floor_acc
 from ..errors import RockingWallError
 from ..coupling.rules import ENERGY_SHARE_MAX
 
 SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
+
+# The sensitivity check: the record scaled by 1 -/+ this, far below any record's accuracy. Impacts
+# through a stiff tie can make a building's motion sensitive: on two storeys tied at 1e9 N/m per m
+# such a change moves the peaks by several %, the same change of CVODES's tolerance does, and no
+# solver's digits then say more than the spread (docs/your-building.md, "Tie").
+SENSITIVITY_PERTURBATION = 1e-9
+# A peak that moves by more than this share under the perturbation is reported as sensitive.
+SENSITIVITY_SHARE = 0.01
 
 
 class BuildingError(RockingWallError, RuntimeError):
@@ -21,7 +30,9 @@ class BuildingError(RockingWallError, RuntimeError):
 class StoreyResult:
     """One storey's wall and diaphragm: peaks [m] of s1, s2 relative to the wall's own base, Delta_u
     [m], collapse and its time [s] (None if standing), the diaphragm's peak displacement relative
-    to its supports [m], the peak absolute acceleration of the floor the wall stands on [m/s2]."""
+    to its supports [m], the peak absolute acceleration of the floor the wall stands on [m/s2]:
+    low-pass filtered at floor_acc.CUTOFF_HZ (None where not computed), and raw (which grows with
+    the tie's stiffness: the jolt of the walls' impacts)."""
     storey: int
     peak_s1_m: float
     peak_s2_m: float
@@ -31,6 +42,7 @@ class StoreyResult:
     diaphragm_peak_m: float
     base_peak_acc_m_s2: float
     impacts: int
+    base_peak_acc_raw_m_s2: float = None
 
     @property
     def s1_over_delta_u(self):
@@ -56,9 +68,19 @@ class BuildingResult:
     residual_share: float
     steps: int
     events: int
+    peak_sensitivity: float = None   # the largest share a peak moved under the check; None: not run
+    floor_sample_dt_s: float = None  # the sampling of the floor's filtered acceleration; None: not computed
+    floor_resolved: bool = None      # False: even the finest sampling left the filtered peaks apart
+
+    @property
+    def sensitive(self):
+        return self.peak_sensitivity is not None and self.peak_sensitivity > SENSITIVITY_SHARE
 
     def to_dict(self):
         return {"record": self.record, "solver": self.solver, "storeys": [s.to_dict() for s in self.storeys],
+                "peak_sensitivity": self.peak_sensitivity, "sensitive": self.sensitive,
+                "floor_acc": {"cutoff_hz": floor_acc.CUTOFF_HZ, "sample_dt_s": self.floor_sample_dt_s,
+                              "resolved": self.floor_resolved},
                 "energy": {"ground_work_J_per_m": self.work_ground_J_m, "damping_J_per_m": self.work_damping_J_m,
                            "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
 
@@ -108,11 +130,38 @@ def check_energy(r, where):
     return share
 
 
-def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None):
+def _peaks(r):
+    """The peaks a storey reports, a collapsed wall's as infinite (a change of verdict is total)."""
+    return np.where(np.concatenate([r.collapsed, r.collapsed]), np.inf, np.concatenate([r.peak_s1, r.peak_s2]))
+
+
+def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
+    """The largest relative change of a wall's peak s1 or s2 when the record is scaled by
+    1 -/+ SENSITIVITY_PERTURBATION (the same engine as r; 1.0 where a wall's collapse changes)."""
+    base = _peaks(r)
+    worst = 0.0
+    for sign in (-1.0, 1.0):
+        other = _peaks(scene_engine.run(spec, record.t, record.ag * (1.0 + sign * SENSITIVITY_PERTURBATION),
+                                        t_end=t_end, rtol=rtol, engine=r.engine))
+        with np.errstate(invalid="ignore"):
+            change = np.where(np.isinf(base) | np.isinf(other), np.where(base == other, 0.0, 1.0),
+                              np.abs(other - base) / np.maximum(np.abs(base), 1e-12))
+        worst = max(worst, float(np.max(change)))
+    return worst
+
+
+def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
+            filter_floor=True):
     """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
-    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene."""
+    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
+    check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
+    runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
+    the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
+    base_peak_acc_m_s2 is None."""
     r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
     share = check_energy(r, record.name)
+    floor, floor_dt, resolved = (floor_acc.peaks(spec, record, t_end, rtol, r.engine) if filter_floor
+                                 else ([None] * len(wall_params_list), None, None))
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
@@ -120,19 +169,25 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
         storeys.append(StoreyResult(
             storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
-            diaphragm_peak_m=float(r.peak_diaphragm[i]), base_peak_acc_m_s2=float(r.peak_base_acc[i]),
-            impacts=int(r.impacts[i])))
+            diaphragm_peak_m=float(r.peak_diaphragm[i]),
+            base_peak_acc_m_s2=None if floor[i] is None else float(floor[i]),
+            base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i])))
     result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
-                            event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events)
+                            event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
+                            peak_sensitivity=peak_sensitivity(spec, record, r, t_end, rtol) if check_sensitivity else None,
+                            floor_sample_dt_s=floor_dt, floor_resolved=resolved)
     return result, r
 
 
-def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None):
-    """The response of every storey of a description.Building under a Record (solver: as respond's)."""
+def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None,
+                      check_sensitivity=False, filter_floor=True):
+    """The response of every storey of a description.Building under a Record (solver,
+    check_sensitivity, filter_floor: as respond's)."""
     t_out = None
     if output_interval:
         end = float(record.t[-1]) if t_end is None else float(t_end)
         t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
     params = [building.wall_parameters(i) for i in range(len(building.storeys))]
-    return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver)
+    return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver,
+                   check_sensitivity=check_sensitivity, filter_floor=filter_floor)

@@ -3,17 +3,42 @@ strict JSON (null, never NaN), the time histories as CSV and a plot per record."
 import numpy as np
 
 from .. import scenes, strict_json
+from .floor_acc import CUTOFF_HZ
+from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
 
 def _collapse(s):
     return f"collapsed at {s.t_collapse_s:.2f} s" if s.collapsed else "standing"
 
 
-# what the floor's peak acceleration is, said wherever it is printed: above the ground storey it
-# carries the jolt of the walls' impacts through the stiff tie and grows with the tie's stiffness
-FLOOR_ACC_CAVEAT = ("the floor's peak acceleration above the ground carries the jolt of the walls' impacts "
-                    "through the tie and grows with the tie's stiffness: an upper bound, not a design value "
-                    "(docs/your-building.md, \"Tie\")")
+# what the floor's peak accelerations are, said wherever they are printed
+FLOOR_ACC_NOTE = (f"base_peak_acc_m_s2: the peak absolute acceleration of the floor the wall stands on, low-pass "
+                  f"filtered at {CUTOFF_HZ:g} Hz (4th-order Butterworth, zero phase): the floor's motion walls, parts "
+                  f"and contents feel, independent of the tie's stiffness; for the ground storey the record's "
+                  f"filtered PGA (docs/your-building.md, \"Floor acceleration\")")
+FLOOR_ACC_RAW_NOTE = ("base_peak_acc_raw_m_s2: the same peak unfiltered: above the ground it carries the tie's "
+                      "ringing after each impact and grows with the tie's stiffness, so it is no design value")
+FLOOR_ACC_UNRESOLVED = ("the floor's acceleration was sampled at the finest interval tried and its filtered peak "
+                        "still depends on the sampling (floor_acc.resolved false): read it as approximate")
+
+
+# what a sensitive run's peaks mean, said wherever they are printed
+SENSITIVITY_NOTE = (f"peak_sensitivity: the largest relative change of a wall's peak s1 or s2 when the record is "
+                    f"scaled by 1 -/+ {SENSITIVITY_PERTURBATION:g} (1 where a collapse comes or goes); above "
+                    f"{SENSITIVITY_SHARE:g} the motion is sensitive (impacts through a stiff tie): its peaks are one "
+                    f"sample of a spread that no solver's tolerance narrows, not digits to trust "
+                    f"(docs/your-building.md, \"Tie\")")
+
+
+def _sensitivity_lines(results):
+    return [f"sensitive: {r.record}: a change of {SENSITIVITY_PERTURBATION:g} in the record's scale moves a peak by "
+            f"{r.peak_sensitivity:.1%}; these peaks are one sample of a spread, not digits to trust (a softer tie "
+            f"or more records give the spread: docs/your-building.md, \"Tie\")"
+            for r in results if r.sensitive]
+
+
+def _floor(s):
+    return "-" if s.base_peak_acc_m_s2 is None else f"{s.base_peak_acc_m_s2 / 9.81:.3f}"
 
 
 def table(building, results):
@@ -27,21 +52,24 @@ def table(building, results):
             s2 = "-" if s.collapsed else f"{s.peak_s2_m * 1e3:.1f}"
             ratio = "-" if s.collapsed else f"{s.s1_over_delta_u:.2f}"
             lines.append(f"{r.record[:25]:<26}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
-                         f"{s.diaphragm_peak_m * 1e3:>16.1f}{s.base_peak_acc_m_s2 / 9.81:>15.3f}  {_collapse(s)}")
+                         f"{s.diaphragm_peak_m * 1e3:>16.1f}{_floor(s):>15}  {_collapse(s)}")
     lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
-                 "floor acc: the floor the wall stands on, absolute")
-    if len(building.storeys) > 1 or not building.rigid_in_plane:
-        lines.append(f"warning: {FLOOR_ACC_CAVEAT}")
-    return "\n".join(lines)
+                 f"floor acc: the floor the wall stands on, absolute, low-pass filtered at {CUTOFF_HZ:g} Hz (the raw "
+                 "peak, which grows with the tie's stiffness, is in --json)")
+    if any(r.floor_resolved is False for r in results):
+        lines.append(f"warning: {FLOOR_ACC_UNRESOLVED}")
+    return "\n".join(lines + _sensitivity_lines(results))
 
 
 def to_json(building, results):
     """{"scene", "building", "runs": [{"record", "solver", "storeys": [...], "energy"}]}; each
     storey with peak_s1_m, peak_s2_m, collapsed, t_collapse_s (null if standing), diaphragm_peak_m,
-    base_peak_acc_m_s2, and also delta_u_m, s1_over_Delta_u, impacts."""
+    base_peak_acc_m_s2 (filtered), and also base_peak_acc_raw_m_s2, delta_u_m, s1_over_Delta_u,
+    impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
-                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_CAVEAT},
+                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_NOTE, "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
+                             "peak_sensitivity": SENSITIVITY_NOTE},
                    "runs": [r.to_dict() for r in results]})
 
 

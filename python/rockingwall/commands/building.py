@@ -41,6 +41,7 @@ def run_building(path, args):
     for spec in args.records:
         record = cc.record_from_args(spec, args)
         runs.append(monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
+                                                 check_sensitivity=True,
                                                  output_interval=0.01 if args.out else None))
     if args.out:
         out = cc.output_dir(args.out)

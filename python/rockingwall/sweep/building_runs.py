@@ -62,7 +62,8 @@ def _solve(text, record_sha, scale, stop_time, t_bytes, ag_bytes):
     from ..records import Record
     building = building_file.parse(text, "building file")
     t, ag = np.frombuffer(t_bytes), np.frombuffer(ag_bytes)
-    result, _ = monolithic.simulate_building(building, Record(record_sha, t, ag * scale), t_end=stop_time)
+    result, _ = monolithic.simulate_building(building, Record(record_sha, t, ag * scale), t_end=stop_time,
+                                             filter_floor=False)
     return result
 
 
