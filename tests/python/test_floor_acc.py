@@ -5,36 +5,26 @@ import numpy as np
 import pytest
 from scipy import signal
 
-from rockingwall import records, scene_engine as se
+import bench_scenes as bench
+from rockingwall import scene_engine as se
 from rockingwall.building import floor_acc, monolithic
 from rockingwall.records import Record
-from rockingwall.sweep import suites as suite
 
-WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
 G = 9.81
 
 
-def storey(tie, in_plane=True):
-    md, kd, m, k = 200.0, 2e5, 3000.0, 3e7
-    floor = dict(m=m, k=k, cs=2 * 0.05 * np.sqrt(k * m)) if in_plane else {}
-    return se.StoreySpec(wall=dict(WALL, Kd=tie), md=md, kd=kd, cd=2 * 0.05 * np.sqrt(kd * md), **floor)
-
-
 def two_storeys(tie):
-    return se.Spec(storeys=(storey(tie), storey(tie)), rigid_in_plane=False)
+    return bench.scenes(tie)["2 storeys"]
 
 
 @pytest.fixture(scope="module")
 def ff19a():
-    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
-    rec = records.read_at2(by_name["ff19a"].path).to_pga(0.2)
-    keep = rec.t <= 80.0
-    return Record("ff19a", rec.t[keep], rec.ag[keep])
+    return Record("ff19a", *bench.record(0.2))
 
 
 @pytest.fixture(scope="module")
 def by_tie(ff19a):
-    return {tie: monolithic.respond(two_storeys(tie), [WALL, WALL], ff19a)[0] for tie in (1e8, 1e9, 1e10)}
+    return {tie: monolithic.respond(two_storeys(tie), [bench.WALL, bench.WALL], ff19a)[0] for tie in (1e8, 1e9, 1e10)}
 
 
 def test_the_filtered_floor_peak_does_not_depend_on_the_tie(by_tie):
@@ -67,7 +57,7 @@ def test_a_sine_of_ground_motion_passes_below_the_cut_off_and_not_above(hz, gain
     t = np.arange(0.0, 4.0 + 1e-9, 1e-4)
     ramp = 0.5 * (1 - np.cos(np.pi * np.clip(np.minimum(t, 4.0 - t) / 0.5, 0.0, 1.0)))
     ag = 0.1 * G * np.sin(2 * np.pi * hz * t) * ramp
-    spec = se.Spec(storeys=(storey(1e8, in_plane=False),))
+    spec = se.Spec(storeys=(bench.storey(1e8, False),))
     peak, _, resolved = floor_acc.peaks(spec, Record("sine", t, ag), engine="exact")
     assert resolved
     assert peak[0] == pytest.approx(gain * 0.1 * G, abs=2e-3 * 0.1 * G)
@@ -92,7 +82,7 @@ def test_content_that_would_alias_into_the_pass_band_is_caught():
     t = np.arange(0.0, 4.0 + 1e-9, 1e-5)
     ramp = 0.5 * (1 - np.cos(np.pi * np.clip(np.minimum(t, 4.0 - t) / 0.5, 0.0, 1.0)))
     ag = G * (0.1 * np.sin(2 * np.pi * 2.0 * t) + 0.5 * np.sin(2 * np.pi * 510.0 * t)) * ramp
-    spec = se.Spec(storeys=(storey(1e8, in_plane=False),))
+    spec = se.Spec(storeys=(bench.storey(1e8, False),))
     peak, dt, resolved = floor_acc.peaks(spec, Record("two sines", t, ag), engine="exact")
     assert resolved and dt == pytest.approx(5e-4)
     assert peak[0] == pytest.approx(0.1 * G, rel=0.01)

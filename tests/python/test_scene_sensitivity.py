@@ -9,28 +9,18 @@ import json
 import numpy as np
 import pytest
 
-from rockingwall import cli, records, scene_engine as se
+import bench_scenes as bench
+from rockingwall import cli, scene_engine as se
 from rockingwall.sweep import suites as suite
 
-WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
-
-
-def storey(tie):
-    md, kd, m, k = 200.0, 2e5, 3000.0, 3e7
-    return se.StoreySpec(wall=dict(WALL, Kd=tie), md=md, kd=kd, cd=2 * 0.05 * np.sqrt(kd * md),
-                         m=m, k=k, cs=2 * 0.05 * np.sqrt(k * m))
-
-
 def two_storeys(tie):
-    return se.Spec(storeys=(storey(tie), storey(tie)), rigid_in_plane=False)
+    return bench.scenes(tie)["2 storeys"]
 
 
 @pytest.fixture(scope="module")
 def ff19a():
-    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
-    rec = records.read_at2(by_name["ff19a"].path).to_pga(0.2)
-    keep = rec.t <= 80.0
-    return rec.t[keep], rec.ag[keep], by_name["ff19a"].path
+    """(t, ag, the record's file) of bench_scenes' record"""
+    return (*bench.record(0.2), {r.name: r for r in suite.fema_farfield(suite.fema_cache())}["ff19a"].path)
 
 
 def peaks_over_scalings(tie, record, ks=range(-3, 4)):
