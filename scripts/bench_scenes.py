@@ -60,7 +60,7 @@ def hysteretic(tie):
 
 def print_hysteretic(t, ag):
     """CVODES on the hysteretic two-storey scene: CPU s per record for each tie and rtol"""
-    print(f"two storeys, Bouc-Wen diaphragms, CVODES (one call each)")
+    print("two storeys, Bouc-Wen diaphragms, CVODES (one call each)")
     print(f"{'tie [N/m per m]':>15} {'rtol':>6} | {'CPU s':>6} | {'steps':>7} {'events':>6}")
     for tie in TIES:
         for rtol in (1e-8, 1e-6):
