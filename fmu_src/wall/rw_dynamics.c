@@ -311,7 +311,7 @@ void rw_closed_forces(const rw_params *p, const rw_derived *d, const rw_regime *
         return;
     }
     if (m->tie_held && m->closed_b && m->closed_m) {
-        rw_rigid_tie_closed_forces(d, in, f_b, f_m);
+        rw_rigid_tie_closed_forces(p, d, in, f_b, f_m);
         return;
     }
     load(d, in, F);

@@ -73,11 +73,12 @@ static void close_mid(rw_regime *m, double x[RW_NX])
 
 /* A held tie's rigid hinges rest and open together: when the mechanism's load passes its
  * capacity (rw_rigid_tie_closed_forces), the base to that side, the mid-height hinge to the other */
-static int open_held(const rw_derived *d, rw_regime *m, const rw_input *in, double cb, rw_log_fn log, void *ctx)
+static int open_held(const rw_params *p, const rw_derived *d, rw_regime *m, const rw_input *in, double cb,
+                     rw_log_fn log, void *ctx)
 {
     double fb, fm;
     if (!(m->closed_b && m->closed_m)) return 0;
-    rw_rigid_tie_closed_forces(d, in, &fb, &fm);
+    rw_rigid_tie_closed_forces(p, d, in, &fb, &fm);
     if (!(fabs(fb) > cb)) return 0;
     m->closed_b = m->closed_m = 0;
     m->side_b = sgni(fb);
@@ -94,7 +95,7 @@ int rw_open_hinges(const rw_params *p, const rw_derived *d, rw_regime *m, const 
     double cb, cm;
     if (!rw_is_rigid(p)) return 0;
     rw_caps(p, d, &cb, &cm);
-    if (m->tie_held) return open_held(d, m, in, cb, log, ctx);
+    if (m->tie_held) return open_held(p, d, m, in, cb, log, ctx);
     for (iter = 0; iter < 4; iter++) {
         double fb, fm;
         int ob, om;

@@ -322,7 +322,11 @@ void rw_rigid_tie_motion(const rw_params *p, const rw_derived *d, const rw_regim
 /* A held tie's rigid hinges at rest: the force the mechanism q = theta (1, -1) must resist, as
  * rw_closed_forces gives a closed base's (scaled to the base's mean capacity, less the asymmetry),
  * and 0 for the mid-height hinge, which opens with the base */
-void rw_rigid_tie_closed_forces(const rw_derived *d, const rw_input *in, double *f_b, double *f_m);
+void rw_rigid_tie_closed_forces(const rw_params *p, const rw_derived *d, const rw_input *in, double *f_b,
+                                double *f_m);
+/* The tie's force F_top in regime m: the held tie's reaction, else the spring's rw_F_top */
+double rw_tie_force(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                    const double x[RW_NX]);
 
 /* Event rules (rw_events.c) -------------------------------------------------------------------- */
 typedef void (*rw_log_fn)(void *ctx, const char *message);

@@ -42,9 +42,8 @@ static void gravity_stiffness(const rw_derived *d, double Kg[2][2])
  * omega^2 = K_d h^2/4 (1, 1) M^-1 (1, 1)^T. */
 double rw_tie_stiffness_ratio(const rw_params *p, const rw_derived *d)
 {
-    const double *Mr[2] = {d->M[0], d->M[1]};
-    const double det = Mr[0][0] * Mr[1][1] - Mr[0][1] * Mr[1][0];
-    const double cMc = (Mr[1][1] + Mr[0][0] - 2.0 * Mr[0][1]) / det;
+    const double det = d->M[0][0] * d->M[1][1] - d->M[0][1] * d->M[1][0];
+    const double cMc = (d->M[1][1] + d->M[0][0] - 2.0 * d->M[0][1]) / det;
     const double tie = p->Kd * p->h * p->h / 4.0 * cMc;
     double Kg[2][2], slow = 0.0;
     int s;
@@ -82,14 +81,16 @@ int rw_tie_held_from_rest(const rw_params *p)
     return rw_hold_tie(p, &d, &m, &still, x, NULL, NULL);
 }
 
-void rw_rigid_tie_closed_forces(const rw_derived *d, const rw_input *in, double *f_b, double *f_m)
+void rw_rigid_tie_closed_forces(const rw_params *p, const rw_derived *d, const rw_input *in, double *f_b,
+                                double *f_m)
 {
     /* theta turning to side s turns the base to s and the mid-height hinge (x = -2 theta) to -s:
      * the mechanism resists C(s) = cap_b(s) + 2 cap_m(-s) against the load (pa1 - pa2) ag */
     const double C_pos = d->cap_bs[RW_SIDE(1)] + 2.0 * d->cap_ms[RW_SIDE(-1)];
     const double C_neg = d->cap_bs[RW_SIDE(-1)] + 2.0 * d->cap_ms[RW_SIDE(1)];
     const double mean = (C_pos + C_neg) / 2.0, asym = (C_pos - C_neg) / 2.0;
-    const double cap_b = (d->cap_bs[0] + d->cap_bs[1]) / 2.0; /* rw_caps' base capacity */
+    double cap_b, cap_m;
+    rw_caps(p, d, &cap_b, &cap_m); /* the closed base's indicator divides by cap_b */
     *f_b = ((d->pa[0] - d->pa[1]) * in->ag - asym) * cap_b / mean;
     *f_m = 0.0;
 }
@@ -117,4 +118,13 @@ void rw_rigid_tie_motion(const rw_params *p, const rw_derived *d, const rw_regim
     dx[3] = -thdd;
     /* the spring's generalised force is -(h/2) F_top (1, 1) */
     *F_top = -2.0 * lambda / p->h;
+}
+
+double rw_tie_force(const rw_params *p, const rw_derived *d, const rw_regime *m, const rw_input *in,
+                    const double x[RW_NX])
+{
+    double dx[RW_NX], F_top;
+    if (!m->tie_held) return rw_F_top(p, in, x);
+    rw_rigid_tie_motion(p, d, m, in, x, dx, &F_top);
+    return F_top;
 }

@@ -14,6 +14,7 @@
 #define rw_F_top FMU_SYMBOL(rw_F_top)
 #define rw_F_base_given_top FMU_SYMBOL(rw_F_base_given_top)
 #define rw_rigid_tie_motion FMU_SYMBOL(rw_rigid_tie_motion)
+#define rw_tie_force FMU_SYMBOL(rw_tie_force)
 #define rw_tie_holds_rigid FMU_SYMBOL(rw_tie_holds_rigid)
 #define rw_hold_tie FMU_SYMBOL(rw_hold_tie)
 #define rw_tie_held_from_rest FMU_SYMBOL(rw_tie_held_from_rest)

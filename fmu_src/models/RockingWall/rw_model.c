@@ -85,18 +85,6 @@ static void view(rw_data *S, int initializing, rw_regime *m, double x[RW_NX])
     if (initializing) rw_init_regime(&S->P, &S->D, &S->in, x, m, NULL, NULL);
 }
 
-/* The derivatives and the tie's force, with the tie held rigid where the instance does so */
-static double motion(const rw_data *S, const rw_regime *m, const double x[RW_NX], double dx[RW_NX])
-{
-    double F_top;
-    if (m->tie_held) {
-        rw_rigid_tie_motion(&S->P, &S->D, m, &S->in, x, dx, &F_top);
-        return F_top;
-    }
-    rw_derivatives(&S->P, &S->D, m, &S->in, x, dx);
-    return rw_F_top(&S->P, &S->in, x);
-}
-
 static int state_index(unsigned vr)
 {
     switch (vr) {
@@ -116,7 +104,8 @@ static void get_real(void *M, int initializing, double time, const unsigned vr[]
     size_t i;
     (void)time;
     view(S, initializing, &m, x);
-    F_top = motion(S, &m, x, dx);
+    rw_derivatives(&S->P, &S->D, &m, &S->in, x, dx);
+    F_top = rw_tie_force(&S->P, &S->D, &m, &S->in, x);
     for (i = 0; i < n; i++) {
         const rw_param_info *param = rw_param_by_vr(vr[i]);
         const int k = state_index(vr[i]);
@@ -313,7 +302,7 @@ static void set_states(void *M, const double x[])
 static void derivatives(void *M, double dx[])
 {
     rw_data *S = (rw_data *)M;
-    motion(S, &S->regime, S->x, dx);
+    rw_derivatives(&S->P, &S->D, &S->regime, &S->in, S->x, dx);
 }
 
 static void event_indicators(void *M, int initializing, double z[])
