@@ -26,18 +26,6 @@ REFERENCE = [("ff07a", 20e3, 83.2, 112.6),    # Kobe 1995, NIS000
              ("ff07a", 200e3, 171.4, 23.9),
              ("ff03a", 20e3, 109.8, 108.0),   # Duzce 1999, BOL000
              ("ff03a", 200e3, 112.9, 48.5)]
-BUILDING = """
-[building]
-name = "the assessor's two-storey brick building"
-[[storey]]
-height = "4.0 m"
-wall = { b = "350 mm", W = "25.2 kN/m", overburden = "3.2 kN/m" }
-diaphragm = { stiffness = "60 kN/m/m", mass = "600 kg/m", damping = 0.05 }
-[[storey]]
-height = "3.6 m"
-wall = { b = "230 mm", unit_weight = "18 kN/m3", overburden = "1.5 kN/m" }
-diaphragm = { stiffness = "20 kN/m/m", mass = "200 kg/m", damping = 0.05 }
-"""
 
 
 @pytest.fixture(scope="module")
@@ -105,8 +93,8 @@ def test_one_storey_equals_the_two_fmus_under_one_cvode(build_dir):
 
 
 @pytest.fixture(scope="module")
-def building():
-    return building_file.parse(BUILDING, "assessor.toml")
+def building(repo):
+    return building_file.read(repo / "examples" / "two-storey-brick.toml")
 
 
 def test_the_assessors_building_stands_still_under_a_tiny_record(fema, building):
