@@ -293,15 +293,18 @@ def add_to_cases(cases, by_pga):
     return pd.concat([cases, extra], axis=1)
 
 
+STIFF_DIAPHRAGMS = ("the codes assume stiff diaphragms: their columns do not change with K_d; UNCONSERVATIVE: the "
+                    "code passes, the time history collapses or passes the code's usable displacement (C8 Delta_m; "
+                    "NTC du* at the control point; ASCE 41 collapse only)")
+
+
 def head_lines(by_pga):
     """The report's lines on the codes: the site, each code's capacity, demand and verdict (per case
     PGA with the hazard 'pga')."""
     lines = []
     for key, checks in by_pga.items():
         lines += ([f"code hazard at PGA {key:g} g (each case's):"] if key is not None else []) + checks_lines(checks)
-    lines.append("the codes assume stiff diaphragms: their columns do not change with K_d; UNCONSERVATIVE: the "
-                 "code passes, the time history collapses or passes the code's usable displacement (C8 Delta_m; "
-                 "NTC du* at the control point; ASCE 41 collapse only)")
+    lines.append(STIFF_DIAPHRAGMS)
     return lines
 
 

@@ -12,7 +12,8 @@ uncertainty; IDA 'resurrections' reported.
 Records: .AT2 or .csv files, 'elcentro', 'gaussian[:D,T]', or 'fema' (the 44 FEMA P695 far-field
 components). Intensities: --pga (each record scaled to each PGA, g), --sa with --sa-period (to
 each Sa(T, 5 %), g) or --scale (factors on the records as given). Each run lasts its record.
---code nzsee ntc asce41 adds each code's capacity, demand and verdict to every case (docs/codes.md).
+--code nzsee ntc asce41 adds each code's capacity, demand and verdict to every case (docs/codes.md);
+with --building, each storey's wall is checked at its own place in the building.
 Writes cases.csv, one IDA plot per record (<record>.png), fragility.png, fragility.csv (codes.json
 with --code) and manifest.json (the run's files; "complete": true once all are in place). The
 folder then holds this run's files only: those of an earlier assessment it does not write again are
@@ -22,8 +23,8 @@ import sys
 
 from tqdm import tqdm
 
-from .. import (assessment, assessment_building, assessment_codes, assessment_report, engine, intensity, limits,
-               records, scenes, strict_json, units)
+from .. import (assessment, assessment_building, assessment_codes, assessment_codes_building, assessment_report,
+               engine, intensity, limits, records, scenes, strict_json, units)
 from ..api import ENGINES, PARAPET_ON_CVODE
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
@@ -76,7 +77,7 @@ def add_code_arguments(p):
 class Study:
     """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
     storey for a building), the report's head lines, the scene, the plots' title, the group column,
-    the wall (None for a building)."""
+    the wall (None for a building), the building (None for a wall)."""
     run: object
     states: list
     head: list
@@ -84,6 +85,7 @@ class Study:
     title: str
     column: str
     wall: object = None
+    building: object = None
 
 
 def output_names(recs, codes):
@@ -100,9 +102,10 @@ def main(args):
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
     lvs = assessment.levels(recs, args)
-    codes = code_checks(args, study.wall, [lv.record.pga / intensity.G for lv in lvs])
+    codes = code_checks(args, study, [lv.record.pga / intensity.G for lv in lvs])
+    code_view = assessment_codes_building if args.building else assessment_codes  # one wall, or per storey
     if codes is not None:
-        study.head.extend(assessment_codes.head_lines(codes))
+        study.head.extend(code_view.head_lines(codes))
     for message in dict.fromkeys(intensity.pga_value_warning(lv.name, lv.record.pga / intensity.G) for lv in lvs):
         if message:
             cc.warn(message, args)  # --strict: refused before any run
@@ -110,14 +113,14 @@ def main(args):
     out.check(output_names(recs, codes))  # before the runs: no output replaces an input
     cases, outcomes = study.run(lvs, ensemble)
     if codes is not None:
-        cases = assessment_codes.add_to_cases(cases, codes)
+        cases = code_view.add_to_cases(cases, codes)
     states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
     frag = assessment.fragilities(cases, states, study.column, outcomes)
     im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
     with out:  # the folder holds this run's files only, swapped in when all are written
         write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
         if codes is not None:
-            out.write("codes.json", lambda tmp: strict_json.write(assessment_codes.to_json(codes), tmp))
+            out.write("codes.json", lambda tmp: strict_json.write(code_view.to_json(codes), tmp))
     print(f"wrote {out.path}/cases.csv, fragility.csv, fragility.png, {MANIFEST} and {len(recs)} IDA plots",
           file=sys.stderr)
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
@@ -125,18 +128,19 @@ def main(args):
     return 0  # the report last: a closed pipe cannot lose the files
 
 
-def code_checks(args, wall, pgas):
-    """The code checks of --code on the wall, per hazard (None without --code; assessment_codes.
-    checks_by_hazard), every option checked before any run; pgas [g]: the cases' PGAs."""
+def code_checks(args, study, pgas):
+    """The code checks of --code on the study's wall, per hazard (None without --code; assessment_codes.
+    checks_by_hazard), or on every storey's wall of its building (assessment_codes_building.
+    checks_by_storey); every option checked before any run; pgas [g]: the cases' PGAs."""
     given = [flag for flag, (attr, *_) in assessment_codes.OPTIONS.items() if getattr(args, attr) is not None]
     if not args.code:
         if given:
             raise ValueError(f"{given[0]} is an input of the code checks: give --code too")
         return None
-    if args.building:
-        raise ValueError("--code checks one wall: with --building it is not implemented")
     values = assessment_codes.option_values(args)
-    return assessment_codes.checks_by_hazard(wall, args.code, values, pgas, given)
+    if study.building is not None:
+        return assessment_codes_building.checks_by_storey(study.building, args.code, values, pgas, given)
+    return assessment_codes.checks_by_hazard(study.wall, args.code, values, pgas, given)
 
 
 def wall_study(args):
@@ -187,7 +191,7 @@ def building_study(args):
 
     def run(lvs, ensemble):
         return assessment_building.run_cases(building, lvs, states, ensemble)
-    return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN)
+    return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building)
 
 
 def write_files(out, cases, frag, recs, states, im_name, study):
