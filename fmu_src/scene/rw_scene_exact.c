@@ -29,9 +29,6 @@ int rw_scene_exact_covers(const rw_scene_spec *spec, char *msg, size_t n)
             return snprintf(msg, n, "storey %d: the exact engine takes hinge laws whose moments are affine on a region "
                             "(semiRigidHinge, dohertyHinge), not %s", i + 1, law ? law->name : "this one"),
                    RW_SCENE_UNSUPPORTED;
-        if (!rw_moments_of_q_alone(&spec->wall[i]))
-            return snprintf(msg, n, "storey %d: the exact engine takes walls whose top load bears on the centreline "
-                            "(eTop = 0 or psi = 0)", i + 1), RW_SCENE_UNSUPPORTED;
     }
     return RW_SCENE_OK;
 }

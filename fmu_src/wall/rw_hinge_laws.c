@@ -31,6 +31,16 @@ static double side_of(double z, double dz)
     return z != 0.0 ? sgn(z) : (dz != 0.0 ? sgn(dz) : 1.0);
 }
 
+/* side_of for the moments, where a hinge at rest at zero (a wall starting from rest on a base that
+ * is not yet accelerating) takes the side its regime holds: the side its event line watches, so
+ * that a motion the other way is an event that brings the side up to date. Under an eccentric top
+ * load the sides' slopes differ there, and a region keyed to another side than the line's would
+ * run the wrong law until some other event. */
+static double moment_side(double z, double dz, int regime_side)
+{
+    return z != 0.0 || dz != 0.0 ? side_of(z, dz) : (regime_side < 0 ? -1.0 : 1.0);
+}
+
 /* The data of the direction a hinge turning to side s takes: the base's own, the mid-height's
  * the opposite */
 static const rw_direction *base_dir(const rw_derived *d, double s) { return &d->dir[RW_SIDE(s)]; }
@@ -102,10 +112,9 @@ static double sat_mu(double z, double dz, double ty, double *slope)
 static void hinge_moments(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
                           double Q[2], double J[2][2])
 {
-    const double x = q[1] - q[0], dx = dq[1] - dq[0], sb = side_of(q[0], dq[0]), sm = side_of(x, dx);
+    const double x = q[1] - q[0], dx = dq[1] - dq[0], sb = moment_side(q[0], dq[0], side_b),
+                 sm = moment_side(x, dx, side_m);
     double kb, km, mu_b, mu_m;
-    (void)side_b;
-    (void)side_m;
     mu_b = sat_mu(q[0], dq[0], base_dir(d, sb)->theta_y, &kb);
     mu_m = sat_mu(x, dx, mid_dir(d, sm)->theta_y, &km);
     moments_from_mu(rw_cap_b_of(d, sb), rw_cap_m_of(d, sm), mu_b, kb, mu_m, km, Q, J);
@@ -226,12 +235,11 @@ static double doherty_mu(const rw_direction *r, double z, double dz, double c, d
 static void doherty_moments(const rw_derived *d, int side_b, int side_m, const double q[2], const double dq[2],
                             double Q[2], double J[2][2])
 {
-    const double x = q[1] - q[0], dx = dq[1] - dq[0], sb = side_of(q[0], dq[0]), sm = side_of(x, dx);
+    const double x = q[1] - q[0], dx = dq[1] - dq[0], sb = moment_side(q[0], dq[0], side_b),
+                 sm = moment_side(x, dx, side_m);
     double kb, km;
     const double mu_b = doherty_mu(base_dir(d, sb), q[0], dq[0], d->h / 2.0, &kb);
     const double mu_m = doherty_mu(mid_dir(d, sm), x, dx, d->h / 4.0, &km);
-    (void)side_b;
-    (void)side_m;
     moments_from_mu(rw_cap_b_of(d, sb), rw_cap_m_of(d, sm), mu_b, kb, mu_m, km, Q, J);
 }
 
