@@ -181,7 +181,9 @@ def building_members(building, record, ensemble, t_end):
         storeys = []
         for i, s in enumerate(building.storeys):
             f = {name: v[k, i] for name, v in factors.items()}
-            wall = dataclasses.replace(s.wall, b=s.wall.b * f["b"], W=s.wall.W * f["W"],
+            b = s.wall.b * f["b"]  # the overburden bears at the same fraction of it (on the face stays on it)
+            wall = dataclasses.replace(s.wall, b=b, W=s.wall.W * f["W"],
+                                       e_top=math.copysign(min(abs(s.wall.e_top) * f["b"], b / 2), s.wall.e_top),
                                        overburden=s.wall.overburden * f["psi"],
                                        e_r=float(np.clip(s.wall.e_r + f["er"], 0.0, 1.0)))
             d = dataclasses.replace(s.diaphragm, stiffness=s.diaphragm.stiffness * f["Kd"],

@@ -90,3 +90,19 @@ def test_a_place_for_one_wall_is_refused_with_a_building(repo, tmp_path, capsys,
     err = capsys.readouterr().err
     assert message in err and "Traceback" not in err
     assert not (tmp_path / "out" / "cases.csv").exists()
+
+
+def test_the_codes_take_where_the_building_file_says_the_overburden_bears(repo, tmp_path):
+    """wall.e_top = 100 mm (joists on the upper wall's inner leaf): C8 governs outward, where the
+    load's lever at the hinge is shortened by e_top (1.5 b - e); by hand as above."""
+    text = (repo / "examples" / "two-storey-brick.toml").read_text()
+    path = tmp_path / "house.toml"
+    path.write_text(text.replace('overburden = "1.5 kN/m" }', 'overburden = "1.5 kN/m", e_top = "100 mm" }'))
+    assert main(["assess", "elcentro", "--building", str(path), "--pga", "0.1", "--ensemble", "0",
+                 "--out", str(tmp_path / "out"), "--code", "nzsee", *SITE]) == 0
+    row = pd.read_csv(tmp_path / "out" / "cases.csv").set_index("storey").loc[2]
+    W, P, b, hb, e = 14904.0, 1500.0, 0.23, 1.8, 0.1
+    A = (W / 2 * b / 2 + W / 2 * 1.5 * b + P * (1.5 * b - e)) / hb
+    B = (W / 8 + W / 2 * 0.75 + P) / hb
+    assert row.nzsee_delta_i_mm == pytest.approx(A / (2 * B) * 1e3, rel=1e-5)
+    assert row.nzsee_delta_i_mm < 220.4 - 8  # the centred load: 220.4 mm

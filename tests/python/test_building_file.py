@@ -37,6 +37,17 @@ def test_the_contract_reads_in_si_units():
     assert params["psi"] == pytest.approx(2 * 1.5e3 / (18e3 * 0.23 * 3.6)) and params["Kd"] == pytest.approx(1e6)
 
 
+def test_an_eccentric_overburden_reaches_the_wall_and_the_echo():
+    """e_top: where the storey's overburden bears (toward the inner face); the walls above bear on
+    the centreline as weight only, so the ground wall's eTop is its own overburden's alone."""
+    text = CONTRACT.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "-80 mm"')
+    b = building_file.parse(text.replace('overburden = "3.2 kN/m"', 'overburden = "3.2 kN/m", e_top = "175 mm"'))
+    assert [s.wall.e_top for s in b.storeys] == pytest.approx([0.175, -0.08])
+    assert [b.wall_parameters(i)["eTop"] for i in (0, 1)] == pytest.approx([0.175, -0.08])
+    assert "overburden 3.2 kN/m at 175 mm from the centreline" in b.describe()
+    assert building_file.parse(CONTRACT).wall_parameters(0)["eTop"] == 0.0
+
+
 @pytest.mark.parametrize("edit, line, words", [
     (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 4, "unknown key"),
     (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 4, "not a unit of"),
@@ -44,6 +55,8 @@ def test_the_contract_reads_in_si_units():
     (lambda t: t.replace('height = "3.6 m"', 'height = "3.6 m"\nheight = "3 m"'), 12, "not valid TOML"),
     (lambda t: t.replace('mass = "200 kg/m"', 'mass = "-200 kg/m"'), 10, "outside"),
     (lambda t: t.replace('wall = { b = "350 mm"', 'wal = { b = "350 mm"'), 4, "unknown key"),
+    (lambda t: t.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "120 mm"'), 10,
+     "|e_top| <= b/2 = 115 mm"),
 ])
 def test_a_bad_file_names_the_file_the_line_and_the_problem(edit, line, words):
     with pytest.raises(building_file.BuildingFileError) as err:
@@ -127,3 +140,11 @@ def test_the_floor_acceleration_is_filtered_and_says_at_what(house, capsys):
     assert run["floor_acc"]["cutoff_hz"] == 25.0 and run["floor_acc"]["resolved"] is True
     for s in run["storeys"]:
         assert 0 < s["base_peak_acc_m_s2"] and 0 < s["base_peak_acc_raw_m_s2"]
+
+
+def test_the_building_fmu_refuses_an_eccentric_overburden_it_cannot_take():
+    from rockingwall.building import with_walls
+    b = building_file.parse(CONTRACT.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "50 mm"'))
+    with pytest.raises(ValueError, match="storey 2: BuildingWithWalls.fmu takes the overburden on the centreline"):
+        with_walls.start_values(b)
+    assert with_walls.start_values(building_file.parse(CONTRACT))["psi_2"] > 0

@@ -12,7 +12,7 @@ from ..names import HINGE_LAWS
 
 BUILDING_KEYS = {"name", "tie"}
 STOREY_KEYS = {"height", "wall", "diaphragm", "tie", "in_plane"}
-WALL_KEYS = {"b", "W", "unit_weight", "overburden", "hinge_law", "e_r"}
+WALL_KEYS = {"b", "W", "unit_weight", "overburden", "e_top", "hinge_law", "e_r"}
 PINCHING_KEYS = ("pinch_size", "pinch_width", "pinch_centre")
 DIAPHRAGM_KEYS = {"stiffness", "mass", "damping", "law", "yield_force", "post_yield", *PINCHING_KEYS}
 IN_PLANE_KEYS = {"stiffness", "mass", "damping"}
@@ -20,6 +20,7 @@ DIAPHRAGM_LAWS = ("linear", "boucWen", "boucWenPinched")
 RANGES = {  # what a masonry building's per-metre numbers can be (SI); outside is refused
     "height": (0.5, 30.0), "b": (0.02, 3.0), "W": (10.0, 1e6), "unit_weight": (1e3, 1e5), "overburden": (0.0, 1e7),
     "stiffness": (0.0, 1e12), "mass": (1e-6, 1e7), "damping": (0.0, 2.0), "tie": (1.0, 1e12), "e_r": (0.0, 1.0),
+    "e_top": (-1.5, 1.5),
     "yield_force": (1e-3, 1e9), "post_yield": (0.0, 1.0),
     "pinch_size": (0.0, 0.99), "pinch_width": (0.01, 10.0), "pinch_centre": (0.0, 0.99),
 }
@@ -78,8 +79,12 @@ def _wall(table, height, where, line, what):
     law = table.get("hinge_law", HINGE_LAW_DEFAULT)
     if law not in HINGE_LAWS:
         raise where.error(line, f"{what}.hinge_law = {law!r}: known {', '.join(HINGE_LAWS)}")
+    e_top = _quantity(table, "e_top", "m", where, line, what, 0.0)
+    if not abs(e_top) <= b / 2:
+        raise where.error(line, f"{what}.e_top = {table['e_top']!r}: the overburden must bear within the wall, "
+                                f"|e_top| <= b/2 = {b / 2 * 1e3:g} mm")
     return WallLayer(b=b, W=W, overburden=_quantity(table, "overburden", "N/m", where, line, what, 0.0),
-                     hinge_law=law, e_r=_quantity(table, "e_r", "1", where, line, what, E_R_DEFAULT))
+                     e_top=e_top, hinge_law=law, e_r=_quantity(table, "e_r", "1", where, line, what, E_R_DEFAULT))
 
 
 def _diaphragm(table, where, line, what):

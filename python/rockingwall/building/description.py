@@ -36,10 +36,13 @@ FMU_HYSTERESIS_NAMES = {"n_bw": "nBW", "beta": "betaBW", "pinch_size": "pinchSiz
 class WallLayer:
     """The face-loaded wall of a storey: thickness b [m], weight W [N/m], the overburden it carries
     at its top [N/m] (the floor or roof load on it, weight and mass; the walls above are added as
-    weight alone, Building.weight_above), the hinge law and the coefficient of restitution."""
+    weight alone, Building.weight_above) and where it bears, e_top [m] from the centreline, positive
+    toward the inner face (the diaphragm's side: joists bearing on the inner leaf; the walls above
+    bear on the centreline), the hinge law and the coefficient of restitution."""
     b: float
     W: float
     overburden: float = 0.0
+    e_top: float = 0.0
     hinge_law: str = HINGE_LAW_DEFAULT
     e_r: float = E_R_DEFAULT
 
@@ -135,13 +138,13 @@ class Building:
 
     def wall_parameters(self, i):
         """The wall of storey i as the model's parameters (SI): tied to its diaphragm (flexibleTop,
-        Kd = the tie), psi from the overburden it carries (weight and mass at its top) and
+        Kd = the tie), psi from the overburden it carries (weight and mass at its top, at eTop) and
         psiWeightOnly from the weight of the walls above (weight_above: their mass is in their own
         walls, so it is not counted twice)."""
         s = self.storeys[i]
         return dict(h=s.height, b=s.wall.b, W=s.wall.W, psi=2.0 * s.wall.overburden / s.wall.W,
-                    psiWeightOnly=2.0 * self.weight_above(i) / s.wall.W, Kd=s.tie, er=s.wall.e_r, support=3,
-                    hingeLaw=hinge_law_code(s.wall.hinge_law))
+                    psiWeightOnly=2.0 * self.weight_above(i) / s.wall.W, eTop=s.wall.e_top, Kd=s.tie,
+                    er=s.wall.e_r, support=3, hingeLaw=hinge_law_code(s.wall.hinge_law))
 
     def describe(self):
         """The building with units, storey by storey: what the report echoes."""
@@ -153,6 +156,8 @@ class Building:
             above = self.weight_above(i - 1)
             lines.append(f"storey {i}: h = {s.height:g} m; wall b = {w.b * 1e3:g} mm, W = {w.W / 1e3:.4g} kN/m, "
                          f"overburden {w.overburden / 1e3:.4g} kN/m"
+                         + (f" at {w.e_top * 1e3:g} mm from the centreline (+: toward the inner face)"
+                            if w.e_top else "")
                          + (f" + walls above {above / 1e3:.4g} kN/m (weight only)" if above else "")
                          + f", {w.hinge_law}, e_r = {w.e_r:g}")
             lines.append(f"  diaphragm: {d.stiffness / 1e3:.4g} kN/m per m, {d.mass:.4g} kg/m, "

@@ -8,7 +8,12 @@ DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
 
 
 def start_values(building):
-    """{name: value} of every parameter the building sets (the FMU's defaults for the rest)."""
+    """{name: value} of every parameter the building sets (the FMU's defaults for the rest). A
+    ValueError for an eccentric overburden (wall.e_top), which the FMU does not take."""
+    eccentric = [i for i, s in enumerate(building.storeys, 1) if s.wall.e_top != 0.0]
+    if eccentric:
+        raise ValueError(f"storey {eccentric[0]}: BuildingWithWalls.fmu takes the overburden on the centreline; "
+                         "a wall's e_top runs with `rockingwall building` or the co-simulation (couple-building)")
     v = {"nStoreys": len(building.storeys), "rigidInPlane": int(building.rigid_in_plane), "storeyLaw": 0,
          "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
          "rayleighStiffness": 0.0, **building.fmu_hysteresis()}
