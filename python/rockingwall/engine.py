@@ -180,6 +180,13 @@ def statics(**values):
             for name, field in (("Delta_u", "Du"), ("F_r", "Fr"), ("cap_b", "cap_b"), ("cap_m", "cap_m"))}
 
 
+def delta_u(**values):
+    """Delta_u [m] of a wall (statics): the smaller of its two directions' (they differ under an
+    eccentric top load); b (1 + 0.75 psi)/(1 + psi) for the paper's walls (Table 5.1). ValueError
+    as statics."""
+    return min(statics(**values)["Delta_u"].values())
+
+
 def tie_held(**values):
     """Whether the Model Exchange FMU holds this wall's tie rigid when it starts at rest with its far
     end still (rw_tie_held_from_rest; docs/model.md "A stiff tie held rigid"): this engine never

@@ -114,7 +114,7 @@ def _delta_u(params):
     """Delta_u [m] of one member's wall by the C model (the smaller direction's), NaN for a wall
     that cannot stand (its run fails too)."""
     try:
-        return min(engine.statics(**params)["Delta_u"].values())
+        return engine.delta_u(**params)
     except ValueError:
         return math.nan
 

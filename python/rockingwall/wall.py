@@ -5,7 +5,7 @@ import dataclasses
 import warnings
 
 from . import names, units
-from .engine import parameter_table, statics
+from .engine import delta_u, parameter_table, statics
 
 # Values that are valid for the model but unusual for an unreinforced-masonry wall and its
 # diaphragm: a value outside is most often a unit slip (kN typed for N). (low, high) in SI.
@@ -94,7 +94,7 @@ class Wall:
         """Delta_u [m]: the mid-height displacement at which the 1DOF's restoring force reaches
         zero (NZSEE C8's Delta_i; b (1 + 0.75 psi)/(1 + psi) for the paper's walls, Table 5.1),
         the smaller of the two directions when an eccentric top load makes them differ."""
-        return min(self.delta_u_by_direction.values())
+        return delta_u(**self.params)
 
     @property
     def delta_u_by_direction(self):

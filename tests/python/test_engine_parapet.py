@@ -79,6 +79,20 @@ def test_stocky_parapet_is_left_to_cvode():
     assert engine.covers(dict(support=1, h=2.5, b=0.15)) and not engine.covers(dict(support=1, h=1.0, b=0.15))
 
 
+@pytest.mark.parametrize("side", [1.0 - 1e-9, 1.0 + 1e-9])
+def test_the_python_limit_is_the_c_engines(side):
+    """engine.PARAPET_MAX_B_OVER_H is a copy of rw_engine.h's: either side of it, engine.covers says
+    what the C engine does."""
+    t = np.linspace(0.0, 1.0, 11)
+    wall = dict(support=1, h=2.0, b=2.0 * engine.PARAPET_MAX_B_OVER_H * side)
+    try:
+        engine.run(t, 0.0 * t, t_end=1.0, **wall)
+        ran = True
+    except engine.EngineError:
+        ran = False
+    assert ran == engine.covers(wall) == (side < 1.0)
+
+
 def test_command_line_runs_a_parapet_on_the_engine():
     import contextlib
     import io

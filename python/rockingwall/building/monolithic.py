@@ -85,12 +85,6 @@ class BuildingResult:
                            "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
 
 
-def delta_u(params):
-    """Delta_u [m] of a wall (the C model's, b (1 + 0.75 psi)/(1 + psi) for the paper's walls,
-    Table 5.1): the smaller of its two directions."""
-    return min(engine.statics(**params)["Delta_u"].values())
-
-
 def storey_spec(wall_params, diaphragm, in_plane=None):
     """One storey of the scene: the wall's parameters (None: no wall), its diaphragm (a
     description.Diaphragm) and its in-plane walls (None: rigid)."""
@@ -165,7 +159,7 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
-        du = delta_u(params) if params else math.nan
+        du = engine.delta_u(**params) if params else math.nan
         storeys.append(StoreyResult(
             storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
