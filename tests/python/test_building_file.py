@@ -140,11 +140,3 @@ def test_the_floor_acceleration_is_filtered_and_says_at_what(house, capsys):
     assert run["floor_acc"]["cutoff_hz"] == 25.0 and run["floor_acc"]["resolved"] is True
     for s in run["storeys"]:
         assert 0 < s["base_peak_acc_m_s2"] and 0 < s["base_peak_acc_raw_m_s2"]
-
-
-def test_the_building_fmu_refuses_an_eccentric_overburden_it_cannot_take():
-    from rockingwall.building import with_walls
-    b = building_file.parse(CONTRACT.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "50 mm"'))
-    with pytest.raises(ValueError, match="storey 2: BuildingWithWalls.fmu takes the overburden on the centreline"):
-        with_walls.start_values(b)
-    assert with_walls.start_values(building_file.parse(CONTRACT))["psi_2"] > 0

@@ -71,6 +71,21 @@ def test_fmpy_runs_equal_the_scene_solver(build_dir, assessor, standing, fmi_typ
     assert work > 10.0 and np.abs(np.asarray(res["energy_residual"])).max() < 1e-3 * work
 
 
+def test_an_eccentric_overburden_reaches_the_fmu(build_dir, repo, tmp_path):
+    """wall.e_top of the building file is the FMU's eTop_i: joists 100 mm toward the inner face on
+    the upper wall, El Centro at 0.1 g (both walls rocking and standing)."""
+    text = (repo / "examples" / "two-storey-brick.toml").read_text()
+    path = tmp_path / "house.toml"
+    path.write_text(text.replace('overburden = "1.5 kN/m" }', 'overburden = "1.5 kN/m", e_top = "100 mm" }'))
+    house = building_file.read(path)
+    assert with_walls.start_values(house)["eTop_2"] == pytest.approx(0.1)
+    rec, ref, _ = reference(house, 0.1)
+    centred = reference(building_file.read(repo / "examples" / "two-storey-brick.toml"), 0.1)[1]
+    assert abs(ref.storeys[1].peak_s1_m / centred.storeys[1].peak_s1_m - 1) > 0.02  # it matters
+    res = run_fmu(build_dir / "BuildingWithWalls.fmu", house, rec, "ModelExchange")
+    assert_peaks(res, ref, lambda name: float(np.abs(np.asarray(res[name])).max()))
+
+
 def test_fmi2sim_equals_the_scene_solver(build_dir, assessor, standing, tmp_path):
     from rockingwall import paths
     rec, ref, _ = standing

@@ -20,6 +20,7 @@ static const char *wall_parameter_name(int slot)
     case 7: return "er";
     case 8: return "hingeLaw";
     case 9: return "psiWeightOnly";
+    case 49: return "eTop";
     default: return NULL;
     }
 }

@@ -6,7 +6,8 @@
  * Value references: the shared parameters, the input and the energy terms below 100; storey i
  * (1..5) uses 100*i + k with the same k for every storey (BW_STOREY_OF, BW_SLOT_OF): 1-19 its
  * wall's, diaphragm's and in-plane walls' parameters, 20-31 its states, 32-39 their rates, 40-48
- * its outputs, 50-57 its wall's event indicators.
+ * its outputs, 49 its wall's eTop (a parameter added after the outputs), 50-57 its wall's event
+ * indicators.
  * The continuous states, in the order of the state vector: work_ground, work_damping, then per
  * storey q1, q2, dq1, dq2, u_floor, v_floor, z_storey, u_diaph, v_diaph, z_diaph, work_storey,
  * work_diaph (the order of their derivatives in the table below).
@@ -59,6 +60,7 @@ X(tie_1, 106, "tie_1", Real, "parameter", "fixed", "exact", 100000000.0, "N/m2",
 X(er_1, 107, "er_1", Real, "parameter", "fixed", "exact", 0.86, "1", 0, 0, "Coefficient of restitution of the wall of storey 1, in [0, 1]") \
 X(hingeLaw_1, 108, "hingeLaw_1", Integer, "parameter", "fixed", "exact", 4, "", 0, 0, "Hinge law of the wall of storey 1: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge") \
 X(psiWeightOnly_1, 109, "psiWeightOnly_1", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 1: 2 (weight of the walls above)/W_1, in [0, 20] (weight without mass: the walls above carry their own)") \
+X(eTop_1, 149, "eTop_1", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 1 (psi_1) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_1| <= b_1/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_1, 110, "md_1", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 1 per metre of wall, in (0, 1e9]") \
 X(kd_1, 111, "kd_1", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 1 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_1, 112, "zetad_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 1 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
@@ -107,6 +109,7 @@ X(tie_2, 206, "tie_2", Real, "parameter", "fixed", "exact", 100000000.0, "N/m2",
 X(er_2, 207, "er_2", Real, "parameter", "fixed", "exact", 0.86, "1", 0, 0, "Coefficient of restitution of the wall of storey 2, in [0, 1]") \
 X(hingeLaw_2, 208, "hingeLaw_2", Integer, "parameter", "fixed", "exact", 4, "", 0, 0, "Hinge law of the wall of storey 2: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge") \
 X(psiWeightOnly_2, 209, "psiWeightOnly_2", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 2: 2 (weight of the walls above)/W_2, in [0, 20] (weight without mass: the walls above carry their own)") \
+X(eTop_2, 249, "eTop_2", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 2 (psi_2) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_2| <= b_2/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_2, 210, "md_2", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 2 per metre of wall, in (0, 1e9]") \
 X(kd_2, 211, "kd_2", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 2 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_2, 212, "zetad_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 2 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
@@ -155,6 +158,7 @@ X(tie_3, 306, "tie_3", Real, "parameter", "fixed", "exact", 100000000.0, "N/m2",
 X(er_3, 307, "er_3", Real, "parameter", "fixed", "exact", 0.86, "1", 0, 0, "Coefficient of restitution of the wall of storey 3, in [0, 1]") \
 X(hingeLaw_3, 308, "hingeLaw_3", Integer, "parameter", "fixed", "exact", 4, "", 0, 0, "Hinge law of the wall of storey 3: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge") \
 X(psiWeightOnly_3, 309, "psiWeightOnly_3", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 3: 2 (weight of the walls above)/W_3, in [0, 20] (weight without mass: the walls above carry their own)") \
+X(eTop_3, 349, "eTop_3", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 3 (psi_3) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_3| <= b_3/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_3, 310, "md_3", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 3 per metre of wall, in (0, 1e9]") \
 X(kd_3, 311, "kd_3", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 3 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_3, 312, "zetad_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 3 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
@@ -203,6 +207,7 @@ X(tie_4, 406, "tie_4", Real, "parameter", "fixed", "exact", 100000000.0, "N/m2",
 X(er_4, 407, "er_4", Real, "parameter", "fixed", "exact", 0.86, "1", 0, 0, "Coefficient of restitution of the wall of storey 4, in [0, 1]") \
 X(hingeLaw_4, 408, "hingeLaw_4", Integer, "parameter", "fixed", "exact", 4, "", 0, 0, "Hinge law of the wall of storey 4: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge") \
 X(psiWeightOnly_4, 409, "psiWeightOnly_4", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 4: 2 (weight of the walls above)/W_4, in [0, 20] (weight without mass: the walls above carry their own)") \
+X(eTop_4, 449, "eTop_4", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 4 (psi_4) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_4| <= b_4/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_4, 410, "md_4", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 4 per metre of wall, in (0, 1e9]") \
 X(kd_4, 411, "kd_4", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 4 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_4, 412, "zetad_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 4 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
@@ -251,6 +256,7 @@ X(tie_5, 506, "tie_5", Real, "parameter", "fixed", "exact", 100000000.0, "N/m2",
 X(er_5, 507, "er_5", Real, "parameter", "fixed", "exact", 0.86, "1", 0, 0, "Coefficient of restitution of the wall of storey 5, in [0, 1]") \
 X(hingeLaw_5, 508, "hingeLaw_5", Integer, "parameter", "fixed", "exact", 4, "", 0, 0, "Hinge law of the wall of storey 5: 1 rigid, 2 semiRigidPaper, 3 semiRigidHinge, 4 dohertyHinge") \
 X(psiWeightOnly_5, 509, "psiWeightOnly_5", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 5: 2 (weight of the walls above)/W_5, in [0, 20] (weight without mass: the walls above carry their own)") \
+X(eTop_5, 549, "eTop_5", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 5 (psi_5) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_5| <= b_5/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_5, 510, "md_5", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 5 per metre of wall, in (0, 1e9]") \
 X(kd_5, 511, "kd_5", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 5 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_5, 512, "zetad_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 5 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \

@@ -8,19 +8,15 @@ DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
 
 
 def start_values(building):
-    """{name: value} of every parameter the building sets (the FMU's defaults for the rest). A
-    ValueError for an eccentric overburden (wall.e_top), which the FMU does not take."""
-    eccentric = [i for i, s in enumerate(building.storeys, 1) if s.wall.e_top != 0.0]
-    if eccentric:
-        raise ValueError(f"storey {eccentric[0]}: BuildingWithWalls.fmu takes the overburden on the centreline; "
-                         "a wall's e_top runs with `rockingwall building` or the co-simulation (couple-building)")
+    """{name: value} of every parameter the building sets (the FMU's defaults for the rest)."""
     v = {"nStoreys": len(building.storeys), "rigidInPlane": int(building.rigid_in_plane), "storeyLaw": 0,
          "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
          "rayleighStiffness": 0.0, **building.fmu_hysteresis()}
     for i, s in enumerate(building.storeys, 1):
         w, d, wall = s.wall, s.diaphragm, building.wall_parameters(i - 1)
         v.update({f"hasWall_{i}": 1, f"h_{i}": s.height, f"b_{i}": w.b, f"W_{i}": w.W,
-                  f"psi_{i}": wall["psi"], f"psiWeightOnly_{i}": wall["psiWeightOnly"], f"tie_{i}": s.tie,
+                  f"psi_{i}": wall["psi"], f"psiWeightOnly_{i}": wall["psiWeightOnly"], f"eTop_{i}": wall["eTop"],
+                  f"tie_{i}": s.tie,
                   f"er_{i}": w.e_r,
                   f"hingeLaw_{i}": hinge_law_code(w.hinge_law),
                   f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"zetad_{i}": d.damping})
