@@ -293,9 +293,9 @@ def add_to_cases(cases, by_pga):
     return pd.concat([cases, extra], axis=1)
 
 
-STIFF_DIAPHRAGMS = ("the codes assume stiff diaphragms: their columns do not change with K_d; UNCONSERVATIVE: the "
-                    "code passes, the time history collapses or passes the code's usable displacement (C8 Delta_m; "
-                    "NTC du* at the control point; ASCE 41 collapse only)")
+UNCONSERVATIVE_MEANING = ("UNCONSERVATIVE: the code passes, the time history collapses or passes the code's usable "
+                          "displacement (C8 Delta_m; NTC du* at the control point; ASCE 41 collapse only)")
+STIFF_DIAPHRAGMS = f"the codes assume stiff diaphragms: their columns do not change with K_d; {UNCONSERVATIVE_MEANING}"
 
 
 def head_lines(by_pga):

@@ -8,6 +8,8 @@ the last storey) unless --building-height says otherwise; ASCE 41's storey follo
 wall's place (first, top, other, or the wall of a one-storey building). Each check takes the wall
 the scene runs (its overburden, and the walls above as weight only), and assumes, as the codes do,
 stiff diaphragms: the time histories beside it have the building's own."""
+import math
+
 import pandas as pd
 
 from . import assessment_codes
@@ -66,7 +68,8 @@ def head_lines(per_storey):
             if key is not None:
                 lines.append(f"  code hazard at PGA {key:g} g (each case's):")
             lines += ["  " + line for line in assessment_codes.checks_lines(checks)]
-    lines.append(f"each wall at its mid-height in the building; {assessment_codes.STIFF_DIAPHRAGMS}")
+    lines.append("each wall at its mid-height in the building; the codes assume stiff diaphragms, the time histories "
+                 f"have the building's own; {assessment_codes.UNCONSERVATIVE_MEANING}")
     return lines
 
 
@@ -74,3 +77,40 @@ def to_json(per_storey):
     """The checks as plain data: one entry per storey and hazard, with its storey (1 = ground)."""
     return [dict(storey=i, **assessment_codes.checks_json(checks))
             for i, by_pga in enumerate(per_storey, 1) for checks in by_pga.values()]
+
+
+def checks_at(by_pga, pga_g):
+    """The CodeChecks of one storey for a record at pga_g [g] (the site's, or that PGA's)."""
+    return by_pga[None] if None in by_pga else by_pga[assessment_codes.pga_key(pga_g)]
+
+
+def unconservative(per_storey, results, pgas):
+    """[(record, storey, [code labels], collapsed)] where a code passes a wall that the building's
+    run (monolithic.BuildingResult, one per record at pgas [g]) collapses or takes past the code's
+    usable displacement."""
+    out = []
+    for result, pga in zip(results, pgas):
+        for s, by_pga in zip(result.storeys, per_storey):
+            flags = assessment_codes.unconservative(checks_at(by_pga, pga),
+                                                    math.nan if s.collapsed else s.peak_s1_m, s.collapsed)
+            codes = [assessment_codes.LABELS[c] for c, flagged in flags.items() if flagged]
+            if codes:
+                out.append((result.record, s.storey, codes, bool(s.collapsed)))
+    return out
+
+
+def unconservative_lines(per_storey, results, pgas):
+    """One line per storey and record where a code is unconservative, or one saying none is."""
+    rows = unconservative(per_storey, results, pgas)
+    if not rows:
+        return ["UNCONSERVATIVE: none (no code passes a wall that its run collapses or takes past the code's "
+                "usable displacement)"]
+    return [f"UNCONSERVATIVE: {record}, storey {storey}: passed by {', '.join(codes)}; the run "
+            + ("collapses it" if collapsed else "takes it past the code's usable displacement")
+            for record, storey, codes, collapsed in rows]
+
+
+def unconservative_json(per_storey, results, pgas):
+    """unconservative() as plain data: [{"record", "storey", "codes", "collapsed"}]."""
+    return [{"record": record, "storey": storey, "codes": codes, "collapsed": collapsed}
+            for record, storey, codes, collapsed in unconservative(per_storey, results, pgas)]

@@ -106,3 +106,25 @@ def test_the_codes_take_where_the_building_file_says_the_overburden_bears(repo, 
     B = (W / 8 + W / 2 * 0.75 + P) / hb
     assert row.nzsee_delta_i_mm == pytest.approx(A / (2 * B) * 1e3, rel=1e-5)
     assert row.nzsee_delta_i_mm < 220.4 - 8  # the centred load: 220.4 mm
+
+
+def test_the_building_command_puts_the_codes_beside_its_runs(repo, capsys):
+    """`rockingwall building --code`: the same checks as assess (the upper wall's C8 at 22 %NBS),
+    and a line where a code passes a wall that the run takes past the code's usable displacement:
+    NTC on the ground wall at El Centro 0.3 g (assess's flag above)."""
+    house = str(repo / "examples" / "two-storey-brick.toml")
+    args = ["building", house, "elcentro", "--pga", "0.3", "--code", "nzsee", "ntc", "asce41", *SITE]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "codes on storey 2's wall:" in out and "220.4 mm" in out and "22 %NBS, fail" in out
+    assert ("UNCONSERVATIVE: El Centro 1940 at 0.3 g, storey 1: passed by NTC 2018; the run takes it past the "
+            "code's usable displacement") in out
+    assert main(args + ["--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [c["storey"] for c in data["codes"]] == [1, 2]
+    assert data["code_unconservative"] == [{"record": "El Centro 1940 at 0.3 g", "storey": 1, "codes": ["NTC 2018"],
+                                            "collapsed": False}]
+    assert main(["building", house, "elcentro", "--pga", "0.3", "--json"]) == 0
+    assert "codes" not in json.loads(capsys.readouterr().out)  # the contract without --code is unchanged
+    assert main(["building", house, "elcentro", "--pga", "0.3", "--nz-Z", "0.3"]) == 2
+    assert "--nz-Z is an input of the code checks: give --code too" in capsys.readouterr().err

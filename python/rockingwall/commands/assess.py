@@ -29,6 +29,7 @@ from ..api import ENGINES, PARAPET_ON_CVODE
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
+from .code_options import add_code_arguments, code_checks
 
 
 def parser(sub):
@@ -62,17 +63,6 @@ def parser(sub):
     return p
 
 
-def add_code_arguments(p):
-    g = p.add_argument_group("code checks beside the time histories (docs/codes.md; values with units, "
-                             "e.g. '5.8m', '0.25g', '0.3s')")
-    g.add_argument("--code", nargs="+", choices=assessment_codes.CODES, metavar="CODE",
-                   help="add each code's capacity, demand and verdict to every case: nzsee (NZSEE C8 with "
-                        "NZS 1170.5; a parapet's check for --support parapet), ntc (NTC 2018, Circolare C8.7.1), "
-                        "asce41 (ASCE 41-17 h/t); writes codes.json")
-    for flag, (attr, unit, _, text) in assessment_codes.OPTIONS.items():
-        g.add_argument(flag, dest=attr, metavar=assessment_codes.METAVARS[unit], help=text)
-
-
 @dataclasses.dataclass
 class Study:
     """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
@@ -102,7 +92,7 @@ def main(args):
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
     lvs = assessment.levels(recs, args)
-    codes = code_checks(args, study, [lv.record.pga / intensity.G for lv in lvs])
+    codes = code_checks(args, [lv.record.pga / intensity.G for lv in lvs], wall=study.wall, building=study.building)
     code_view = assessment_codes_building if args.building else assessment_codes  # one wall, or per storey
     if codes is not None:
         study.head.extend(code_view.head_lines(codes))
@@ -126,21 +116,6 @@ def main(args):
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
                                    args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
-
-
-def code_checks(args, study, pgas):
-    """The code checks of --code on the study's wall, per hazard (None without --code; assessment_codes.
-    checks_by_hazard), or on every storey's wall of its building (assessment_codes_building.
-    checks_by_storey); every option checked before any run; pgas [g]: the cases' PGAs."""
-    given = [flag for flag, (attr, *_) in assessment_codes.OPTIONS.items() if getattr(args, attr) is not None]
-    if not args.code:
-        if given:
-            raise ValueError(f"{given[0]} is an input of the code checks: give --code too")
-        return None
-    values = assessment_codes.option_values(args)
-    if study.building is not None:
-        return assessment_codes_building.checks_by_storey(study.building, args.code, values, pgas, given)
-    return assessment_codes.checks_by_hazard(study.wall, args.code, values, pgas, given)
 
 
 def wall_study(args):
