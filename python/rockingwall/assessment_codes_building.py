@@ -1,5 +1,6 @@
-"""The code checks beside `rockingwall assess --building`: NZSEE C8, NTC 2018 and ASCE 41-17 on
-every storey's wall, each where it stands in the building, as columns of that storey's cases.
+"""The code checks beside a building's runs (`rockingwall assess --building`, `rockingwall building
+--code`): NZSEE C8, NTC 2018 and ASCE 41-17 on every storey's wall, each where it stands in the
+building, as columns of that storey's cases or lines after the building's table.
 
 Where a wall is: it spans from the floor below to the diaphragm above, so C8's h_i and the
 Circolare's z are its mid-height (the average of those two floors' heights, as an assessor takes
@@ -16,7 +17,7 @@ from . import assessment_codes
 from .assessment_building import STOREY_COLUMN, storey_walls
 
 # options that place one wall: in a building each storey's wall has its own place
-PLACE_OPTIONS = {"--attachment-height": "attachment_height", "--asce-storey": "asce_storey"}
+PLACE_OPTIONS = ("--attachment-height", "--asce-storey")
 
 
 def wall_places(building, building_height=None):
