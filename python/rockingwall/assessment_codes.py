@@ -280,12 +280,18 @@ def pga_key(pga_g):
     return round(float(pga_g), 9)
 
 
+def checks_at(by_pga, pga_g):
+    """The CodeChecks for a case at pga_g [g] in the checks per hazard: the options' site's, or
+    that PGA's."""
+    return by_pga[None] if None in by_pga else by_pga[pga_key(pga_g)]
+
+
 def add_to_cases(cases, by_pga):
     """cases (assess's DataFrame) with the code columns and <code>_unconservative per row; by_pga:
     {None: CodeChecks} for the options' site, or {pga_key(PGA): CodeChecks} per case PGA."""
     rows = []
     for r in cases.to_dict("records"):
-        checks = by_pga[None] if None in by_pga else by_pga[pga_key(r["pga_g"])]
+        checks = checks_at(by_pga, r["pga_g"])
         peak = r["peak_s2_mm"] if checks.element == "parapet" else r["peak_s1_mm"]
         flags = unconservative(checks, peak / 1e3 if np.isfinite(peak) else math.nan, r["collapsed"])
         rows.append({**columns(checks), **{f"{code}_unconservative": flags[code] for code in checks.codes}})

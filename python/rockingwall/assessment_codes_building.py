@@ -80,11 +80,6 @@ def to_json(per_storey):
             for i, by_pga in enumerate(per_storey, 1) for checks in by_pga.values()]
 
 
-def checks_at(by_pga, pga_g):
-    """The CodeChecks of one storey for a record at pga_g [g] (the site's, or that PGA's)."""
-    return by_pga[None] if None in by_pga else by_pga[assessment_codes.pga_key(pga_g)]
-
-
 def unconservative(per_storey, results, pgas):
     """[(record, storey, [code labels], collapsed)] where a code passes a wall that the building's
     run (monolithic.BuildingResult, one per record at pgas [g]) collapses or takes past the code's
@@ -92,7 +87,7 @@ def unconservative(per_storey, results, pgas):
     out = []
     for result, pga in zip(results, pgas):
         for s, by_pga in zip(result.storeys, per_storey):
-            flags = assessment_codes.unconservative(checks_at(by_pga, pga),
+            flags = assessment_codes.unconservative(assessment_codes.checks_at(by_pga, pga),
                                                     math.nan if s.collapsed else s.peak_s1_m, s.collapsed)
             codes = [assessment_codes.LABELS[c] for c, flagged in flags.items() if flagged]
             if codes:
