@@ -1,8 +1,17 @@
-/* A scene over a record with CVODE (rw_scene_run.h): BDF, dense Newton, root-finding on the walls'
- * event indicators, the walls' event rules at each root, and the energy balance's two work
- * integrals as CVODE quadratures (outside its error test). CVODE stops at every record sample
- * (a kink of the interpolated input) and every output time, and restarts after every event. */
+/* A scene over a record with CVODE (rw_scene_run.h): root-finding on the walls' event indicators,
+ * the walls' event rules at each root, and the energy balance's two work integrals as CVODE
+ * quadratures (outside its error test). CVODE stops at every record sample (a kink of the
+ * interpolated input) and every output time, and restarts after every event.
+ *
+ * The method: Adams, with fixed-point iteration, and with dense Newton from where the scene proves
+ * stiff. The scene's fastest modes are lightly damped oscillations (a stiff tie, in-plane walls)
+ * that a relative tolerance must resolve whatever the method; at the steps that resolve them Adams
+ * (orders up to 12) takes fewer steps than BDF (up to 5) and damps them less, and fixed-point
+ * iteration needs no Jacobian or linear solve. It fails to converge where a mode is fast against
+ * the steps (a very stiff dashpot, a loose tolerance on a stiff tie): Newton converges there, and
+ * Adams's orders 1 and 2 are A-stable. BDF with Newton throughout is kept on request (opt->bdf). */
 #include "rw_scene_run.h"
+#include "rw_scene_step_peaks.h"
 
 #include <cvodes/cvodes.h>
 #include <math.h>
@@ -12,9 +21,16 @@
 #include <string.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
 
 #define MAX_ROUNDS_PER_EVENT 100
 #define MAX_STEPS 20000000L
+/* the scene proves stiff when fixed-point iteration fails to converge on more than STIFF_SHARE of
+ * STIFF_WINDOW steps (where it suits the scene it fails on hardly any) */
+#define STIFF_WINDOW 200L
+#define STIFF_SHARE 0.1
+
+enum { ADAMS_FIXED_POINT, ADAMS_NEWTON, BDF_NEWTON };
 
 typedef struct {
     rw_scene sc;
@@ -24,11 +40,16 @@ typedef struct {
     size_t hint;     /* the record interval of the last look-up */
     size_t next_out; /* the next row of the output grid */
     double losses;   /* energy taken out at events */
+    rw_step_end last_end; /* the peak quantities at the last step's end, after its events */
     SUNContext ctx;
     void *mem;
+    int method;
+    long window_steps, window_fails; /* fixed-point steps and convergence failures in this window */
+    long fails_seen;                 /* CVODE's count of convergence failures since its last (re)start */
     N_Vector y, abstol, q;
     SUNMatrix A;
     SUNLinearSolver LS;
+    SUNNonlinearSolver NLS;
     char cvode_msg[160];
 } run;
 
@@ -96,40 +117,68 @@ static void set_abstol(run *r, double rtol)
     for (i = 0; i < N * BD_STATES_PER_FLOOR; i++) a[RW_NX * N + i] = rtol * floor_scale[i % BD_STATES_PER_FLOOR];
 }
 
-static void free_run(run *r)
+static void free_solver(run *r)
 {
     if (r->mem) CVodeFree(&r->mem);
     if (r->LS) SUNLinSolFree(r->LS);
     if (r->A) SUNMatDestroy(r->A);
+    if (r->NLS) SUNNonlinSolFree(r->NLS);
+    r->LS = NULL, r->A = NULL, r->NLS = NULL;
+}
+
+static void free_run(run *r)
+{
+    free_solver(r);
     if (r->y) N_VDestroy(r->y);
     if (r->abstol) N_VDestroy(r->abstol);
     if (r->q) N_VDestroy(r->q);
     if (r->ctx) SUNContext_Free(&r->ctx);
 }
 
-static int allocate(run *r)
+static int allocate_vectors(run *r)
 {
     const int nx = r->sc.nx;
     if (SUNContext_Create(NULL, &r->ctx) != 0) return 0;
     r->y = N_VNew_Serial(nx, r->ctx);
     r->abstol = N_VNew_Serial(nx, r->ctx);
     r->q = N_VNew_Serial(2, r->ctx);
-    r->mem = CVodeCreate(CV_BDF, r->ctx);
-    r->A = SUNDenseMatrix(nx, nx, r->ctx);
-    r->LS = (r->y && r->A) ? SUNLinSol_Dense(r->y, r->A, r->ctx) : NULL;
-    return r->y && r->abstol && r->q && r->mem && r->LS;
+    return r->y && r->abstol && r->q;
 }
 
+/* CVODE's memory and iteration for a method (any former ones freed) */
+static int allocate_solver(run *r, int method)
+{
+    const int nx = r->sc.nx;
+    free_solver(r);
+    r->method = method;
+    r->mem = CVodeCreate(method == BDF_NEWTON ? CV_BDF : CV_ADAMS, r->ctx);
+    if (method == ADAMS_FIXED_POINT) {
+        r->NLS = SUNNonlinSol_FixedPoint(r->y, 0, r->ctx);
+        return r->mem && r->NLS;
+    }
+    r->A = SUNDenseMatrix(nx, nx, r->ctx);
+    r->LS = r->A ? SUNLinSol_Dense(r->y, r->A, r->ctx) : NULL;
+    return r->mem && r->LS;
+}
+
+static int attach_iteration(run *r, double t0)
+{
+    if (r->method == ADAMS_FIXED_POINT)
+        return cvode_ok(r, CVodeSetNonlinearSolver(r->mem, r->NLS), "CVodeSetNonlinearSolver", t0);
+    return cvode_ok(r, CVodeSetLinearSolver(r->mem, r->LS, r->A), "CVodeSetLinearSolver", t0);
+}
+
+/* CVODE set up from (t0, y, q): at the start, and where the run goes on with Newton */
 static int setup_cvode(run *r, double t0)
 {
     const double rtol = r->opt->rtol > 0 ? r->opt->rtol : 1e-8;
     set_abstol(r, rtol);
-    N_VConst(0.0, r->q);
+    r->fails_seen = 0;
     return cvode_ok(r, CVodeSetErrHandlerFn(r->mem, cvode_error, r), "CVodeSetErrHandlerFn", t0) &&
            cvode_ok(r, CVodeInit(r->mem, rhs, t0, r->y), "CVodeInit", t0) &&
            cvode_ok(r, CVodeSetUserData(r->mem, r), "CVodeSetUserData", t0) &&
            cvode_ok(r, CVodeSVtolerances(r->mem, rtol, r->abstol), "CVodeSVtolerances", t0) &&
-           cvode_ok(r, CVodeSetLinearSolver(r->mem, r->LS, r->A), "CVodeSetLinearSolver", t0) &&
+           attach_iteration(r, t0) &&
            cvode_ok(r, CVodeSetMaxNumSteps(r->mem, MAX_STEPS), "CVodeSetMaxNumSteps", t0) &&
            cvode_ok(r, CVodeSetNoInactiveRootWarn(r->mem), "CVodeSetNoInactiveRootWarn", t0) &&
            cvode_ok(r, CVodeRootInit(r->mem, RW_NZ * r->sc.S.n_storeys, roots), "CVodeRootInit", t0) &&
@@ -143,8 +192,27 @@ static void track(double *peak, double v)
     if (fabs(v) > *peak) *peak = fabs(v);
 }
 
-/* peaks, the output row due at t, and the energy balance, at a step's end */
-static void observe(run *r, double t)
+/* the peaks inside the step that ends at t in the state x (before any event there) */
+static void peaks_inside(run *r, double t, const double x[], const double dx[])
+{
+    double *peaks[RW_PEAK_KINDS] = {r->res->peak_s1, r->res->peak_s2, r->res->peak_diaphragm};
+    rw_step_end end;
+    rw_step_end_at(&r->sc, t, x, dx, &end);
+    rw_step_peaks_inside(&r->sc, &r->last_end, &end, peaks);
+}
+
+/* the same before the events at t change the state */
+static void peaks_inside_before_events(run *r, double t)
+{
+    const double *x = N_VGetArrayPointer(r->y);
+    double dx[RW_SCENE_NX];
+    rw_scene_derivatives(&r->sc, ground(r, t), x, dx, NULL);
+    peaks_inside(r, t, x, dx);
+}
+
+/* peaks, the output row due at t, and the energy balance, at a step's end; with peaks inside the
+ * step unless events at t took them already */
+static void observe(run *r, double t, int peaks_taken)
 {
     rw_scene_result *res = r->res;
     const double *x = N_VGetArrayPointer(r->y);
@@ -154,6 +222,8 @@ static void observe(run *r, double t)
     rw_scene_aux aux;
     int i;
     rw_scene_derivatives(&r->sc, ag, x, dx, &aux);
+    if (!peaks_taken) peaks_inside(r, t, x, dx);
+    rw_step_end_at(&r->sc, t, x, dx, &r->last_end);
     for (i = 0; i < r->sc.S.n_storeys; i++) {
         s1 = rw_scene_s1(&r->sc, x, i);
         s2 = rw_scene_s2(&r->sc, x, i);
@@ -193,6 +263,7 @@ static int handle_events(run *r, double t)
             return RW_SCENE_ZENO;
         }
     } while (flags & 3);
+    r->fails_seen = 0;
     if (!cvode_ok(r, CVodeReInit(r->mem, t, r->y), "CVodeReInit", t) ||
         !cvode_ok(r, CVodeQuadReInit(r->mem, r->q), "CVodeQuadReInit", t))
         return RW_SCENE_SOLVER;
@@ -211,6 +282,33 @@ static double next_stop(const run *r, double t)
     return stop;
 }
 
+/* The run goes on with Newton iteration from (t, y, q) */
+static int switch_to_newton(run *r, double t)
+{
+    if (!allocate_solver(r, ADAMS_NEWTON)) {
+        snprintf(r->res->message, sizeof r->res->message, "out of memory setting up Newton at t = %.9g s", t);
+        return RW_SCENE_NO_MEMORY;
+    }
+    r->res->t_newton = t;
+    return setup_cvode(r, t) ? RW_SCENE_OK : RW_SCENE_SOLVER;
+}
+
+/* fixed-point iteration failed to converge on too many of the last window's steps (CVODE counts
+ * its failures from its last restart, so the window keeps its own count) */
+static int proves_stiff(run *r)
+{
+    long fails = 0;
+    int stiff;
+    if (r->method != ADAMS_FIXED_POINT) return 0;
+    CVodeGetNumNonlinSolvConvFails(r->mem, &fails);
+    r->window_fails += fails - r->fails_seen;
+    r->fails_seen = fails;
+    if (++r->window_steps < STIFF_WINDOW) return 0;
+    stiff = r->window_fails > STIFF_SHARE * (double)r->window_steps;
+    r->window_steps = r->window_fails = 0;
+    return stiff;
+}
+
 static int integrate(run *r, double t)
 {
     const double t_end = r->opt->t_end;
@@ -219,14 +317,21 @@ static int integrate(run *r, double t)
         int flag;
         if (!cvode_ok(r, CVodeSetStopTime(r->mem, stop), "CVodeSetStopTime", t)) return RW_SCENE_SOLVER;
         flag = CVode(r->mem, stop, r->y, &t, CV_ONE_STEP);
+        if (flag < 0 && r->method == ADAMS_FIXED_POINT) { /* y is left at the last step taken */
+            const int code = cvode_ok(r, CVodeGetQuad(r->mem, &t, r->q), "CVodeGetQuad", t) ? switch_to_newton(r, t)
+                                                                                            : RW_SCENE_SOLVER;
+            if (code) return code;
+            continue;
+        }
         if (!cvode_ok(r, flag, "CVode", t)) return RW_SCENE_SOLVER;
         if (!cvode_ok(r, CVodeGetQuad(r->mem, &t, r->q), "CVodeGetQuad", t)) return RW_SCENE_SOLVER;
         r->res->steps++;
-        if (flag == CV_ROOT_RETURN) {
-            const int code = handle_events(r, t);
+        if (flag == CV_ROOT_RETURN) peaks_inside_before_events(r, t);
+        if (flag == CV_ROOT_RETURN || proves_stiff(r)) {
+            const int code = flag == CV_ROOT_RETURN ? handle_events(r, t) : switch_to_newton(r, t);
             if (code) return code;
         }
-        observe(r, t);
+        observe(r, t, flag == CV_ROOT_RETURN);
         r->res->t_reached = t;
     }
     return RW_SCENE_OK;
@@ -276,6 +381,7 @@ int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw
     if (!spec || !rec || !opt || !res) return RW_SCENE_BAD_ARGUMENT;
     res->message[0] = '\0';
     res->steps = res->events = 0;
+    res->t_newton = NAN;
     if (rw_scene_check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
     if (rw_scene_validate(spec, res->message, sizeof res->message)) return RW_SCENE_BAD_SPEC;
     r = (run *)calloc(1, sizeof *r);
@@ -285,16 +391,18 @@ int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw
     r->res = res;
     rw_scene_start_state(spec, opt->x0, x);
     rw_scene_init(&r->sc, spec, rec->ag[0], x);
-    if (!allocate(r)) {
+    if (!allocate_vectors(r) || !allocate_solver(r, opt->bdf ? BDF_NEWTON : ADAMS_FIXED_POINT)) {
         free_run(r);
         free(r);
         return snprintf(res->message, sizeof res->message, "out of memory setting up CVODE"), RW_SCENE_NO_MEMORY;
     }
     memcpy(N_VGetArrayPointer(r->y), x, sizeof(double) * (size_t)r->sc.nx);
+    N_VConst(0.0, r->q);
+    if (opt->bdf) res->t_newton = rec->t[0];
     res->energy_start = energy(r, rec->t[0]);
     code = setup_cvode(r, rec->t[0]) ? handle_events(r, rec->t[0]) : RW_SCENE_SOLVER;
     if (code == RW_SCENE_OK) {
-        observe(r, rec->t[0]);
+        observe(r, rec->t[0], 1);
         code = integrate(r, rec->t[0]);
     }
     collect(r, res);

@@ -1,5 +1,5 @@
-/* A scene (rw_scene.h) run over a ground-motion record with CVODE: BDF with root-finding on every
- * wall's event indicators and the walls' own event rules at each root, one integration for the
+/* A scene (rw_scene.h) run over a ground-motion record with CVODE: Adams (fixed-point iteration, Newton
+ * where the scene proves stiff) with root-finding on every wall's event indicators and the walls' own event rules at each root, one integration for the
  * whole scene. Works for every spring law of the building (linear, Bouc-Wen, pinched). */
 #ifndef RW_SCENE_RUN_H
 #define RW_SCENE_RUN_H
@@ -33,6 +33,7 @@ typedef struct {
     /* optional start state (RW_SCENE_NX values in the scene's layout, rw_scene.h), NULL = rest; the
      * floors' states are taken as zero when the in-plane walls are rigid */
     const double *x0;
+    int bdf; /* 1: CVODE takes BDF with Newton throughout; 0: Adams, Newton from where the scene proves stiff */
 } rw_scene_options;
 
 typedef struct {
@@ -49,6 +50,7 @@ typedef struct {
      * collapsed and left the scene with their energy); residual = the difference of the two sides */
     double work_ground, work_damping, event_losses, energy_start, energy_end;
     double max_residual, max_work; /* max |residual| and max |W_ground| over the run */
+    double t_newton; /* CVODE: when the run went on with Newton iteration (t0: from the start; NaN: never) */
     /* optional histories on the grid (caller-allocated, n_out * RW_SCENE_MAX_STOREYS each, row-major
      * [row][storey]) or NULL */
     double *s1_out, *s2_out, *diaphragm_out, *base_acc_out;

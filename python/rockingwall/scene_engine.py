@@ -53,7 +53,7 @@ class _Record(ctypes.Structure):
 
 class _Options(ctypes.Structure):
     _fields_ = [("t_end", _D), ("rtol", _D), ("n_out", ctypes.c_size_t), ("t_out", ctypes.POINTER(_D)),
-                ("x0", ctypes.POINTER(_D))]
+                ("x0", ctypes.POINTER(_D)), ("bdf", ctypes.c_int)]
 
 
 class _Result(ctypes.Structure):
@@ -62,7 +62,7 @@ class _Result(ctypes.Structure):
                 ("t_collapse", _D5), ("impacts", ctypes.c_long * MAX_STOREYS),
                 ("steps", ctypes.c_long), ("events", ctypes.c_long), ("t_reached", _D),
                 ("work_ground", _D), ("work_damping", _D), ("event_losses", _D), ("energy_start", _D),
-                ("energy_end", _D), ("max_residual", _D), ("max_work", _D),
+                ("energy_end", _D), ("max_residual", _D), ("max_work", _D), ("t_newton", _D),
                 ("s1_out", ctypes.POINTER(_D)), ("s2_out", ctypes.POINTER(_D)),
                 ("diaphragm_out", ctypes.POINTER(_D)), ("base_acc_out", ctypes.POINTER(_D)),
                 ("message", ctypes.c_char * 256)]
@@ -120,7 +120,8 @@ class Result:
     [m/s2]; collapse, its reason (1 past instability, 2 past the toppling limit) and time (NaN if
     standing); impacts. Energy balance terms [J/m] and the
     largest residual over the run; histories on the grid if one was asked for; which engine ran
-    ("exact" or "cvode")."""
+    ("exact" or "cvode"); for CVODES, t_newton: when it went on with Newton iteration (the start with
+    bdf; NaN if fixed-point iteration held throughout; None for the exact engine)."""
     peak_s1: np.ndarray
     peak_s2: np.ndarray
     peak_diaphragm: np.ndarray
@@ -140,6 +141,7 @@ class Result:
     max_residual: float
     max_work: float
     engine: str = "cvode"
+    t_newton: float = None
     t: np.ndarray = None
     s1: np.ndarray = None
     s2: np.ndarray = None
@@ -217,13 +219,14 @@ def state_size(spec):
     return 12 * len(spec.storeys)
 
 
-def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, histories=HISTORIES):
+def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, histories=HISTORIES, bdf=False):
     """One run of the scene from rest (or the start state x0, state_size(spec) values) under the
     record (t [s], ag [m/s2], linear between samples, the ends held), to t_end (default: the
     record's end). engine: "exact", "cvode", or None for the exact engine where it covers the
     scene and CVODES (at rtol) elsewhere; the result says which ran. Raises SceneError, or
     ValueError for an engine name it does not know. histories: which of HISTORIES to keep on the
-    grid t_out (the others are None)."""
+    grid t_out (the others are None). bdf: CVODES takes BDF with Newton throughout (by default
+    Adams, with fixed-point iteration and with Newton from where the scene proves stiff)."""
     if engine is None:
         engine = "exact" if exact_covers(spec)[0] else "cvode"
     if engine not in ENGINES:
@@ -243,7 +246,8 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, hi
     hist = _histories(n_out, histories)
     res = _Result()
     res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out = (_ptr(h) for h in hist)
-    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), _ptr(start))
+    opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), _ptr(start),
+                   int(bool(bdf)))
     c = c_spec(spec)
     fn = _function("rw_scene_run_exact" if engine == "exact" else "rw_scene_run")
     code = fn(ctypes.byref(c), ctypes.byref(_Record(t.size, _ptr(t), _ptr(ag))), ctypes.byref(opt), ctypes.byref(res))
@@ -255,4 +259,5 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, hi
     return Result(**per, collapsed=np.array(res.collapsed[:n], dtype=bool), steps=res.steps, events=res.events,
                   t_reached=res.t_reached, work_ground=res.work_ground, work_damping=res.work_damping,
                   event_losses=res.event_losses, energy_start=res.energy_start, energy_end=res.energy_end,
-                  max_residual=res.max_residual, max_work=res.max_work, engine=engine, t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc)
+                  max_residual=res.max_residual, max_work=res.max_work, engine=engine,
+                  t_newton=res.t_newton if engine == "cvode" else None, t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc)

@@ -140,8 +140,9 @@ static void pulse(double D, double t[401], double ag[401])
     }
 }
 
-/* the exact engine against CVODES at rtol 1e-10: peaks within 1e-4, the same impacts and collapses */
-static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, double D)
+/* the exact engine against CVODES at rtol 1e-10 (Adams, or BDF with bdf): peaks within 1e-4, the
+ * same impacts and collapses; stiff: Adams goes on with Newton iteration */
+static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, double D, int bdf, int stiff)
 {
     rw_scene_result a, b;
     rw_scene_options opt;
@@ -151,12 +152,13 @@ static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, dou
     pulse(D, t, ag);
     rec.n = 401, rec.t = t, rec.ag = ag;
     memset(&opt, 0, sizeof opt);
-    opt.t_end = 2.0, opt.rtol = 1e-10;
+    opt.t_end = 2.0, opt.rtol = 1e-10, opt.bdf = bdf;
     memset(&a, 0, sizeof a);
     memset(&b, 0, sizeof b);
     ca = rw_scene_run_exact(spec, &rec, &opt, &a);
     cb = rw_scene_run(spec, &rec, &opt, &b);
     CHECK(ca == 0 && cb == 0, "%s: runs failed: %d %s / %d %s", what, ca, a.message, cb, b.message);
+    CHECK(bdf || stiff ? b.t_newton < 1.0 : isnan(b.t_newton), "%s, bdf %d: Newton from t = %g", what, bdf, b.t_newton);
     for (i = 0; i < spec->n_storeys; i++) {
         CHECK(fabs(a.peak_s1[i] - b.peak_s1[i]) <= 1e-4 * b.peak_s1[i], "%s, storey %d: peak s1 %.9g against %.9g",
               what, i, a.peak_s1[i], b.peak_s1[i]);
@@ -170,12 +172,13 @@ static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, dou
           a.max_residual, a.max_work);
 }
 
-/* two storeys on flexible in-plane walls (soft ties), and one storey with a stiff tie (its mode a
- * band over the record's intervals, halved near events) */
+/* two storeys on flexible in-plane walls (soft ties), one storey with a stiff tie (its mode a band
+ * over the record's intervals, halved near events), and one with a stiff dashpot (300 times
+ * critical), each with Adams and with BDF */
 static void test_runs_against_cvodes(void)
 {
     rw_scene_spec spec;
-    int i;
+    int i, bdf;
     srand(7);
     memset(&spec, 0, sizeof spec);
     spec.n_storeys = 2;
@@ -187,11 +190,13 @@ static void test_runs_against_cvodes(void)
         spec.building.md[i] = 200.0, spec.building.diaph[i].k = 5e4, spec.building.cd[i] = 300.0;
         spec.building.m[i] = 2000.0, spec.building.storey[i].k = 5e7, spec.building.cs[i] = 1e4;
     }
-    compare_with_cvodes("two storeys", &spec, 0.05);
+    for (bdf = 0; bdf < 2; bdf++) compare_with_cvodes("two storeys", &spec, 0.05, bdf, 0);
     spec.n_storeys = 1;
     spec.rigid_in_plane = 1;
     spec.wall[0].Kd = 1e8;
-    compare_with_cvodes("stiff tie", &spec, 0.06);
+    for (bdf = 0; bdf < 2; bdf++) compare_with_cvodes("stiff tie", &spec, 0.06, bdf, 0);
+    spec.building.cd[0] = 600.0 * sqrt(spec.building.diaph[0].k * spec.building.md[0]);
+    for (bdf = 0; bdf < 2; bdf++) compare_with_cvodes("stiff dashpot", &spec, 0.06, bdf, 1);
 }
 
 static void test_refusals(void)
