@@ -18,6 +18,7 @@ import numpy as np
 
 from . import engine
 from .building import monolithic
+from .building.trusted_run import BuildingError
 
 FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
 TRUNCATE = 3.0
@@ -206,7 +207,7 @@ def _scene_run(spec, params, record, scale, t_end, ties):
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
         result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False)
-    except (monolithic.BuildingError, RuntimeError):
+    except (BuildingError, RuntimeError):
         return None
     f_top = [tie * np.nan for tie in ties]  # the tie force needs the histories: not kept for members
     return [(s.peak_s1_m, s.peak_s2_m, f, s.collapsed, s.t_collapse_s if s.collapsed else np.nan)

@@ -5,13 +5,14 @@ energy balance.
 The assessor's upper wall: b = 0.23 m, h = 3.6 m, W = 14.904 kN/m, psi = 0.2013 (1.5 kN/m of roof),
 dohertyHinge, e_r = 0.86, tied by 1e8 N/m per m to a roof diaphragm of 200 kg/m with 5 % damping
 whose supports move with the ground."""
+import dataclasses
 import math
 
 import numpy as np
 import pytest
 
-from rockingwall import engine, read_record
-from rockingwall.building import building_file, monolithic
+from rockingwall import engine, read_record, scene_engine
+from rockingwall.building import building_file, monolithic, trusted_run
 from rockingwall.building.description import Diaphragm
 from rockingwall.coupling import monolithic as fmu_monolithic
 from rockingwall.coupling import wall_diaphragm
@@ -124,8 +125,32 @@ def test_a_run_whose_energy_does_not_close_is_an_error_not_a_result():
     """CVODES at a loose tolerance on the stiff tie leaves a large residual: BuildingError, no peaks."""
     record = read_record("elcentro").scaled(0.5)
     spec = monolithic.wall_under_diaphragm_spec(WALL, roof(20e3), TIE)
-    with pytest.raises(monolithic.BuildingError, match="energy balance does not close"):
+    with pytest.raises(trusted_run.BuildingError, match="energy balance does not close"):
         monolithic.respond(spec, [WALL], record, rtol=1e-2, solver="cvode")
+
+
+@pytest.mark.parametrize("which", ["sensitivity", "floor"])
+def test_every_run_a_result_is_built_from_has_its_energy_checked(monkeypatch, which):
+    """The sensitivity check's scaled runs and the floors' sampled run feed the result too: where
+    one of them does not close its energy balance (made so here, the others left as they are), the
+    result is an error naming that run, not numbers."""
+    full = read_record("elcentro").scaled(0.5)
+    keep = full.t <= 8.0
+    record = dataclasses.replace(full, t=full.t[keep], ag=full.ag[keep])
+    spec = monolithic.wall_under_diaphragm_spec(WALL, roof(20e3), TIE)
+    real_run = scene_engine.run
+
+    def run_spoiled(spec, t, ag, **kw):
+        r = real_run(spec, t, ag, **kw)
+        scaled = not np.array_equal(ag, record.ag)
+        sampled = kw.get("histories") == ("base_acc",)
+        spoiled = scaled if which == "sensitivity" else sampled
+        return dataclasses.replace(r, max_residual=0.5 * r.max_work) if spoiled else r
+
+    monkeypatch.setattr(scene_engine, "run", run_spoiled)
+    match = "scaled by 0.999999999" if which == "sensitivity" else "floors' accelerations"
+    with pytest.raises(trusted_run.BuildingError, match=match):
+        monolithic.respond(spec, [WALL], record, check_sensitivity=True)
 
 
 def test_the_overburden_and_the_diaphragm_keep_their_damping_definitions():

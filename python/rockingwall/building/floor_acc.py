@@ -11,6 +11,7 @@ import numpy as np
 from scipy import signal
 
 from .. import scene_engine
+from .trusted_run import check_energy
 
 # The low-pass cut-off [Hz]: above the floors' and walls' structural modes and the band of
 # acceleration-sensitive parts and contents, below a tie's ringing.
@@ -91,6 +92,7 @@ def _floor_history(spec, record, t_end, rtol, engine, dt):
     grid = start + dt * np.arange(int(np.floor((end - start) / dt)) + 1)
     r = scene_engine.run(spec, record.t, record.ag, t_end=end, rtol=rtol, t_out=grid, engine=engine,
                          histories=("base_acc",))
+    check_energy(r, f"{record.name} sampled every {dt:g} s (the floors' accelerations)")
     a = r.base_acc
     reached = np.flatnonzero(np.all(np.isfinite(a), axis=1))   # rows after the run stopped are NaN
     return a[: reached[-1] + 1] if reached.size else np.zeros((1, a.shape[1]))

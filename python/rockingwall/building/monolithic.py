@@ -8,8 +8,7 @@ import numpy as np
 
 from .. import engine, scene_engine
 from . import floor_acc
-from ..errors import RockingWallError
-from ..coupling.rules import ENERGY_SHARE_MAX
+from .trusted_run import check_energy
 
 SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
 
@@ -20,10 +19,6 @@ SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucW
 SENSITIVITY_PERTURBATION = 1e-9
 # A peak that moves by more than this share under the perturbation is reported as sensitive.
 SENSITIVITY_SHARE = 0.01
-
-
-class BuildingError(RockingWallError, RuntimeError):
-    """A run whose numbers cannot be trusted (the energy balance does not close): never a result."""
 
 
 @dataclasses.dataclass(frozen=True)
@@ -113,17 +108,6 @@ def wall_under_diaphragm_spec(wall_params, diaphragm, tie):
                              diaphragm_law=diaphragm.law, **diaphragm.hysteresis())
 
 
-def check_energy(r, where):
-    """BuildingError when the energy balance does not close within ENERGY_SHARE_MAX of the input
-    work: a number from such a run is not a result."""
-    share = r.max_residual / r.max_work if r.max_work > 0 else 0.0
-    if not share <= ENERGY_SHARE_MAX:
-        raise BuildingError(
-            f"{where}: the energy balance does not close (residual {share:.2g} of the input work, more than "
-            f"{ENERGY_SHARE_MAX:g}): the run is not converged; run again with a tighter tolerance (rtol)")
-    return share
-
-
 def _peaks(r):
     """The peaks a storey reports, a collapsed wall's as infinite (a change of verdict is total)."""
     return np.where(np.concatenate([r.collapsed, r.collapsed]), np.inf, np.concatenate([r.peak_s1, r.peak_s2]))
@@ -131,12 +115,15 @@ def _peaks(r):
 
 def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
     """The largest relative change of a wall's peak s1 or s2 when the record is scaled by
-    1 -/+ SENSITIVITY_PERTURBATION (the same engine as r; 1.0 where a wall's collapse changes)."""
+    1 -/+ SENSITIVITY_PERTURBATION (the same engine as r; 1.0 where a wall's collapse changes);
+    BuildingError where a scaled run's energy balance does not close."""
     base = _peaks(r)
     worst = 0.0
     for sign in (-1.0, 1.0):
-        other = _peaks(scene_engine.run(spec, record.t, record.ag * (1.0 + sign * SENSITIVITY_PERTURBATION),
-                                        t_end=t_end, rtol=rtol, engine=r.engine))
+        scale = 1.0 + sign * SENSITIVITY_PERTURBATION
+        run = scene_engine.run(spec, record.t, record.ag * scale, t_end=t_end, rtol=rtol, engine=r.engine)
+        other = _peaks(run)
+        check_energy(run, f"{record.name} scaled by {scale:.9f} (the sensitivity check)")
         with np.errstate(invalid="ignore"):
             change = np.where(np.isinf(base) | np.isinf(other), np.where(base == other, 0.0, 1.0),
                               np.abs(other - base) / np.maximum(np.abs(base), 1e-12))

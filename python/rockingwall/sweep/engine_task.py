@@ -36,7 +36,7 @@ def run(spec, record):
 
 def _building_row(spec, record, t0, c0):
     """The row of one storey of a building run (building_runs): its wall's peaks and collapse."""
-    from rockingwall.building.monolithic import BuildingError
+    from rockingwall.building.trusted_run import BuildingError
     from rockingwall.scene_engine import SceneError
     try:
         s, result = building_runs.storey_result(spec, record)
