@@ -67,7 +67,8 @@ void rw_scene_init(rw_scene *sc, const rw_scene_spec *spec, double ag0, double x
 
 /* dx = f(x) under the ground acceleration ag; aux (may be NULL) the instant's forces and accelerations */
 void rw_scene_derivatives(const rw_scene *sc, double ag, const double x[], double dx[], rw_scene_aux *aux);
-/* The event indicators: RW_NZ per storey (1 for a storey without a standing wall) */
+/* The event indicators: RW_NZ per storey (1 for a storey without a standing wall, and for a
+ * mid-height switch that is bookkeeping only) */
 void rw_scene_indicators(const rw_scene *sc, double ag, const double x[], double z[]);
 /* One event-mode update of every standing wall at time t: impacts, switches, collapse. Returns a
  * bit set: 1 states changed, 2 a regime changed, 4 a wall collapsed. */

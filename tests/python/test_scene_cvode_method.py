@@ -77,13 +77,11 @@ def test_a_stiff_scene_goes_on_with_newton(chichi):
         np.testing.assert_allclose(getattr(adams, name), getattr(bdf, name), rtol=1e-5, err_msg=name)
 
 
-def test_a_loose_tolerance_on_a_stiff_tie_keeps_its_peaks(chichi):
+def test_a_loose_tolerance_on_a_stiff_tie_goes_on_with_newton(chichi):
     """At rtol 1e-6 the stiff tie's mode (112 Hz) is fast against the steps: fixed-point iteration
-    gives way to Newton, and Adams still keeps the peaks of rtol 1e-8 within 0.5 %, where BDF,
-    which damps that mode, parts from them by more."""
+    stops converging and Newton takes over; the run ends with its energy balance closed."""
     t, ag = chichi
-    tight = se.run(hysteretic(1e8), t, ag, engine="cvode", rtol=1e-8)
     loose = se.run(hysteretic(1e8), t, ag, engine="cvode", rtol=1e-6)
-    assert np.isfinite(loose.t_newton)
-    for name in ("peak_s1", "peak_s2", "peak_diaphragm"):
-        np.testing.assert_allclose(getattr(loose, name), getattr(tight, name), rtol=5e-3, err_msg=name)
+    tight = se.run(hysteretic(1e8), t, ag, engine="cvode", rtol=1e-8)
+    assert t[0] < loose.t_newton < t[-1] and np.isnan(tight.t_newton)
+    assert loose.max_residual < 1e-3 * loose.max_work

@@ -52,8 +52,8 @@ def test_exact_and_cvodes_agree(runs, name, kd, s1, s2):
     for key in ("peak_s1", "peak_s2", "peak_diaphragm"):
         assert getattr(exact, key)[0] == pytest.approx(getattr(cvode, key)[0], rel=1e-4), key
     assert exact.impacts[0] == cvode.impacts[0]
-    # CVODE stops at the mid-height switches too, which change nothing under dohertyHinge
-    assert 0.3 * cvode.events < exact.events < cvode.events
+    # both leave out the mid-height switches, which change nothing under dohertyHinge: the same events
+    assert exact.events == cvode.events
 
 
 @pytest.mark.parametrize("name, kd, s1, s2", REFERENCE)
