@@ -81,6 +81,7 @@ static void shares(const sx_region *r, sx_modes *m, const double *Vr)
             }
             m->a[f][k] = re + I * im;
             m->abs_a[f][k] = sqrt(re * re + im * im);
+            m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = m->abs_a[f][k];
         }
 }
 
@@ -156,34 +157,39 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
 {
     const sx_modes *m = &r->modes;
     const double ag0 = xa0[r->n], slope = xa0[r->n + 1];
-    double y[SX_MAX_N], size[SX_MAX_F];
-    int f, k, j;
+    double y[SX_MAX_N], size[SX_MAX_F], c0[SX_MAX_F], c1[SX_MAX_F], c2[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F];
+    const int nf = r->nf;
+    int f, k;
     if (!m->valid) return 0;
     sx_matvec(r->n, r->n, m->Winv, xa0, y);
-    for (f = 0; f < r->nf; f++) { /* the functionals' own terms in ag and the constant */
-        memset(&P[f], 0, sizeof P[f]);
-        P[f].coef[0] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
-        P[f].coef[1] = r->F[f][r->n] * slope * h;
-        P[f].deg = 2;
-        size[f] = fabs(P[f].coef[0]) + fabs(P[f].coef[1]);
+    for (f = 0; f < nf; f++) { /* the functionals' own terms in ag and the constant */
+        c0[f] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
+        c1[f] = r->F[f][r->n] * slope * h;
+        c2[f] = 0.0, tail[f] = 0.0, dtail[f] = 0.0;
+        size[f] = fabs(c0[f]) + fabs(c1[f]);
     }
     for (k = 0; k < m->count; k++) {
         const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
         const mode_step s = mode_over(m, k, z0, ag0, slope, h);
-        const double cr[3] = {creal(s.c[0]), creal(s.c[1]), creal(s.c[2])};
-        const double ci[3] = {cimag(s.c[0]), cimag(s.c[1]), cimag(s.c[2])};
+        const double cr0 = creal(s.c[0]), cr1 = creal(s.c[1]), cr2 = creal(s.c[2]);
+        const double ci0 = cimag(s.c[0]), ci1 = cimag(s.c[1]), ci2 = cimag(s.c[2]);
         const double mode_size = mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound;
-        for (f = 0; f < r->nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
-            const double ar = creal(m->a[f][k]), ai = cimag(m->a[f][k]), abs_a = m->abs_a[f][k];
-            for (j = 0; j < 3; j++) P[f].coef[j] += ar * cr[j] - ai * ci[j];
-            P[f].tail += abs_a * s.bound;
-            P[f].dtail += abs_a * s.dbound;
-            size[f] += abs_a * mode_size;
+        const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
+        for (f = 0; f < nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
+            c0[f] += ar[f] * cr0 - ai[f] * ci0;
+            c1[f] += ar[f] * cr1 - ai[f] * ci1;
+            c2[f] += ar[f] * cr2 - ai[f] * ci2;
+            tail[f] += abs_a[f] * s.bound;
+            dtail[f] += abs_a[f] * s.dbound;
+            size[f] += abs_a[f] * mode_size;
         }
     }
-    for (f = 0; f < r->nf; f++) {
-        P[f].tail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
-        P[f].dtail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
+    for (f = 0; f < nf; f++) {
+        sx_lopoly *p = &P[f];
+        p->coef[0] = c0[f], p->coef[1] = c1[f], p->coef[2] = c2[f];
+        p->tail = tail[f] + (SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN);
+        p->dtail = dtail[f] + (SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN);
+        p->deg = 2;
     }
     return 1;
 }
