@@ -186,9 +186,10 @@ static void doubled(const sx_region *r, sx_step *st)
 
 static sx_step *cached(sx_region *r, double h, double tol)
 {
+    const double within = 1e-12 * h > tol ? 1e-12 * h : tol;
     int k;
     for (k = 0; k < SX_STEPS; k++)
-        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= fmax(1e-12 * h, tol)) return &r->step[k];
+        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= within) return &r->step[k];
     return NULL;
 }
 

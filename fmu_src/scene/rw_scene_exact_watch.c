@@ -153,7 +153,7 @@ typedef struct {
 } storey_polys;
 
 /* the peaks at a cleared step's ends: its start (coef[0]) and its exact end (xa1) */
-static void peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
+void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
 {
     rw_scene_result *res = R->res;
     double q1[2] = {0.0, 0.0}, q2[2] = {0.0, 0.0};
@@ -231,7 +231,7 @@ static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_p
     return collapse_quiet(&r->col[i], &P->q1, &P->q2);
 }
 
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[])
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F])
 {
     storey_polys S[RW_SCENE_MAX_STOREYS];
     rw_scene_result *res = R->res;
@@ -250,14 +250,15 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], c
         if (peak_may_rise(&s->deform, res->peak_diaphragm[i]) || peak_may_rise(&s->acc, res->peak_base_acc[i]))
             why = SX_MAY_PEAK;
     }
-    if (why) return why;
-    peaks_at_ends(R, r, P, xa1);
-    return 0;
+    return why;
 }
 
-int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[])
+int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
 {
     sx_lopoly P[SX_MAX_F];
     low_polys(r, st, xa0, P);
-    return sx_watch_quiet_polys(R, r, P, xa1) == 0;
+    if (sx_watch_quiet_polys(R, r, P) != 0) return 0;
+    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    sx_watch_peaks_at_ends(R, r, P, xa1);
+    return 1;
 }
