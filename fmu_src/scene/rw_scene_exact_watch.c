@@ -82,6 +82,23 @@ static double collapse_tol(const sx_collapse *c, double q1, double q2)
 }
 
 static span poly_span(const sx_lopoly *p);
+
+/* a quadratic's range over [0, 1], its ends' and its vertex's values (the modes' polynomials are
+ * quadratics: the sum of their coefficients' magnitudes would widen it), widened by its tail.
+ * The values' rounding is a few ulps of the coefficients, far inside the tail's margin for the
+ * decomposition's rounding (SX_MODES_MARGIN). */
+static span quadratic_span(const sx_lopoly *p)
+{
+    const double c0 = p->coef[0], c1 = p->coef[1], c2 = p->coef[2], end = c0 + c1 + c2;
+    span s = {c0 < end ? c0 : end, c0 < end ? end : c0};
+    if (c2 != 0.0 && (c1 < 0.0) == (c2 > 0.0) && fabs(c1) < 2.0 * fabs(c2)) { /* vertex -c1/(2 c2) inside */
+        const double v = c0 - c1 * c1 / (4.0 * c2);
+        if (v < s.lo) s.lo = v;
+        if (v > s.hi) s.hi = v;
+    }
+    s.lo -= p->tail, s.hi += p->tail;
+    return s;
+}
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
 
 /* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
@@ -111,6 +128,7 @@ static span poly_span(const sx_lopoly *p)
 {
     span s = {p->coef[0] - p->tail, p->coef[0] + p->tail};
     int k;
+    if (p->deg == 2) return quadratic_span(p);
     for (k = 1; k <= p->deg; k++) {
         if (p->coef[k] < 0.0) s.lo += p->coef[k];
         else s.hi += p->coef[k];
