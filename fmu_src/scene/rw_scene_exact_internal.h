@@ -54,6 +54,7 @@ typedef struct {
     int count;
     int first[SX_MAX_N], pair[SX_MAX_N];
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
+    double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
     double complex a[SX_MAX_F][SX_MAX_N];
     double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
     /* the shares by mode, the functionals contiguous (Re a, Im a, |a|): the slow steps' loop over

@@ -105,6 +105,8 @@ void sx_modes_build(sx_region *r)
         m->pair[k] = wi[i] != 0.0;
         m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
         m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
+        m->abs_lam[k] = hypot(wr[i], wi[i]);
+        m->growth[k] = wr[i] > 0.0 ? wr[i] : 0.0;
         if (m->pair[k]) i++;
     }
     modal_forcing(r, m, r->n + 2, m->g0);
@@ -123,6 +125,9 @@ typedef struct {
 
 static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z) * cimag(z)); }
 
+/* |Re z| + |Im z| >= |z|: a size for the margins, without a square root */
+static double size_of(double complex z) { return fabs(creal(z)) + fabs(cimag(z)); }
+
 /* The two ways to bound a mode over a step, whichever is tighter: a fast mode's quasi-static part
  * (exact while the input is linear) with its free oscillation, which keeps its size (times the
  * growth e^(Re lam h)) as a band; a slow mode's quadratic z0 + z'(0) tau + z''(0) tau^2/2 with the
@@ -130,15 +135,15 @@ static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z)
 static mode_step mode_over(const sx_modes *m, int k, double complex z0, double ag0, double slope, double h)
 {
     const double complex lam = m->lam[k], b0 = m->g0[k] + m->g1[k] * ag0, b1 = m->g1[k] * slope;
-    const double grow = creal(lam) > 0.0 ? exp(creal(lam) * h) : 1.0, wh = mag(lam) * h;
+    const double grow = m->growth[k] > 0.0 ? exp(m->growth[k] * h) : 1.0, wh = m->abs_lam[k] * h;
     const double complex d1 = lam * z0 + b0, d2 = lam * d1 + b1;
     const double r3 = wh * mag(d2) * grow * h * h;
     mode_step s;
     s.c[0] = z0;
     s.c[1] = d1 * h;
     s.c[2] = 0.5 * d2 * h * h;
-    s.bound = r3 / 6.0;
-    s.dbound = r3 / 2.0;
+    s.bound = r3 * (1.0 / 6.0);
+    s.dbound = 0.5 * r3;
     if (wh > 0.5) {
         const double complex il = m->inv_lam[k], qs = -(b0 + b1 * il) * il;
         const double band = mag(z0 - qs) * grow;
@@ -173,7 +178,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
         const mode_step s = mode_over(m, k, z0, ag0, slope, h);
         const double cr0 = creal(s.c[0]), cr1 = creal(s.c[1]), cr2 = creal(s.c[2]);
         const double ci0 = cimag(s.c[0]), ci1 = cimag(s.c[1]), ci2 = cimag(s.c[2]);
-        const double mode_size = mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound;
+        const double mode_size = size_of(s.c[0]) + size_of(s.c[1]) + size_of(s.c[2]) + s.bound;
         const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
         for (f = 0; f < nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
             c0[f] += ar[f] * cr0 - ai[f] * ci0;
