@@ -201,7 +201,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
 /* the quiet test on given polynomials of the functionals: 0 (quiet: then the peaks are those of
- * the step's ends, sx_watch_peaks_at_ends), or why not */
+ * the step's ends, sx_watch_peaks_at_ends), or the first reason why not it found */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
 int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F]);
 /* the peaks at a quiet step's ends: its start (the polynomials' values at 0) and xa1, its exact end */
