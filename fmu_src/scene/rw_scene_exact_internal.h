@@ -54,8 +54,12 @@ typedef struct {
     int count;
     int first[SX_MAX_N], pair[SX_MAX_N];
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
+    double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
     double complex a[SX_MAX_F][SX_MAX_N];
     double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
+    /* the shares by mode, the functionals contiguous (Re a, Im a, |a|): the slow steps' loop over
+     * the functionals runs on these, which the compiler vectorises */
+    double share_re[SX_MAX_N][SX_MAX_F], share_im[SX_MAX_N][SX_MAX_F], share_abs[SX_MAX_N][SX_MAX_F];
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N];
 } sx_modes;
@@ -196,15 +200,18 @@ void sx_modes_build(sx_region *r);
 int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
-/* the quiet test on given polynomials of the functionals (xa1: the exact end state): 0 (quiet: the
- * peaks taken from the ends), or why not */
+/* the quiet test on given polynomials of the functionals: 0 (quiet: then the peaks are those of
+ * the step's ends, sx_watch_peaks_at_ends), or the first reason why not it found */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[]);
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F]);
+/* the peaks at a quiet step's ends: its start (the polynomials' values at 0) and xa1, its exact end */
+void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[]);
 /* the walls' indicator lines under the current modes (after every event) */
 void sx_watch_lines(sx_run *R);
 /* the quiet test of a step from its start state with its table: 1 when no indicator can change
- * sign and no peak can rise over it (then the peaks are those of its ends) */
-int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[]);
+ * sign and no peak can rise over it (then xa1 = exp(Aa h) xa0, the end, and the peaks are those
+ * of the ends), else 0 (xa1 not set) */
+int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
 /* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
 /* the work of the ground and of the dashpots over [0, u] of a series */

@@ -81,6 +81,7 @@ static void shares(const sx_region *r, sx_modes *m, const double *Vr)
             }
             m->a[f][k] = re + I * im;
             m->abs_a[f][k] = sqrt(re * re + im * im);
+            m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = m->abs_a[f][k];
         }
 }
 
@@ -104,6 +105,8 @@ void sx_modes_build(sx_region *r)
         m->pair[k] = wi[i] != 0.0;
         m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
         m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
+        m->abs_lam[k] = hypot(wr[i], wi[i]);
+        m->growth[k] = wr[i] > 0.0 ? wr[i] : 0.0;
         if (m->pair[k]) i++;
     }
     modal_forcing(r, m, r->n + 2, m->g0);
@@ -122,6 +125,9 @@ typedef struct {
 
 static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z) * cimag(z)); }
 
+/* |Re z| + |Im z| >= |z|: a size for the margins, without a square root */
+static double size_of(double complex z) { return fabs(creal(z)) + fabs(cimag(z)); }
+
 /* The two ways to bound a mode over a step, whichever is tighter: a fast mode's quasi-static part
  * (exact while the input is linear) with its free oscillation, which keeps its size (times the
  * growth e^(Re lam h)) as a band; a slow mode's quadratic z0 + z'(0) tau + z''(0) tau^2/2 with the
@@ -129,15 +135,15 @@ static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z)
 static mode_step mode_over(const sx_modes *m, int k, double complex z0, double ag0, double slope, double h)
 {
     const double complex lam = m->lam[k], b0 = m->g0[k] + m->g1[k] * ag0, b1 = m->g1[k] * slope;
-    const double grow = creal(lam) > 0.0 ? exp(creal(lam) * h) : 1.0, wh = mag(lam) * h;
+    const double grow = m->growth[k] > 0.0 ? exp(m->growth[k] * h) : 1.0, wh = m->abs_lam[k] * h;
     const double complex d1 = lam * z0 + b0, d2 = lam * d1 + b1;
     const double r3 = wh * mag(d2) * grow * h * h;
     mode_step s;
     s.c[0] = z0;
     s.c[1] = d1 * h;
     s.c[2] = 0.5 * d2 * h * h;
-    s.bound = r3 / 6.0;
-    s.dbound = r3 / 2.0;
+    s.bound = r3 * (1.0 / 6.0);
+    s.dbound = 0.5 * r3;
     if (wh > 0.5) {
         const double complex il = m->inv_lam[k], qs = -(b0 + b1 * il) * il;
         const double band = mag(z0 - qs) * grow;
@@ -156,34 +162,39 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
 {
     const sx_modes *m = &r->modes;
     const double ag0 = xa0[r->n], slope = xa0[r->n + 1];
-    double y[SX_MAX_N], size[SX_MAX_F];
-    int f, k, j;
+    double y[SX_MAX_N], size[SX_MAX_F], c0[SX_MAX_F], c1[SX_MAX_F], c2[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F];
+    const int nf = r->nf;
+    int f, k;
     if (!m->valid) return 0;
     sx_matvec(r->n, r->n, m->Winv, xa0, y);
-    for (f = 0; f < r->nf; f++) { /* the functionals' own terms in ag and the constant */
-        memset(&P[f], 0, sizeof P[f]);
-        P[f].coef[0] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
-        P[f].coef[1] = r->F[f][r->n] * slope * h;
-        P[f].deg = 2;
-        size[f] = fabs(P[f].coef[0]) + fabs(P[f].coef[1]);
+    for (f = 0; f < nf; f++) { /* the functionals' own terms in ag and the constant */
+        c0[f] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
+        c1[f] = r->F[f][r->n] * slope * h;
+        c2[f] = 0.0, tail[f] = 0.0, dtail[f] = 0.0;
+        size[f] = fabs(c0[f]) + fabs(c1[f]);
     }
     for (k = 0; k < m->count; k++) {
         const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
         const mode_step s = mode_over(m, k, z0, ag0, slope, h);
-        const double cr[3] = {creal(s.c[0]), creal(s.c[1]), creal(s.c[2])};
-        const double ci[3] = {cimag(s.c[0]), cimag(s.c[1]), cimag(s.c[2])};
-        const double mode_size = mag(s.c[0]) + mag(s.c[1]) + mag(s.c[2]) + s.bound;
-        for (f = 0; f < r->nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
-            const double ar = creal(m->a[f][k]), ai = cimag(m->a[f][k]), abs_a = m->abs_a[f][k];
-            for (j = 0; j < 3; j++) P[f].coef[j] += ar * cr[j] - ai * ci[j];
-            P[f].tail += abs_a * s.bound;
-            P[f].dtail += abs_a * s.dbound;
-            size[f] += abs_a * mode_size;
+        const double cr0 = creal(s.c[0]), cr1 = creal(s.c[1]), cr2 = creal(s.c[2]);
+        const double ci0 = cimag(s.c[0]), ci1 = cimag(s.c[1]), ci2 = cimag(s.c[2]);
+        const double mode_size = size_of(s.c[0]) + size_of(s.c[1]) + size_of(s.c[2]) + s.bound;
+        const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
+        for (f = 0; f < nf; f++) { /* Re(a c) in real arithmetic: this loop runs for every step */
+            c0[f] += ar[f] * cr0 - ai[f] * ci0;
+            c1[f] += ar[f] * cr1 - ai[f] * ci1;
+            c2[f] += ar[f] * cr2 - ai[f] * ci2;
+            tail[f] += abs_a[f] * s.bound;
+            dtail[f] += abs_a[f] * s.dbound;
+            size[f] += abs_a[f] * mode_size;
         }
     }
-    for (f = 0; f < r->nf; f++) {
-        P[f].tail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
-        P[f].dtail += SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN;
+    for (f = 0; f < nf; f++) {
+        sx_lopoly *p = &P[f];
+        p->coef[0] = c0[f], p->coef[1] = c1[f], p->coef[2] = c2[f];
+        p->tail = tail[f] + (SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN);
+        p->dtail = dtail[f] + (SX_MODES_MARGIN(m->cond) * size[f] + DBL_MIN);
+        p->deg = 2;
     }
     return 1;
 }

@@ -121,7 +121,12 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     storey_series P[RW_SCENE_MAX_STOREYS];
     double first = 2.0;
     int i, k;
-    memset(P, 0, sizeof P);
+    for (i = 0; i < R->sc.S.n_storeys; i++) { /* a storey's polynomials without a functional: zero */
+        const size_t used = sizeof(double) * (size_t)(s->deg + 1);
+        memset(P[i].q1, 0, used), memset(P[i].q2, 0, used), memset(P[i].deform, 0, used), memset(P[i].acc, 0, used);
+        P[i].err_q1 = P[i].err_q2 = P[i].err_deform = P[i].err_acc = 0.0;
+        P[i].wall = 0;
+    }
     storey_polys(r, s, P);
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         if (!P[i].wall) continue;

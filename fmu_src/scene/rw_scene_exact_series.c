@@ -75,23 +75,33 @@ static void row_step(const sx_region *r, const double *rk, int k, double h, doub
     for (j = 0; j < na; j++) next[j] *= h / (k + 1);
 }
 
+/* C = A B (na x na), a row of C at a time as a sum of B's rows: each entry's sum runs over l in
+ * order as a dot product would, and the inner loop runs along rows (the compiler vectorises it) */
+static void matmul(int na, const double *A, const double *B, double *C)
+{
+    int i, j, l;
+    for (i = 0; i < na; i++) {
+        double *c = C + i * na;
+        for (j = 0; j < na; j++) c[j] = 0.0;
+        for (l = 0; l < na; l++) {
+            const double a = A[i * na + l], *b = B + l * na;
+            for (j = 0; j < na; j++) c[j] += a * b[j];
+        }
+    }
+}
+
 /* E = sum_k (Aa h)^k/k!, and T = the x rows of the term SX_LO+1 */
 static void exponential(const sx_region *r, sx_step *st)
 {
     const int na = r->na;
     double B[SX_MAX_NA * SX_MAX_NA], Bn[SX_MAX_NA * SX_MAX_NA];
-    int i, j, k, l;
+    int i, k;
     memset(B, 0, sizeof(double) * (size_t)(na * na));
     for (i = 0; i < na; i++) B[i * na + i] = 1.0;
     memcpy(st->E, B, sizeof(double) * (size_t)(na * na));
     for (k = 0; k < st->deg; k++) {
-        for (i = 0; i < na; i++)
-            for (j = 0; j < na; j++) {
-                double v = 0.0;
-                for (l = 0; l < na; l++) v += r->Aa[i * na + l] * B[l * na + j];
-                Bn[i * na + j] = v * st->h / (k + 1);
-            }
-        memcpy(B, Bn, sizeof(double) * (size_t)(na * na));
+        matmul(na, r->Aa, B, Bn);
+        for (i = 0; i < na * na; i++) B[i] = Bn[i] * st->h / (k + 1);
         for (i = 0; i < na * na; i++) st->E[i] += B[i];
         if (k + 1 == SX_LO + 1) memcpy(st->T, B, sizeof(double) * (size_t)(r->n * na));
     }
@@ -125,8 +135,9 @@ static void rows(const sx_region *r, sx_step *st)
 static void dissipation(const sx_region *r, sx_step *st)
 {
     const int na = r->na, D = st->deg + 1;
-    double R[(SX_MAX_DEG + 1) * SX_MAX_NA], P[SX_MAX_NA];
+    double R[(SX_MAX_DEG + 1) * SX_MAX_NA], P[SX_MAX_NA], inv[2 * (SX_MAX_DEG + 1)];
     int t, j, k, a, b;
+    for (k = 0; k < 2 * D; k++) inv[k] = 1.0 / (k + 1); /* 1/(j+k+1): a product, not a division, per entry */
     memset(st->Wd, 0, sizeof(double) * (size_t)(na * na));
     for (t = 0; t < r->nterms; t++) {
         memcpy(R, r->dvec[t], sizeof(double) * (size_t)na);
@@ -135,7 +146,7 @@ static void dissipation(const sx_region *r, sx_step *st)
             const double *rk = R + k * na;
             for (a = 0; a < na; a++) P[a] = 0.0;
             for (j = 0; j < D; j++)
-                for (a = 0; a < na; a++) P[a] += R[j * na + a] / (j + k + 1);
+                for (a = 0; a < na; a++) P[a] += R[j * na + a] * inv[j + k];
             for (a = 0; a < na; a++) {
                 const double v = r->dcoef[t] * st->h * rk[a];
                 if (v == 0.0) continue;
@@ -143,18 +154,6 @@ static void dissipation(const sx_region *r, sx_step *st)
             }
         }
     }
-}
-
-/* C = A B (na x na) */
-static void matmul(int na, const double *A, const double *B, double *C)
-{
-    int i, j, l;
-    for (i = 0; i < na; i++)
-        for (j = 0; j < na; j++) {
-            double v = 0.0;
-            for (l = 0; l < na; l++) v += A[i * na + l] * B[l * na + j];
-            C[i * na + j] = v;
-        }
 }
 
 /* the table of 2h from that of h: E(2h) = E E, Wd(2h) = Wd + E^T Wd E, and the momentum's
@@ -165,13 +164,16 @@ static void doubled(const sx_region *r, sx_step *st)
     double T1[SX_MAX_NA * SX_MAX_NA], T2[SX_MAX_NA * SX_MAX_NA], w[SX_MAX_NA];
     int i, j;
     matmul(na, st->Wd, st->E, T1);
-    for (i = 0; i < na; i++)
-        for (j = 0; j < na; j++) {
-            double v = 0.0;
-            int l;
-            for (l = 0; l < na; l++) v += st->E[l * na + i] * T1[l * na + j];
-            st->Wd[i * na + j] += v;
+    for (i = 0; i < na; i++) { /* Wd += E^T T1, row by row as in matmul */
+        double v[SX_MAX_NA];
+        int l;
+        for (j = 0; j < na; j++) v[j] = 0.0;
+        for (l = 0; l < na; l++) {
+            const double e = st->E[l * na + i], *t = T1 + l * na;
+            for (j = 0; j < na; j++) v[j] += e * t[j];
         }
+        for (j = 0; j < na; j++) st->Wd[i * na + j] += v[j];
+    }
     for (j = 0; j < na; j++) w[j] = st->wg[na + j] + st->h * st->wg[j];
     for (j = 0; j < na; j++) {
         double v0 = 0.0, v1 = 0.0;
@@ -186,9 +188,10 @@ static void doubled(const sx_region *r, sx_step *st)
 
 static sx_step *cached(sx_region *r, double h, double tol)
 {
+    const double within = 1e-12 * h > tol ? 1e-12 * h : tol;
     int k;
     for (k = 0; k < SX_STEPS; k++)
-        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= fmax(1e-12 * h, tol)) return &r->step[k];
+        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= within) return &r->step[k];
     return NULL;
 }
 

@@ -74,7 +74,6 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
     if (st->is_long) return 0; /* a length at the limit, doubled: no polynomial rows */
     sx_gather(r, R->x, ag0, slope, xa0);
-    sx_matvec(r->na, r->na, st->E, xa0, xa1);
     if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
     table_step(R, r, st, xa0, xa1, t1);
     return 1;
@@ -114,9 +113,10 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     int why;
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     if (!sx_modes_polys(r, h, xa0, P)) return -1;
-    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    if ((why = sx_watch_quiet_polys(R, r, P)) != 0) return why;
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
     sx_matvec(r->na, r->na, st->E, xa0, xa1);
-    if ((why = sx_watch_quiet_polys(R, r, P, xa1)) != 0) return why;
+    sx_watch_peaks_at_ends(R, r, P, xa1);
     table_step(R, r, st, xa0, xa1, t1);
     return 0;
 }

@@ -13,6 +13,10 @@
 
 #define SX_TOL 32.0 * DBL_EPSILON
 
+/* fmax and fmin (a NaN gives the other operand), inline */
+static double max2(double a, double b) { return a > b || b != b ? a : b; }
+static double min2(double a, double b) { return a < b || b != b ? a : b; }
+
 static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc->collapsed[i]; }
 
 void sx_watch_lines(sx_run *R)
@@ -52,8 +56,8 @@ typedef struct {
 static span line_span(const sx_line *L, span w)
 {
     const double zl = L->c + L->s * fabs(w.lo) + L->t * w.lo, zh = L->c + L->s * fabs(w.hi) + L->t * w.hi;
-    span z = {fmin(zl, zh), fmax(zl, zh)};
-    if (w.lo < 0.0 && w.hi > 0.0) z.lo = fmin(z.lo, L->c), z.hi = fmax(z.hi, L->c);
+    span z = {min2(zl, zh), max2(zl, zh)};
+    if (w.lo < 0.0 && w.hi > 0.0) z.lo = min2(z.lo, L->c), z.hi = max2(z.hi, L->c);
     return z;
 }
 
@@ -82,6 +86,23 @@ static double collapse_tol(const sx_collapse *c, double q1, double q2)
 }
 
 static span poly_span(const sx_lopoly *p);
+
+/* a quadratic's range over [0, 1], its ends' and its vertex's values (the modes' polynomials are
+ * quadratics: the sum of their coefficients' magnitudes would widen it), widened by its tail.
+ * The values' rounding is a few ulps of the coefficients, far inside the tail's margin for the
+ * decomposition's rounding (SX_MODES_MARGIN). */
+static span quadratic_span(const sx_lopoly *p)
+{
+    const double c0 = p->coef[0], c1 = p->coef[1], c2 = p->coef[2], end = c0 + c1 + c2;
+    span s = {c0 < end ? c0 : end, c0 < end ? end : c0};
+    if (c2 != 0.0 && (c1 < 0.0) == (c2 > 0.0) && fabs(c1) < 2.0 * fabs(c2)) { /* vertex -c1/(2 c2) inside */
+        const double v = c0 - c1 * c1 / (4.0 * c2);
+        if (v < s.lo) s.lo = v;
+        if (v > s.hi) s.hi = v;
+    }
+    s.lo -= p->tail, s.hi += p->tail;
+    return s;
+}
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
 
 /* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
@@ -111,6 +132,7 @@ static span poly_span(const sx_lopoly *p)
 {
     span s = {p->coef[0] - p->tail, p->coef[0] + p->tail};
     int k;
+    if (p->deg == 2) return quadratic_span(p);
     for (k = 1; k <= p->deg; k++) {
         if (p->coef[k] < 0.0) s.lo += p->coef[k];
         else s.hi += p->coef[k];
@@ -133,7 +155,7 @@ static int monotone(const sx_lopoly *p)
 static int peak_may_rise(const sx_lopoly *P, double peak)
 {
     const span s = poly_span(P);
-    if (fmax(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
+    if (max2(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
     return !monotone(P);
 }
 
@@ -146,14 +168,13 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
     out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
 }
 
-/* the peak quantities of storey i from its functionals; a slot is NULL when the storey has none */
+/* storey i's functionals' polynomials (NULL: the storey has none) */
 typedef struct {
-    sx_lopoly q1, q2, s1, s2, deform, acc;
-    int wall;
+    const sx_lopoly *q1, *q2, *deform, *acc;
 } storey_polys;
 
 /* the peaks at a cleared step's ends: its start (coef[0]) and its exact end (xa1) */
-static void peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
+void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[])
 {
     rw_scene_result *res = R->res;
     double q1[2] = {0.0, 0.0}, q2[2] = {0.0, 0.0};
@@ -168,15 +189,15 @@ static void peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MA
             const double h2 = 0.5 * R->sc.S.wall[i].h;
             q2[0] = P[f].coef[0], q2[1] = end;
             for (k = 0; k < 2; k++) {
-                res->peak_s1[i] = fmax(res->peak_s1[i], fabs(h2 * q1[k]));
-                res->peak_s2[i] = fmax(res->peak_s2[i], fabs(h2 * (q1[k] + q2[k])));
+                res->peak_s1[i] = max2(res->peak_s1[i], fabs(h2 * q1[k]));
+                res->peak_s2[i] = max2(res->peak_s2[i], fabs(h2 * (q1[k] + q2[k])));
             }
             continue;
         }
         case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
         default: peak = &res->peak_base_acc[i]; break;
         }
-        *peak = fmax(*peak, fmax(fabs(P[f].coef[0]), fabs(end)));
+        *peak = max2(*peak, max2(fabs(P[f].coef[0]), fabs(end)));
     }
 }
 
@@ -187,7 +208,7 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
     const double q = st->rho / (SX_LO + 2);
     int f, k;
     sx_matvec(r->n, r->na, st->T, xa0, Xt);
-    for (k = 0; k < r->n; k++) tn = fmax(tn, fabs(Xt[k]) / r->scale[k]);
+    for (k = 0; k < r->n; k++) tn = max2(tn, fabs(Xt[k]) / r->scale[k]);
     for (f = 0; f < r->nf; f++) {
         sx_lopoly *p = &P[f];
         const double *row = st->rows + (size_t)f * (size_t)((SX_LO + 1) * r->na);
@@ -204,16 +225,18 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
 }
 
 /* the storeys' polynomials from the functionals' */
-static void storey_view(const sx_region *r, const sx_lopoly P[SX_MAX_F], storey_polys S[RW_SCENE_MAX_STOREYS])
+static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F],
+                        storey_polys S[RW_SCENE_MAX_STOREYS])
 {
-    int f;
+    int f, i;
+    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].q1 = S[i].q2 = S[i].deform = S[i].acc = NULL;
     for (f = 0; f < r->nf; f++) {
         storey_polys *s = &S[r->f_storey[f]];
         switch (r->f_kind[f]) {
-        case SX_Q1: s->q1 = P[f], s->wall = 1; break;
-        case SX_Q2: s->q2 = P[f]; break;
-        case SX_DEFORM: s->deform = P[f]; break;
-        default: s->acc = P[f]; break;
+        case SX_Q1: s->q1 = &P[f]; break;
+        case SX_Q2: s->q2 = &P[f]; break;
+        case SX_DEFORM: s->deform = &P[f]; break;
+        default: s->acc = &P[f]; break;
         }
     }
 }
@@ -224,40 +247,49 @@ static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_p
     for (k = 0; k < R->nlines[i]; k++) {
         const sx_line *L = &R->lines[i][k];
         sx_lopoly w;
-        combine(&w, &P->q1, L->a0, &P->q2, L->a1);
-        if (!clear_of_zero(line_span(L, poly_span(&w)), line_tol(L, P->q1.coef[0], P->q2.coef[0])))
+        combine(&w, P->q1, L->a0, P->q2, L->a1);
+        if (!clear_of_zero(line_span(L, poly_span(&w)), line_tol(L, P->q1->coef[0], P->q2->coef[0])))
             return 0;
     }
-    return collapse_quiet(&r->col[i], &P->q1, &P->q2);
+    return collapse_quiet(&r->col[i], P->q1, P->q2);
 }
 
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], const double xa1[])
+/* a peak of storey i may rise over the step */
+static int storey_may_peak(const sx_run *R, int i, const storey_polys *s)
 {
-    storey_polys S[RW_SCENE_MAX_STOREYS];
-    rw_scene_result *res = R->res;
-    int i, why = 0;
-    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].wall = 0;
-    storey_view(r, P, S);
-    for (i = 0; i < R->sc.S.n_storeys; i++) {
-        storey_polys *s = &S[i];
+    const rw_scene_result *res = R->res;
+    if (s->acc && peak_may_rise(s->acc, res->peak_base_acc[i])) return 1;
+    if (s->deform && peak_may_rise(s->deform, res->peak_diaphragm[i])) return 1;
+    if (s->q1) {
         const double h2 = 0.5 * R->sc.S.wall[i].h;
-        if (s->wall) {
-            combine(&s->s1, &s->q1, h2, NULL, 0.0);
-            combine(&s->s2, &s->q1, h2, &s->q2, h2);
-            if (!wall_quiet(R, r, i, s)) return SX_MAY_CROSS;
-            if (peak_may_rise(&s->s1, res->peak_s1[i]) || peak_may_rise(&s->s2, res->peak_s2[i])) why = SX_MAY_PEAK;
-        }
-        if (peak_may_rise(&s->deform, res->peak_diaphragm[i]) || peak_may_rise(&s->acc, res->peak_base_acc[i]))
-            why = SX_MAY_PEAK;
+        sx_lopoly sp;
+        combine(&sp, s->q1, h2, NULL, 0.0);
+        if (peak_may_rise(&sp, res->peak_s1[i])) return 1;
+        combine(&sp, s->q1, h2, s->q2, h2);
+        if (peak_may_rise(&sp, res->peak_s2[i])) return 1;
     }
-    if (why) return why;
-    peaks_at_ends(R, r, P, xa1);
     return 0;
 }
 
-int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[])
+/* the peaks first: with a stiff tie they are what most often stops a step, and cost least */
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F])
+{
+    storey_polys S[RW_SCENE_MAX_STOREYS];
+    int i;
+    storey_view(R, r, P, S);
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        if (storey_may_peak(R, i, &S[i])) return SX_MAY_PEAK;
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        if (S[i].q1 && !wall_quiet(R, r, i, &S[i])) return SX_MAY_CROSS;
+    return 0;
+}
+
+int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
 {
     sx_lopoly P[SX_MAX_F];
     low_polys(r, st, xa0, P);
-    return sx_watch_quiet_polys(R, r, P, xa1) == 0;
+    if (sx_watch_quiet_polys(R, r, P) != 0) return 0;
+    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    sx_watch_peaks_at_ends(R, r, P, xa1);
+    return 1;
 }
