@@ -204,8 +204,8 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
  * the step's ends, sx_watch_peaks_at_ends), or the first reason why not it found */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
 int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F]);
-/* the peaks at a quiet step's ends: its start (the polynomials' values at 0) and xa1, its exact end */
-void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F], const double xa1[]);
+/* the peaks at a quiet step's exact ends, xa0 and xa1 */
+void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const double xa0[], const double xa1[]);
 /* the walls' indicator lines under the current modes (after every event) */
 void sx_watch_lines(sx_run *R);
 /* the quiet test of a step from its start state with its table: 1 when no indicator can change
