@@ -192,13 +192,11 @@ static void track(double *peak, double v)
     if (fabs(v) > *peak) *peak = fabs(v);
 }
 
-/* the peaks inside the step that ends at t in the state x (before any event there) */
-static void peaks_inside(run *r, double t, const double x[], const double dx[])
+/* the peaks inside the step from the last step's end to `end` (before any event there) */
+static void peaks_inside(run *r, const rw_step_end *end)
 {
     double *peaks[RW_PEAK_KINDS] = {r->res->peak_s1, r->res->peak_s2, r->res->peak_diaphragm};
-    rw_step_end end;
-    rw_step_end_at(&r->sc, t, x, dx, &end);
-    rw_step_peaks_inside(&r->sc, &r->last_end, &end, peaks);
+    rw_step_peaks_inside(&r->sc, &r->last_end, end, peaks);
 }
 
 /* the same before the events at t change the state */
@@ -206,8 +204,10 @@ static void peaks_inside_before_events(run *r, double t)
 {
     const double *x = N_VGetArrayPointer(r->y);
     double dx[RW_SCENE_NX];
+    rw_step_end end;
     rw_scene_derivatives(&r->sc, ground(r, t), x, dx, NULL);
-    peaks_inside(r, t, x, dx);
+    rw_step_end_at(&r->sc, t, x, dx, &end);
+    peaks_inside(r, &end);
 }
 
 /* peaks, the output row due at t, and the energy balance, at a step's end; with peaks inside the
@@ -218,16 +218,16 @@ static void observe(run *r, double t, int peaks_taken)
     const double *x = N_VGetArrayPointer(r->y);
     const double *W = N_VGetArrayPointer(r->q);
     const double ag = ground(r, t);
-    double dx[RW_SCENE_NX], residual, s1, s2, dd;
+    double dx[RW_SCENE_NX], residual;
+    rw_step_end end;
     rw_scene_aux aux;
     int i;
     rw_scene_derivatives(&r->sc, ag, x, dx, &aux);
-    if (!peaks_taken) peaks_inside(r, t, x, dx);
-    rw_step_end_at(&r->sc, t, x, dx, &r->last_end);
+    rw_step_end_at(&r->sc, t, x, dx, &end);
+    if (!peaks_taken) peaks_inside(r, &end);
+    r->last_end = end;
     for (i = 0; i < r->sc.S.n_storeys; i++) {
-        s1 = rw_scene_s1(&r->sc, x, i);
-        s2 = rw_scene_s2(&r->sc, x, i);
-        dd = rw_scene_diaphragm_deformation(&r->sc, x, i);
+        const double s1 = end.value[RW_PEAK_S1][i], s2 = end.value[RW_PEAK_S2][i], dd = end.value[RW_PEAK_DIAPHRAGM][i];
         track(&res->peak_s1[i], s1);
         track(&res->peak_s2[i], s2);
         track(&res->peak_diaphragm[i], dd);
@@ -314,23 +314,25 @@ static int integrate(run *r, double t)
     const double t_end = r->opt->t_end;
     while (t < t_end) {
         const double stop = next_stop(r, t);
-        int flag;
+        int flag, code = RW_SCENE_OK;
         if (!cvode_ok(r, CVodeSetStopTime(r->mem, stop), "CVodeSetStopTime", t)) return RW_SCENE_SOLVER;
         flag = CVode(r->mem, stop, r->y, &t, CV_ONE_STEP);
         if (flag < 0 && r->method == ADAMS_FIXED_POINT) { /* y is left at the last step taken */
-            const int code = cvode_ok(r, CVodeGetQuad(r->mem, &t, r->q), "CVodeGetQuad", t) ? switch_to_newton(r, t)
-                                                                                            : RW_SCENE_SOLVER;
+            code = cvode_ok(r, CVodeGetQuad(r->mem, &t, r->q), "CVodeGetQuad", t) ? switch_to_newton(r, t)
+                                                                                  : RW_SCENE_SOLVER;
             if (code) return code;
             continue;
         }
         if (!cvode_ok(r, flag, "CVode", t)) return RW_SCENE_SOLVER;
         if (!cvode_ok(r, CVodeGetQuad(r->mem, &t, r->q), "CVodeGetQuad", t)) return RW_SCENE_SOLVER;
         r->res->steps++;
-        if (flag == CV_ROOT_RETURN) peaks_inside_before_events(r, t);
-        if (flag == CV_ROOT_RETURN || proves_stiff(r)) {
-            const int code = flag == CV_ROOT_RETURN ? handle_events(r, t) : switch_to_newton(r, t);
-            if (code) return code;
+        if (flag == CV_ROOT_RETURN) {
+            peaks_inside_before_events(r, t);
+            code = handle_events(r, t);
+        } else if (proves_stiff(r)) {
+            code = switch_to_newton(r, t);
         }
+        if (code) return code;
         observe(r, t, flag == CV_ROOT_RETURN);
         r->res->t_reached = t;
     }
