@@ -55,10 +55,8 @@ typedef struct {
     int first[SX_MAX_N], pair[SX_MAX_N];
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
     double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
-    double complex a[SX_MAX_F][SX_MAX_N];
-    double abs_a[SX_MAX_F][SX_MAX_N];  /* |a| */
-    /* the shares by mode, the functionals contiguous (Re a, Im a, |a|): the slow steps' loop over
-     * the functionals runs on these, which the compiler vectorises */
+    /* functional f's share a of mode k by mode, the functionals contiguous (Re a, Im a, |a|): the
+     * slow steps' loop over the functionals runs on these, which the compiler vectorises */
     double share_re[SX_MAX_N][SX_MAX_F], share_im[SX_MAX_N][SX_MAX_F], share_abs[SX_MAX_N][SX_MAX_F];
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N];

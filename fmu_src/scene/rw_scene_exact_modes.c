@@ -79,9 +79,7 @@ static void shares(const sx_region *r, sx_modes *m, const double *Vr)
                 re += r->F[f][i] * Vr[i * n + m->first[k]];
                 if (m->pair[k]) im += r->F[f][i] * Vr[i * n + m->first[k] + 1];
             }
-            m->a[f][k] = re + I * im;
-            m->abs_a[f][k] = sqrt(re * re + im * im);
-            m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = m->abs_a[f][k];
+            m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = sqrt(re * re + im * im);
         }
 }
 
