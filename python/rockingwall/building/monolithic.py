@@ -122,8 +122,8 @@ def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
     for sign in (-1.0, 1.0):
         scale = 1.0 + sign * SENSITIVITY_PERTURBATION
         run = scene_engine.run(spec, record.t, record.ag * scale, t_end=t_end, rtol=rtol, engine=r.engine)
-        other = _peaks(run)
         check_energy(run, f"{record.name} scaled by {scale:.9f} (the sensitivity check)")
+        other = _peaks(run)
         with np.errstate(invalid="ignore"):
             change = np.where(np.isinf(base) | np.isinf(other), np.where(base == other, 0.0, 1.0),
                               np.abs(other - base) / np.maximum(np.abs(base), 1e-12))
