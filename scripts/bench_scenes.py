@@ -10,7 +10,8 @@ its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
   per m, 5 %).
 - two storeys, hysteretic: the two-storey scene with Bouc-Wen diaphragms (yield force 2 % of the
   stiffness times 1 m, post-yield ratio 0.1), which only CVODES solves, at rtol 1e-8 and 1e-6, with
-  its method (Adams) and with BDF.
+  its method (Adams) and with BDF; and `rockingwall building`'s four runs of it under the record
+  (wall-clock), one after another and on threads.
 Each scene: the exact engine (the best CPU time of 5 calls in-process) and CVODES (rtol 1e-8, one
 call), their peaks' largest relative difference, and the floor: the arithmetic the exact engine's
 method cannot skip at the steps and events it counted. Per record interval one exact propagation
@@ -28,6 +29,7 @@ import time
 import numpy as np
 
 from rockingwall import engine, records, scene_engine as se
+from rockingwall.building import concurrent_runs, monolithic
 from rockingwall.sweep import suites as suite
 
 WALL = dict(b=0.23, h=3.6, W=14904.0, psi=0.2013, hingeLaw=4, er=0.86, support=3)
@@ -78,6 +80,24 @@ def print_hysteretic(t, ag):
             bdf, t_bdf = timed_cvode(hysteretic(tie), t, ag, rtol, True)
             print(f"{tie:>15.0e} {rtol:>6.0e} | {t_adams:7.2f} {adams.steps:7d} {adams.t_newton:6.2f} | "
                   f"{t_bdf:6.2f} {bdf.steps:7d} | {t_bdf / t_adams:9.1f} {peak_difference(adams, bdf):8.1e}")
+
+
+def print_building_runs(t, ag):
+    """`rockingwall building`'s four runs under one record (the main one, the sensitivity check's two,
+    the floors' sampled one) on the hysteretic two-storey scene: wall-clock seconds one after
+    another and on threads (a thread per core), the same numbers either way"""
+    spec = hysteretic(TIES[0])
+    walls = [s.wall for s in spec.storeys]
+    record = records.Record("ff19a", t, ag)
+    start = time.perf_counter()
+    in_order, _ = monolithic.respond(spec, walls, record, check_sensitivity=True)
+    t_order = time.perf_counter() - start
+    start = time.perf_counter()
+    with concurrent_runs.threads() as pool:
+        on_threads, _ = monolithic.respond(spec, walls, record, check_sensitivity=True, executor=pool)
+    t_threads = time.perf_counter() - start
+    print(f"rockingwall building's 4 runs, two storeys, Bouc-Wen, tie {TIES[0]:.0e}: {t_order:.2f} s in order, "
+          f"{t_threads:.2f} s on threads ({t_order / t_threads:.1f} x), results {'the same' if in_order == on_threads else 'DIFFERENT'}")
 
 
 def best_time(run, calls):
@@ -148,6 +168,7 @@ def main(argv=None):
     print("x wall: the exact scene's time over one wall's; floor: its method's arithmetic at its steps and "
           "events; peaks: the largest relative difference of peak s1, s2 against CVODES at rtol 1e-8")
     print_hysteretic(t, ag)
+    print_building_runs(t, ag)
 
 
 if __name__ == "__main__":

@@ -219,6 +219,17 @@ def state_size(spec):
     return 12 * len(spec.storeys)
 
 
+def engine_for(spec, engine=None):
+    """The engine a run of the scene takes: `engine` ("exact" or "cvode") as given, or for None the
+    exact engine where it covers the scene and CVODES elsewhere; ValueError for a name it does not
+    know."""
+    if engine is None:
+        engine = "exact" if exact_covers(spec)[0] else "cvode"
+    if engine not in ENGINES:
+        raise ValueError(f"engine must be one of {ENGINES}, not {engine!r}")
+    return engine
+
+
 def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, histories=HISTORIES, bdf=False):
     """One run of the scene from rest (or the start state x0, state_size(spec) values) under the
     record (t [s], ag [m/s2], linear between samples, the ends held), to t_end (default: the
@@ -227,10 +238,7 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, hi
     ValueError for an engine name it does not know. histories: which of HISTORIES to keep on the
     grid t_out (the others are None). bdf: CVODES takes BDF with Newton throughout (by default
     Adams, with fixed-point iteration and with Newton from where the scene proves stiff)."""
-    if engine is None:
-        engine = "exact" if exact_covers(spec)[0] else "cvode"
-    if engine not in ENGINES:
-        raise ValueError(f"engine must be one of {ENGINES}, not {engine!r}")
+    engine = engine_for(spec, engine)
     t = np.ascontiguousarray(t, dtype=np.float64)
     ag = np.ascontiguousarray(ag, dtype=np.float64)
     t_out = None if t_out is None else np.ascontiguousarray(t_out, dtype=np.float64)

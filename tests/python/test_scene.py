@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from rockingwall import engine, read_record, scene_engine
-from rockingwall.building import building_file, monolithic, trusted_run
+from rockingwall.building import building_file, concurrent_runs, monolithic, trusted_run
 from rockingwall.building.description import Diaphragm
 from rockingwall.coupling import monolithic as fmu_monolithic
 from rockingwall.coupling import wall_diaphragm
@@ -129,8 +129,9 @@ def test_a_run_whose_energy_does_not_close_is_an_error_not_a_result():
         monolithic.respond(spec, [WALL], record, rtol=1e-2, solver="cvode")
 
 
+@pytest.mark.parametrize("threads", [False, True], ids=["in order", "on threads"])
 @pytest.mark.parametrize("which", ["sensitivity", "floor"])
-def test_every_run_a_result_is_built_from_has_its_energy_checked(monkeypatch, which):
+def test_every_run_a_result_is_built_from_has_its_energy_checked(monkeypatch, which, threads):
     """The sensitivity check's scaled runs and the floors' sampled run feed the result too: where
     one of them does not close its energy balance (made so here, the others left as they are), the
     result is an error naming that run, not numbers."""
@@ -149,8 +150,26 @@ def test_every_run_a_result_is_built_from_has_its_energy_checked(monkeypatch, wh
 
     monkeypatch.setattr(scene_engine, "run", run_spoiled)
     match = "scaled by 0.999999999" if which == "sensitivity" else "floors' accelerations"
-    with pytest.raises(trusted_run.BuildingError, match=match):
-        monolithic.respond(spec, [WALL], record, check_sensitivity=True)
+    with pytest.raises(trusted_run.BuildingError, match=match), concurrent_runs.threads() as pool:
+        monolithic.respond(spec, [WALL], record, check_sensitivity=True, executor=pool if threads else None)
+
+
+@pytest.mark.parametrize("law", ["linear", "boucWen"])
+def test_a_buildings_runs_on_threads_give_the_results_of_runs_in_order(law):
+    """`rockingwall building` gives a record's four runs (the main one, the sensitivity check's two,
+    the floors' sampled one) to threads: every number of the result is the same as one after another
+    (the exact engine for linear diaphragms, CVODES for Bouc-Wen)."""
+    full = read_record("elcentro").scaled(0.5)
+    keep = full.t <= 6.0
+    record = dataclasses.replace(full, t=full.t[keep], ag=full.ag[keep])
+    diaphragm = roof(20e3) if law == "linear" else Diaphragm(20e3, 200.0, 0.05, law, yield_force=400.0, post_yield=0.1)
+    spec = monolithic.wall_under_diaphragm_spec(WALL, diaphragm, TIE)
+    in_order, _ = monolithic.respond(spec, [WALL], record, check_sensitivity=True)
+    with concurrent_runs.threads() as pool:
+        on_threads, _ = monolithic.respond(spec, [WALL], record, check_sensitivity=True, executor=pool)
+    assert in_order.solver == ("exact" if law == "linear" else "cvode")
+    assert in_order.peak_sensitivity is not None and in_order.storeys[0].base_peak_acc_m_s2 is not None
+    assert on_threads == in_order
 
 
 def test_the_overburden_and_the_diaphragm_keep_their_damping_definitions():

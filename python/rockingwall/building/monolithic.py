@@ -8,6 +8,7 @@ import numpy as np
 
 from .. import engine, scene_engine
 from . import floor_acc
+from .concurrent_runs import InOrder
 from .trusted_run import check_energy
 
 SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
@@ -113,16 +114,19 @@ def _peaks(r):
     return np.where(np.concatenate([r.collapsed, r.collapsed]), np.inf, np.concatenate([r.peak_s1, r.peak_s2]))
 
 
-def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
-    """The largest relative change of a wall's peak s1 or s2 when the record is scaled by
-    1 -/+ SENSITIVITY_PERTURBATION (the same engine as r; 1.0 where a wall's collapse changes);
-    BuildingError where a scaled run's energy balance does not close."""
+def scaled_run(spec, record, scale, t_end, rtol, solver):
+    """A run under the record scaled by `scale` (the sensitivity check's), its energy checked."""
+    run = scene_engine.run(spec, record.t, record.ag * scale, t_end=t_end, rtol=rtol, engine=solver)
+    check_energy(run, f"{record.name} scaled by {scale:.9f} (the sensitivity check)")
+    return run
+
+
+def peak_sensitivity(r, scaled):
+    """The largest relative change of a wall's peak s1 or s2 from the run r to the scaled runs (1.0
+    where a wall's collapse changes)."""
     base = _peaks(r)
     worst = 0.0
-    for sign in (-1.0, 1.0):
-        scale = 1.0 + sign * SENSITIVITY_PERTURBATION
-        run = scene_engine.run(spec, record.t, record.ag * scale, t_end=t_end, rtol=rtol, engine=r.engine)
-        check_energy(run, f"{record.name} scaled by {scale:.9f} (the sensitivity check)")
+    for run in scaled:
         other = _peaks(run)
         with np.errstate(invalid="ignore"):
             change = np.where(np.isinf(base) | np.isinf(other), np.where(base == other, 0.0, 1.0),
@@ -131,18 +135,8 @@ def peak_sensitivity(spec, record, r, t_end=None, rtol=1e-8):
     return worst
 
 
-def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
-            filter_floor=True):
-    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
-    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
-    check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
-    runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
-    the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
-    base_peak_acc_m_s2 is None."""
-    r = scene_engine.run(spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
-    share = check_energy(r, record.name)
-    floor, floor_dt, resolved = (floor_acc.peaks(spec, record, t_end, rtol, r.engine) if filter_floor
-                                 else ([None] * len(wall_params_list), None, None))
+def storey_results(r, wall_params_list, floor):
+    """Each storey's StoreyResult from a scene_engine.Result and its floors' filtered peaks."""
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
@@ -153,22 +147,43 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
             diaphragm_peak_m=float(r.peak_diaphragm[i]),
             base_peak_acc_m_s2=None if floor[i] is None else float(floor[i]),
             base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i])))
-    result = BuildingResult(record=record.name, storeys=tuple(storeys), solver=r.engine,
+    return tuple(storeys)
+
+
+def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
+            filter_floor=True, executor=None):
+    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
+    solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
+    check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
+    runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
+    the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
+    base_peak_acc_m_s2 is None. executor: where those runs go (concurrent_runs.threads(): side by
+    side; None: one after another); every run's energy balance is checked, the main run's first."""
+    pool = executor or InOrder()
+    solver = scene_engine.engine_for(spec, solver)
+    main = pool.submit(scene_engine.run, spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
+    floor = pool.submit(floor_acc.peaks, spec, record, t_end, rtol, solver) if filter_floor else None
+    scaled = [pool.submit(scaled_run, spec, record, 1.0 + sign * SENSITIVITY_PERTURBATION, t_end, rtol, solver)
+              for sign in ((-1.0, 1.0) if check_sensitivity else ())]
+    r = main.result()
+    share = check_energy(r, record.name)
+    floor, floor_dt, resolved = floor.result() if floor else ([None] * len(wall_params_list), None, None)
+    result = BuildingResult(record=record.name, storeys=storey_results(r, wall_params_list, floor), solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
-                            peak_sensitivity=peak_sensitivity(spec, record, r, t_end, rtol) if check_sensitivity else None,
+                            peak_sensitivity=peak_sensitivity(r, [f.result() for f in scaled]) if scaled else None,
                             floor_sample_dt_s=floor_dt, floor_resolved=resolved)
     return result, r
 
 
 def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None,
-                      check_sensitivity=False, filter_floor=True):
+                      check_sensitivity=False, filter_floor=True, executor=None):
     """The response of every storey of a description.Building under a Record (solver,
-    check_sensitivity, filter_floor: as respond's)."""
+    check_sensitivity, filter_floor, executor: as respond's)."""
     t_out = None
     if output_interval:
         end = float(record.t[-1]) if t_end is None else float(t_end)
         t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
     params = [building.wall_parameters(i) for i in range(len(building.storeys))]
     return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver,
-                   check_sensitivity=check_sensitivity, filter_floor=filter_floor)
+                   check_sensitivity=check_sensitivity, filter_floor=filter_floor, executor=executor)

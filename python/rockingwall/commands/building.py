@@ -16,7 +16,7 @@ import sys
 
 from .. import assessment_codes_building as codes_building
 from .. import intensity, strict_json
-from ..building import building_file, monolithic, reports
+from ..building import building_file, concurrent_runs, monolithic, reports
 from . import common as cc
 from .code_options import add_code_arguments, code_checks
 
@@ -48,9 +48,11 @@ def run_building(path, args):
     records = [cc.record_from_args(spec, args) for spec in args.records]
     pgas = [record.pga / intensity.G for record in records]
     codes = code_checks(args, pgas, building=building)  # before any run: a bad option loses nothing
-    runs = [monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
-                                         check_sensitivity=True, output_interval=0.01 if args.out else None)
-            for record in records]
+    with concurrent_runs.threads() as pool:   # each record's four runs side by side
+        runs = [monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
+                                             check_sensitivity=True, output_interval=0.01 if args.out else None,
+                                             executor=pool)
+                for record in records]
     if args.out:
         write_histories(building, runs, cc.output_dir(args.out))
     results = [result for result, _ in runs]
