@@ -38,6 +38,12 @@ class Result:
     scene: scenes.Scene = None
     pga_g: float = float("nan")   # the record's PGA as run [g]
     ensemble: object = None       # an ensemble.Summary where simulate(..., ensemble=...) ran one
+    peak_sensitivity: float = None  # under a diaphragm with mass: the sensitivity check's (monolithic.peak_sensitivity)
+
+    @property
+    def sensitive(self):
+        """The sensitivity check found the peaks move by more than monolithic.SENSITIVITY_SHARE."""
+        return self.peak_sensitivity is not None and self.peak_sensitivity > monolithic.SENSITIVITY_SHARE
 
     @property
     def s1_over_delta_u(self):
@@ -94,14 +100,20 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
 
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
-    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False)
+    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False,
+                                   check_sensitivity=True)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
                             "s2": h.s2[:, 0]})
     t_collapse = s.t_collapse_s if s.collapsed else float("nan")
-    peak_F_top = float(tie * np.nanmax(np.abs(h.s2[:, 0] - h.diaphragm[:, 0]))) if len(grid) else 0.0
+    standing = grid < t_collapse if s.collapsed else np.ones(len(grid), dtype=bool)
+    # after a collapse the wall's histories hold its last state and the tie holds nothing: its
+    # stretch then is no force
+    stretch = np.abs(h.s2[standing, 0] - h.diaphragm[standing, 0])
+    peak_F_top = float(tie * np.nanmax(stretch)) if stretch.size else float("nan")  # no sample stood
     return Result(wall, record.name, f"scene ({result.solver})", s.peak_s1_m, s.peak_s2_m, peak_F_top, s.collapsed,
-                  t_collapse, s.impacts, history, scenes.diaphragm(diaphragm, tie))
+                  t_collapse, s.impacts, history, scenes.diaphragm(diaphragm, tie),
+                  peak_sensitivity=result.peak_sensitivity)
 
 
 def run_end(record, stop_time, tail):

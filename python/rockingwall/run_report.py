@@ -1,5 +1,6 @@
 """Runs of one wall for people: the peaks of simulate()'s results as a table, one result's time
 histories as a plot (what `rockingwall run` prints and writes)."""
+from .building import reports
 
 
 def table(wall, results):
@@ -19,6 +20,7 @@ def table(wall, results):
             spread = " / ".join("collapse" if v == float("inf") else f"{v * 1e3:.0f}" for v in e.s1_percentiles)
             line += f"  {e.collapse_probability:>11.2f}  {spread}" + ("  FLIPS" if e.flips else "")
         lines.append(line.rstrip())
+    lines += reports.sensitivity_lines(results)
     engines = sorted({r.engine for r in results if r.engine != "exact"})
     lines += [f"solved by {name}" for name in engines]
     if ensemble:

@@ -30,7 +30,9 @@ SENSITIVITY_NOTE = (f"peak_sensitivity: the largest relative change of a wall's 
                     f"(docs/your-building.md, \"Tie\")")
 
 
-def _sensitivity_lines(results):
+def sensitivity_lines(results):
+    """A line for each result whose peaks the sensitivity check found sensitive (results with
+    `record`, `peak_sensitivity` and `sensitive`: a BuildingResult, or api.Result of a scene)."""
     return [f"sensitive: {r.record}: a change of {SENSITIVITY_PERTURBATION:g} in the record's scale moves a peak by "
             f"{r.peak_sensitivity:.1%}; these peaks are one sample of a spread, not digits to trust (a softer tie "
             f"or more records give the spread: docs/your-building.md, \"Tie\")"
@@ -58,7 +60,7 @@ def table(building, results):
                  "peak, which grows with the tie's stiffness, is in --json)")
     if any(r.floor_resolved is False for r in results):
         lines.append(f"warning: {FLOOR_ACC_UNRESOLVED}")
-    return "\n".join(lines + _sensitivity_lines(results))
+    return "\n".join(lines + sensitivity_lines(results))
 
 
 def to_json(building, results):

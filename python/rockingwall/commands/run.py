@@ -59,7 +59,9 @@ def main(args):
     if args.json:
         strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
                           "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
-                                        **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}))
+                                        **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}),
+                                        **({"peak_sensitivity": r.peak_sensitivity, "sensitive": r.sensitive}
+                                           if r.peak_sensitivity is not None else {}))
                                    for r in results]}, sys.stdout)
     else:
         print(run_report.table(wall, results))
