@@ -10,7 +10,7 @@ import pandas as pd
 
 from . import bounds, fmi2sim, names, paths, robustness, scenes, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
-from .building import monolithic
+from .building import floor_acc, monolithic, tie_force
 from .building.description import TIE_DEFAULT
 from .records import G_STD
 from .wall import Wall
@@ -19,6 +19,20 @@ ENGINES = ("exact", "fmi2sim", "fmpy")
 PARAPET_ON_CVODE = (f"fmi2sim (a parapet with b/h > {engine_module.PARAPET_MAX_B_OVER_H}: beyond the exact "
                     "engine's small-rotation form)")
 TAIL_S = 0.0  # the run ends with the record; a free-vibration tail is asked for with `tail`
+
+
+@dataclasses.dataclass(frozen=True)
+class TieForce:
+    """Under a diaphragm with mass, peak_F_top is the tie's force low-pass filtered at
+    floor_acc.CUTOFF_HZ (building/tie_force.py): its raw peak [N/m], which grows with the tie's
+    stiffness, on samples every sample_dt_s [s]; resolved False where even the finest sampling left
+    the filtered peak depending on it."""
+    raw_peak_N_per_m: float
+    sample_dt_s: float
+    resolved: bool
+
+    def to_dict(self):
+        return dict(dataclasses.asdict(self), cutoff_hz=floor_acc.CUTOFF_HZ)
 
 
 @dataclasses.dataclass
@@ -30,7 +44,7 @@ class Result:
     engine: str
     peak_s1: float
     peak_s2: float
-    peak_F_top: float   # N/m: the largest force of the tie on the diaphragm
+    peak_F_top: float   # N/m: the largest force of the tie on the diaphragm (under a diaphragm with mass: TieForce)
     collapsed: bool
     t_collapse: float
     impacts: int
@@ -39,6 +53,7 @@ class Result:
     pga_g: float = float("nan")   # the record's PGA as run [g]
     ensemble: object = None       # an ensemble.Summary where simulate(..., ensemble=...) ran one
     peak_sensitivity: float = None  # under a diaphragm with mass: the sensitivity check's (monolithic.peak_sensitivity)
+    tie_force: object = None        # under a diaphragm with mass: how peak_F_top was found (TieForce)
 
     @property
     def sensitive(self):
@@ -105,15 +120,13 @@ def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
                             "s2": h.s2[:, 0]})
-    t_collapse = s.t_collapse_s if s.collapsed else float("nan")
-    standing = grid < t_collapse if s.collapsed else np.ones(len(grid), dtype=bool)
-    # after a collapse the wall's histories hold its last state and the tie holds nothing: its
-    # stretch then is no force
-    stretch = np.abs(h.s2[standing, 0] - h.diaphragm[standing, 0])
-    peak_F_top = float(tie * np.nanmax(stretch)) if stretch.size else float("nan")  # no sample stood
-    return Result(wall, record.name, f"scene ({result.solver})", s.peak_s1_m, s.peak_s2_m, peak_F_top, s.collapsed,
-                  t_collapse, s.impacts, history, scenes.diaphragm(diaphragm, tie),
-                  peak_sensitivity=result.peak_sensitivity)
+    force, found = float("nan"), None
+    if not s.collapsed:  # a toppled wall's connection force is no demand: it fell
+        force, raw, dt, resolved = tie_force.peaks(spec, record, tie, t_end=t_end, rtol=rtol, engine=result.solver)
+        found = TieForce(raw_peak_N_per_m=raw, sample_dt_s=dt, resolved=resolved)
+    return Result(wall, record.name, f"scene ({result.solver})", s.peak_s1_m, s.peak_s2_m, force, s.collapsed,
+                  s.t_collapse_s if s.collapsed else float("nan"), s.impacts, history, scenes.diaphragm(diaphragm, tie),
+                  peak_sensitivity=result.peak_sensitivity, tie_force=found)
 
 
 def run_end(record, stop_time, tail):

@@ -61,7 +61,8 @@ def main(args):
                           "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
                                         **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}),
                                         **({"peak_sensitivity": r.peak_sensitivity, "sensitive": r.sensitive}
-                                           if r.peak_sensitivity is not None else {}))
+                                           if r.peak_sensitivity is not None else {}),
+                                        **({"tie_force": r.tie_force.to_dict()} if r.tie_force else {}))
                                    for r in results]}, sys.stdout)
     else:
         print(run_report.table(wall, results))
