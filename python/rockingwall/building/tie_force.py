@@ -6,9 +6,9 @@ Its raw peak grows with the tie's stiffness, as the floor's acceleration does: a
 the wall's velocities at once, the diaphragm's mass follows only through the tie, and the tie rings
 at its own frequency with a force of about the velocity's jump times sqrt(k_tie m). The assessor's
 upper wall under El Centro at 0.1 g: 4.0, 13.3 and 34.1 kN/m raw at ties of 1e7, 1e8 and 1e9 N/m
-per m, 1.36, 1.34 and 1.34 kN/m filtered (docs/your-building.md, "Tie"). The filtered force is the
-one the diaphragm's spring and mass put on the connection; the raw one depends on an idealised
-connection's stiffness, which the user seldom gives."""
+per m, 1.36, 1.34 and 1.34 kN/m filtered (docs/your-building.md, "Tie force"). The filtered force is
+the one the diaphragm's spring, dashpot and mass put on the connection; the raw one depends on an
+idealised connection's stiffness, which the user seldom gives."""
 import numpy as np
 
 from . import floor_acc
