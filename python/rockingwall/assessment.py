@@ -98,7 +98,7 @@ def run_cases(walls, lvs, args, states, ensemble=None, diaphragm=None, tie=None)
         peaks = dict(peak_s1=r.peak_s1, peak_s2=r.peak_s2, peak_F_top=r.peak_F_top, collapsed=r.collapsed)
         summary, outcome = None, None
         if ensemble is not None:
-            members = robustness.members(wall.params, lv.record, float(lv.record.t[-1]), ensemble, d, tie)
+            members = robustness.members(wall.params, lv.record, float(lv.record.t[-1]), ensemble, d, tie, states)
             summary = ens.summarize(members, states, robustness.nominal_outcome(states, peaks))
             outcome = ens.reached(members, states)
         group = {KD_COLUMN: kd / 1e3 if kd is not None else np.nan}

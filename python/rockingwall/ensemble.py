@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from . import engine
-from .building import monolithic
+from .building import monolithic, tie_force
 from .building.trusted_run import BuildingError
 
 FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
@@ -153,9 +153,10 @@ def wall_members(params, record, ensemble, t_end):
                    walls["b"], _delta_u_of_members(fixed, walls, ensemble.size), failed)
 
 
-def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end):
+def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a wall tied to a diaphragm with mass (scene b): the diaphragm's stiffness,
-    mass and damping and the tie perturbed too; one scene run per member."""
+    mass and damping and the tie perturbed too; one scene run per member, and with_tie_force one
+    more for each standing member's tie force (tie_force.peaks, as the nominal run's; else NaN)."""
     factors = ensemble.factors()
     walls = member_walls(params, factors)
     runs = []
@@ -166,7 +167,8 @@ def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end):
                                 damping=min(2.0, diaphragm.damping * factors["diaphragm_damping"][k, 0]))
         member_tie = tie * factors["tie"][k, 0]
         spec = monolithic.wall_under_diaphragm_spec(wall, d, member_tie)
-        runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end, [member_tie]))
+        runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end,
+                               [member_tie] if with_tie_force else [None]))
     fixed = {k: v for k, v in params.items() if k not in walls}
     return _collect(runs, dict(walls, delta_u=_delta_u_of_members(fixed, walls, ensemble.size)), 0)
 
@@ -197,19 +199,21 @@ def building_members(building, record, ensemble, t_end):
             walls_per_storey[i].setdefault("b", []).append(p["b"])
             walls_per_storey[i].setdefault("delta_u", []).append(_delta_u(p))
         runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
-                               [s.tie for s in storeys]))
+                               [None] * n))  # a building's tie forces are not computed
     return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
 
 
 def _scene_run(spec, params, record, scale, t_end, ties):
     """(peak_s1, peak_s2, peak_F_top, collapsed, t_collapse) per storey, or None for a run that
-    failed (the solver refused it or its energy balance did not close)."""
+    failed (the solver refused it or its energy balance did not close). ties: per storey the tie
+    whose force a standing wall's run gives (a second run, tie_force.peaks), or None (NaN)."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
         result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False)
+        f_top = [tie_force.peaks(spec, member, tie, t_end=t_end, engine=result.solver)[0]
+                 if tie is not None and not s.collapsed else np.nan for s, tie in zip(result.storeys, ties)]
     except (BuildingError, RuntimeError):
         return None
-    f_top = [tie * np.nan for tie in ties]  # the tie force needs the histories: not kept for members
     return [(s.peak_s1_m, s.peak_s2_m, f, s.collapsed, s.t_collapse_s if s.collapsed else np.nan)
             for s, f in zip(result.storeys, f_top)]
 

@@ -21,17 +21,19 @@ def nominal_outcome(states, peaks):
     return out
 
 
-def members(wall_params, record, t_end, ensemble, diaphragm=None, tie=None):
-    """The ensemble's runs of a wall on its own (diaphragm None) or under a diaphragm with mass."""
+def members(wall_params, record, t_end, ensemble, diaphragm=None, tie=None, states=()):
+    """The ensemble's runs of a wall on its own (diaphragm None) or under a diaphragm with mass
+    (the members' tie forces too where one of the limit states `states` is on F_top)."""
     if diaphragm is None:
         return ens.wall_members(wall_params, record, ensemble, t_end)
-    return ens.diaphragm_members(wall_params, diaphragm, tie, record, ensemble, t_end)
+    with_tie_force = any(s.quantity == "F_top" for s in states)
+    return ens.diaphragm_members(wall_params, diaphragm, tie, record, ensemble, t_end, with_tie_force)
 
 
 def of_result(result, record, t_end, ensemble, diaphragm=None, tie=None, states=None):
     """The ensemble.Summary of an api.Result's case (the default limit states unless given)."""
     states = states if states is not None else limits.parse_all(None, result.wall)
-    runs = members(result.wall.params, record, t_end, as_ensemble(ensemble), diaphragm, tie)
+    runs = members(result.wall.params, record, t_end, as_ensemble(ensemble), diaphragm, tie, states)
     peaks = dict(peak_s1=result.peak_s1, peak_s2=result.peak_s2, peak_F_top=result.peak_F_top,
                  collapsed=result.collapsed)
     return ens.summarize(runs, states, nominal_outcome(states, peaks))

@@ -6,7 +6,7 @@ import pandas as pd
 import pytest
 
 import rockingwall as rw
-from rockingwall.building import building_file, monolithic
+from rockingwall.building import building_file, monolithic, tie_force
 from rockingwall.building.description import Diaphragm
 from rockingwall.cli import main
 
@@ -44,3 +44,24 @@ def test_assess_a_wall_under_a_diaphragm_with_mass(tmp_path, capsys):
     alone = rw.simulate(wall, rw.read_record(PULSE).to_pga(0.3), diaphragm=Diaphragm(20e3, 200.0))
     assert row.scene == "diaphragm" and row.peak_s1_mm == pytest.approx(alone.peak_s1 * 1e3, rel=1e-5)
     assert "diaphragm of K_d (each above), 200 kg/m" in capsys.readouterr().out
+
+
+def test_a_limit_on_the_tie_force_has_its_probability_over_the_members(tmp_path, monkeypatch):
+    """Under a diaphragm with mass the members' tie forces are computed as the nominal run's
+    (filtered at 25 Hz) where a limit state asks for F_top: a threshold below every member's force
+    is reached by all, one far above by none (the probability was left blank: no member had it).
+    Where no limit is on F_top only the nominal run's tie force is computed."""
+    calls = []
+    real_peaks = tie_force.peaks
+    monkeypatch.setattr(tie_force, "peaks", lambda *a, **kw: calls.append(1) or real_peaks(*a, **kw))
+    args = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013", "--kd-values", "20kN/m/m",
+            "--diaphragm-mass", "200kg/m", "--pga", "0.1", "--ensemble", "4"]
+    limits = ["--limit", "low: F_top >= 0.1kN/m", "--limit", "high: F_top >= 100kN/m"]
+    assert main(["assess", "elcentro", *args, *limits, "--out", str(tmp_path / "f")]) == 0
+    row = pd.read_csv(tmp_path / "f" / "cases.csv").iloc[0]
+    assert not row.collapsed and 0.5 < row.peak_F_top_kN_per_m < 5.0
+    assert row.p_low == 1.0 and row.p_high == 0.0
+    assert len(calls) == 1 + 4
+    calls.clear()
+    assert main(["assess", "elcentro", *args, "--out", str(tmp_path / "s")]) == 0
+    assert len(calls) == 1
