@@ -138,6 +138,7 @@ static void observe(sx_run *R, double t)
             if (res->s2_out) res->s2_out[row] = rw_scene_s2(&R->sc, R->x, i);
             if (res->diaphragm_out) res->diaphragm_out[row] = rw_scene_diaphragm_deformation(&R->sc, R->x, i);
             if (res->base_acc_out) res->base_acc_out[row] = aux.a_base[i];
+            if (res->tie_out) res->tie_out[row] = aux.F_top[i];
         }
         R->next_out++;
     }

@@ -238,6 +238,7 @@ static void observe(run *r, double t, int peaks_taken)
             if (res->s2_out) res->s2_out[row] = s2;
             if (res->diaphragm_out) res->diaphragm_out[row] = dd;
             if (res->base_acc_out) res->base_acc_out[row] = aux.a_base[i];
+            if (res->tie_out) res->tie_out[row] = aux.F_top[i];
         }
     }
     if (r->next_out < r->opt->n_out && t >= r->opt->t_out[r->next_out]) r->next_out++;

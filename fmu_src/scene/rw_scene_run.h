@@ -52,8 +52,9 @@ typedef struct {
     double max_residual, max_work; /* max |residual| and max |W_ground| over the run */
     double t_newton; /* CVODE: when the run went on with Newton iteration (t0: from the start; NaN: never) */
     /* optional histories on the grid (caller-allocated, n_out * RW_SCENE_MAX_STOREYS each, row-major
-     * [row][storey]) or NULL */
-    double *s1_out, *s2_out, *diaphragm_out, *base_acc_out;
+     * [row][storey]) or NULL; tie_out: the tie's force on diaphragm i (+ toward +x; 0 once its wall
+     * has collapsed and left the scene) */
+    double *s1_out, *s2_out, *diaphragm_out, *base_acc_out, *tie_out;
     char message[256];
 } rw_scene_result;
 

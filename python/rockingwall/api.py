@@ -10,7 +10,7 @@ import pandas as pd
 
 from . import bounds, fmi2sim, names, paths, robustness, scenes, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
-from .building import floor_acc, monolithic, tie_force
+from .building import floor_acc, monolithic
 from .building.description import TIE_DEFAULT
 from .records import G_STD
 from .wall import Wall
@@ -116,14 +116,15 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
     result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False,
-                                   check_sensitivity=True)
+                                   check_sensitivity=True, tie_forces=True)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
                             "s2": h.s2[:, 0]})
     force, found = float("nan"), None
     if not s.collapsed:  # a toppled wall's connection force is no demand: it fell
-        force, raw, dt, resolved = tie_force.peaks(spec, record, tie, t_end=t_end, rtol=rtol, engine=result.solver)
-        found = TieForce(raw_peak_N_per_m=raw, sample_dt_s=dt, resolved=resolved)
+        force = s.tie_force_N_per_m
+        found = TieForce(raw_peak_N_per_m=s.tie_force_raw_N_per_m, sample_dt_s=result.tie_sample_dt_s,
+                         resolved=result.tie_resolved)
     return Result(wall, record.name, f"scene ({result.solver})", s.peak_s1_m, s.peak_s2_m, force, s.collapsed,
                   s.t_collapse_s if s.collapsed else float("nan"), s.impacts, history, scenes.diaphragm(diaphragm, tie),
                   peak_sensitivity=result.peak_sensitivity, tie_force=found)

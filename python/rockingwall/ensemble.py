@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from . import engine
-from .building import monolithic, tie_force
+from .building import monolithic
 from .building.trusted_run import BuildingError
 
 FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
@@ -167,16 +167,16 @@ def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_
                                 damping=min(2.0, diaphragm.damping * factors["diaphragm_damping"][k, 0]))
         member_tie = tie * factors["tie"][k, 0]
         spec = monolithic.wall_under_diaphragm_spec(wall, d, member_tie)
-        runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end,
-                               [member_tie] if with_tie_force else [None]))
+        runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end, with_tie_force))
     fixed = {k: v for k, v in params.items() if k not in walls}
     return _collect(runs, dict(walls, delta_u=_delta_u_of_members(fixed, walls, ensemble.size)), 0)
 
 
-def building_members(building, record, ensemble, t_end):
+def building_members(building, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a building (scene c): [Members per storey]. Every storey's wall (psi via
     its overburden, W, b, e_r), diaphragm (stiffness, mass, damping) and tie perturbed, each storey
-    by its own draws; the in-plane walls as given."""
+    by its own draws; the in-plane walls as given. with_tie_force: each standing wall's tie force
+    too (one more run per member), else NaN."""
     n = len(building.storeys)
     factors = ensemble.factors(n)
     runs, walls_per_storey = [], [dict() for _ in range(n)]
@@ -199,23 +199,21 @@ def building_members(building, record, ensemble, t_end):
             walls_per_storey[i].setdefault("b", []).append(p["b"])
             walls_per_storey[i].setdefault("delta_u", []).append(_delta_u(p))
         runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
-                               [None] * n))  # a building's tie forces are not computed
+                               with_tie_force))
     return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
 
 
-def _scene_run(spec, params, record, scale, t_end, ties):
+def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):
     """(peak_s1, peak_s2, peak_F_top, collapsed, t_collapse) per storey, or None for a run that
-    failed (the solver refused it or its energy balance did not close). ties: per storey the tie
-    whose force a standing wall's run gives (a second run, tie_force.peaks), or None (NaN)."""
+    failed (the solver refused it or its energy balance did not close). with_tie_force: the
+    standing walls' tie forces from a second run (tie_force.peaks), else NaN."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
-        result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False)
-        f_top = [tie_force.peaks(spec, member, tie, t_end=t_end, engine=result.solver)[0]
-                 if tie is not None and not s.collapsed else np.nan for s, tie in zip(result.storeys, ties)]
+        result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)
     except (BuildingError, RuntimeError):
         return None
-    return [(s.peak_s1_m, s.peak_s2_m, f, s.collapsed, s.t_collapse_s if s.collapsed else np.nan)
-            for s, f in zip(result.storeys, f_top)]
+    return [(s.peak_s1_m, s.peak_s2_m, np.nan if s.tie_force_N_per_m is None else s.tie_force_N_per_m, s.collapsed,
+             s.t_collapse_s if s.collapsed else np.nan) for s in result.storeys]
 
 
 def _collect(runs, walls, storey):

@@ -65,6 +65,7 @@ class _Result(ctypes.Structure):
                 ("energy_end", _D), ("max_residual", _D), ("max_work", _D), ("t_newton", _D),
                 ("s1_out", ctypes.POINTER(_D)), ("s2_out", ctypes.POINTER(_D)),
                 ("diaphragm_out", ctypes.POINTER(_D)), ("base_acc_out", ctypes.POINTER(_D)),
+                ("tie_out", ctypes.POINTER(_D)),
                 ("message", ctypes.c_char * 256)]
 
 
@@ -119,7 +120,8 @@ class Result:
     [m], of the diaphragm relative to its floor [m] and of the wall base's absolute acceleration
     [m/s2]; collapse, its reason (1 past instability, 2 past the toppling limit) and time (NaN if
     standing); impacts. Energy balance terms [J/m] and the
-    largest residual over the run; histories on the grid if one was asked for; which engine ran
+    largest residual over the run; histories on the grid if one was asked for (HISTORIES: s1, s2,
+    the diaphragm's deformation, the base's acceleration, the tie's force); which engine ran
     ("exact" or "cvode"); for CVODES, t_newton: when it went on with Newton iteration (the start with
     bdf; NaN if fixed-point iteration held throughout; None for the exact engine)."""
     peak_s1: np.ndarray
@@ -147,6 +149,7 @@ class Result:
     s2: np.ndarray = None
     diaphragm: np.ndarray = None
     base_acc: np.ndarray = None
+    tie: np.ndarray = None   # the tie's force on each diaphragm [N/m] (0 once the wall has collapsed)
 
 
 @functools.cache
@@ -192,7 +195,7 @@ def _ptr(a):
     return a.ctypes.data_as(ctypes.POINTER(_D)) if a is not None else None
 
 
-HISTORIES = ("s1", "s2", "diaphragm", "base_acc")
+HISTORIES = ("s1", "s2", "diaphragm", "base_acc", "tie")
 
 
 def _histories(n_out, keep):
@@ -253,7 +256,7 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, hi
         start[:x0.size] = x0
     hist = _histories(n_out, histories)
     res = _Result()
-    res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out = (_ptr(h) for h in hist)
+    res.s1_out, res.s2_out, res.diaphragm_out, res.base_acc_out, res.tie_out = (_ptr(h) for h in hist)
     opt = _Options(float(t[-1]) if t_end is None else float(t_end), float(rtol), n_out, _ptr(t_out), _ptr(start),
                    int(bool(bdf)))
     c = c_spec(spec)
@@ -263,9 +266,10 @@ def run(spec, t, ag, t_end=None, rtol=1e-8, t_out=None, engine=None, x0=None, hi
         raise SceneError(code, res.message.decode(errors="replace"))
     per = {k: np.array(getattr(res, k)[:n]) for k in
            ("peak_s1", "peak_s2", "peak_diaphragm", "peak_base_acc", "t_collapse", "impacts", "collapse_reason")}
-    s1, s2, dia, acc = (h[:, :n] if h is not None else None for h in hist)
+    s1, s2, dia, acc, tie = (h[:, :n] if h is not None else None for h in hist)
     return Result(**per, collapsed=np.array(res.collapsed[:n], dtype=bool), steps=res.steps, events=res.events,
                   t_reached=res.t_reached, work_ground=res.work_ground, work_damping=res.work_damping,
                   event_losses=res.event_losses, energy_start=res.energy_start, energy_end=res.energy_end,
                   max_residual=res.max_residual, max_work=res.max_work, engine=engine,
-                  t_newton=res.t_newton if engine == "cvode" else None, t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc)
+                  t_newton=res.t_newton if engine == "cvode" else None, t=t_out, s1=s1, s2=s2, diaphragm=dia, base_acc=acc,
+                  tie=tie)

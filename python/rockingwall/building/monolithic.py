@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from .. import engine, scene_engine
-from . import floor_acc
+from . import floor_acc, tie_force
 from .concurrent_runs import InOrder
 from .trusted_run import check_energy
 
@@ -39,6 +39,8 @@ class StoreyResult:
     base_peak_acc_m_s2: float
     impacts: int
     base_peak_acc_raw_m_s2: float = None
+    tie_force_N_per_m: float = None      # the tie's force on the diaphragm filtered at 25 Hz; None: not computed or collapsed
+    tie_force_raw_N_per_m: float = None  # the same unfiltered (it grows with the tie's stiffness)
 
     @property
     def s1_over_delta_u(self):
@@ -67,6 +69,8 @@ class BuildingResult:
     peak_sensitivity: float = None   # the largest share a peak moved under the check; None: not run
     floor_sample_dt_s: float = None  # the sampling of the floor's filtered acceleration; None: not computed
     floor_resolved: bool = None      # False: even the finest sampling left the filtered peaks apart
+    tie_sample_dt_s: float = None    # the sampling of the ties' filtered forces; None: not computed
+    tie_resolved: bool = None        # False: even the finest sampling left the filtered forces apart
 
     @property
     def sensitive(self):
@@ -77,6 +81,8 @@ class BuildingResult:
                 "peak_sensitivity": self.peak_sensitivity, "sensitive": self.sensitive,
                 "floor_acc": {"cutoff_hz": floor_acc.CUTOFF_HZ, "sample_dt_s": self.floor_sample_dt_s,
                               "resolved": self.floor_resolved},
+                "tie_force": {"cutoff_hz": floor_acc.CUTOFF_HZ, "sample_dt_s": self.tie_sample_dt_s,
+                              "resolved": self.tie_resolved},
                 "energy": {"ground_work_J_per_m": self.work_ground_J_m, "damping_J_per_m": self.work_damping_J_m,
                            "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
 
@@ -135,55 +141,65 @@ def peak_sensitivity(r, scaled):
     return worst
 
 
-def storey_results(r, wall_params_list, floor):
-    """Each storey's StoreyResult from a scene_engine.Result and its floors' filtered peaks."""
+def storey_results(r, wall_params_list, floor, ties=None):
+    """Each storey's StoreyResult from a scene_engine.Result, its floors' filtered peaks and the
+    ties' filtered and raw forces (tie_force.peaks' first two; None: not computed)."""
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
+        tie, tie_raw = (None, None) if ties is None or collapsed else (float(ties[0][i]), float(ties[1][i]))
         du = engine.delta_u(**params) if params else math.nan
         storeys.append(StoreyResult(
             storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
             diaphragm_peak_m=float(r.peak_diaphragm[i]),
             base_peak_acc_m_s2=None if floor[i] is None else float(floor[i]),
-            base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i])))
+            base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i]),
+            tie_force_N_per_m=tie, tie_force_raw_N_per_m=tie_raw))
     return tuple(storeys)
 
 
 def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
-            filter_floor=True, executor=None):
+            filter_floor=True, executor=None, tie_forces=False):
     """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
     solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
     check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
     runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
     the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
-    base_peak_acc_m_s2 is None. executor: where those runs go (concurrent_runs.threads(): side by
-    side; None: one after another); every run's energy balance is checked, the main run's first."""
+    base_peak_acc_m_s2 is None. tie_forces: each standing wall's tie force filtered at 25 Hz
+    (tie_force.peaks: one more run on a dense grid). executor: where those runs go
+    (concurrent_runs.threads(): side by side; None: one after another); every run's energy balance
+    is checked, the main run's first."""
     pool = executor or InOrder()
     solver = scene_engine.engine_for(spec, solver)
     main = pool.submit(scene_engine.run, spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
     floor = pool.submit(floor_acc.peaks, spec, record, t_end, rtol, solver) if filter_floor else None
+    ties = pool.submit(tie_force.peaks, spec, record, t_end, rtol, solver) if tie_forces else None
     scaled = [pool.submit(scaled_run, spec, record, 1.0 + sign * SENSITIVITY_PERTURBATION, t_end, rtol, solver)
               for sign in ((-1.0, 1.0) if check_sensitivity else ())]
     r = main.result()
     share = check_energy(r, record.name)
     floor, floor_dt, resolved = floor.result() if floor else ([None] * len(wall_params_list), None, None)
-    result = BuildingResult(record=record.name, storeys=storey_results(r, wall_params_list, floor), solver=r.engine,
+    ties = ties.result() if ties else None
+    result = BuildingResult(record=record.name, storeys=storey_results(r, wall_params_list, floor, ties),
+                            solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
                             peak_sensitivity=peak_sensitivity(r, [f.result() for f in scaled]) if scaled else None,
-                            floor_sample_dt_s=floor_dt, floor_resolved=resolved)
+                            floor_sample_dt_s=floor_dt, floor_resolved=resolved,
+                            tie_sample_dt_s=ties[2] if ties else None, tie_resolved=ties[3] if ties else None)
     return result, r
 
 
 def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None,
-                      check_sensitivity=False, filter_floor=True, executor=None):
+                      check_sensitivity=False, filter_floor=True, executor=None, tie_forces=False):
     """The response of every storey of a description.Building under a Record (solver,
-    check_sensitivity, filter_floor, executor: as respond's)."""
+    check_sensitivity, filter_floor, executor, tie_forces: as respond's)."""
     t_out = None
     if output_interval:
         end = float(record.t[-1]) if t_end is None else float(t_end)
         t_out = np.linspace(float(record.t[0]), end, int(round((end - record.t[0]) / output_interval)) + 1)
     params = [building.wall_parameters(i) for i in range(len(building.storeys))]
     return respond(building_spec(building), params, record, t_end=t_end, rtol=rtol, t_out=t_out, solver=solver,
-                   check_sensitivity=check_sensitivity, filter_floor=filter_floor, executor=executor)
+                   check_sensitivity=check_sensitivity, filter_floor=filter_floor, executor=executor,
+                   tie_forces=tie_forces)

@@ -20,6 +20,15 @@ FLOOR_ACC_RAW_NOTE = ("base_peak_acc_raw_m_s2: the same peak unfiltered: above t
                       "ringing after each impact and grows with the tie's stiffness, so it is no design value")
 FLOOR_ACC_UNRESOLVED = ("the floor's acceleration was sampled at the finest interval tried and its filtered peak "
                         "still depends on the sampling (floor_acc.resolved false): read it as approximate")
+# what the ties' peak forces are
+TIE_FORCE_NOTE = (f"tie_force_N_per_m: the peak force of the wall-to-diaphragm tie on the diaphragm, low-pass "
+                  f"filtered at {CUTOFF_HZ:g} Hz as the floor's acceleration: what the diaphragm's spring, dashpot "
+                  f"and mass put on the connection, independent of the tie's stiffness; null for a wall that "
+                  f"collapsed (docs/your-building.md, \"Tie force\")")
+TIE_FORCE_RAW_NOTE = ("tie_force_raw_N_per_m: the same peak unfiltered: the tie's ringing after each impact, which "
+                      "grows with the tie's stiffness, so it is no design value")
+TIE_FORCE_UNRESOLVED = ("the ties' forces were sampled at the finest interval tried and their filtered peaks still "
+                        "depend on the sampling (tie_force.resolved false): read them as approximate")
 
 
 # what a sensitive run's peaks mean, said wherever they are printed
@@ -43,34 +52,42 @@ def _floor(s):
     return "-" if s.base_peak_acc_m_s2 is None else f"{s.base_peak_acc_m_s2 / 9.81:.3f}"
 
 
+def _tie(s):
+    return "-" if s.tie_force_N_per_m is None else f"{s.tie_force_N_per_m / 1e3:.2f}"
+
+
 def table(building, results):
     """The building echoed with units, the scene, then one row per storey and record."""
     lines = [building.describe(), scenes.building(building).text(), "",
              f"{'record':<26}{'storey':>7}{'peak s1 [mm]':>14}{'peak s2 [mm]':>14}{'s1/Delta_u':>12}"
-             f"{'diaphragm [mm]':>16}{'floor acc [g]':>15}  collapse"]
+             f"{'diaphragm [mm]':>16}{'floor acc [g]':>15}{'tie [kN/m]':>12}  collapse"]
     for r in results:
         for s in r.storeys:
             s1 = "-" if s.collapsed else f"{s.peak_s1_m * 1e3:.1f}"
             s2 = "-" if s.collapsed else f"{s.peak_s2_m * 1e3:.1f}"
             ratio = "-" if s.collapsed else f"{s.s1_over_delta_u:.2f}"
             lines.append(f"{r.record[:25]:<26}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
-                         f"{s.diaphragm_peak_m * 1e3:>16.1f}{_floor(s):>15}  {_collapse(s)}")
+                         f"{s.diaphragm_peak_m * 1e3:>16.1f}{_floor(s):>15}{_tie(s):>12}  {_collapse(s)}")
     lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
-                 f"floor acc: the floor the wall stands on, absolute, low-pass filtered at {CUTOFF_HZ:g} Hz (the raw "
-                 "peak, which grows with the tie's stiffness, is in --json)")
+                 f"floor acc: the floor the wall stands on, absolute, and tie: the tie's force on the diaphragm "
+                 f"(none for a collapsed wall), both low-pass filtered at {CUTOFF_HZ:g} Hz (the raw peaks, which grow "
+                 "with the tie's stiffness, are in --json)")
     if any(r.floor_resolved is False for r in results):
         lines.append(f"warning: {FLOOR_ACC_UNRESOLVED}")
+    if any(r.tie_resolved is False for r in results):
+        lines.append(f"warning: {TIE_FORCE_UNRESOLVED}")
     return "\n".join(lines + sensitivity_lines(results))
 
 
 def to_json(building, results):
     """{"scene", "building", "runs": [{"record", "solver", "storeys": [...], "energy"}]}; each
     storey with peak_s1_m, peak_s2_m, collapsed, t_collapse_s (null if standing), diaphragm_peak_m,
-    base_peak_acc_m_s2 (filtered), and also base_peak_acc_raw_m_s2, delta_u_m, s1_over_Delta_u,
-    impacts."""
+    base_peak_acc_m_s2 (filtered), and also base_peak_acc_raw_m_s2, tie_force_N_per_m (filtered;
+    null for a collapsed wall), tie_force_raw_N_per_m, delta_u_m, s1_over_Delta_u, impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
                    "notes": {"base_peak_acc_m_s2": FLOOR_ACC_NOTE, "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
+                             "tie_force_N_per_m": TIE_FORCE_NOTE, "tie_force_raw_N_per_m": TIE_FORCE_RAW_NOTE,
                              "peak_sensitivity": SENSITIVITY_NOTE},
                    "runs": [r.to_dict() for r in results]})
 

@@ -158,8 +158,6 @@ def building_study(args):
         raise ValueError("--building runs on the scene solver: --engine does not apply")
     building = building_file.read(args.building)
     states = assessment_building.storey_states(building, args.limit)
-    if any(s.quantity == "F_top" for s in states[0]):
-        raise ValueError("--limit on F_top: a building's tie forces are not computed; limit s1 or s2")
     scene = scenes.building(building).text()
     head = [building.describe(), "limit states: " + " | ".join(
         f"storey {i + 1}: " + "; ".join(s.describe() for s in st) for i, st in enumerate(states)), scene]

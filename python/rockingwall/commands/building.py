@@ -1,8 +1,9 @@
 """rockingwall building: the walls of a building under records, walls, diaphragms and floors in one
 integration. The building file (TOML) gives each storey's wall, diaphragm and tie with units
 (docs/your-building.md); prints per storey and record the peaks of s1 and s2 relative to the
-wall's own base, s1/Delta_u, collapse and its time, the diaphragm's peak relative to its supports
-and the peak absolute acceleration of the floor the wall stands on.
+wall's own base, s1/Delta_u, collapse and its time, the diaphragm's peak relative to its supports,
+the peak absolute acceleration of the floor the wall stands on and the tie's force on the
+diaphragm (both filtered at 25 Hz).
 
 With --code nzsee ntc asce41, each storey's wall is also checked by the codes where it stands in
 the building (docs/codes.md), with a line where a code passes a wall that the run collapses or
@@ -51,7 +52,7 @@ def run_building(path, args):
     with concurrent_runs.threads() as pool:   # each record's four runs side by side
         runs = [monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
                                              check_sensitivity=True, output_interval=0.01 if args.out else None,
-                                             executor=pool)
+                                             executor=pool, tie_forces=True)
                 for record in records]
     if args.out:
         write_histories(building, runs, cc.output_dir(args.out))
