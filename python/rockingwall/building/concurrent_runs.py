@@ -1,14 +1,14 @@
 """Where a building's runs under one record go. The main run, the sensitivity check's two scaled
-runs and the floors' sampled run need nothing of each other, so `rockingwall building` gives them
-to threads: the engines release the GIL, and each run takes a core of its own. Elsewhere (a Dask
-worker, which already has its core) they run one after another in the caller's thread (InOrder),
-and a run that fails stops the ones after it."""
+runs and the floors' and ties' sampled runs need nothing of each other, so `rockingwall building`
+gives them to threads: the engines release the GIL, and each run takes a core of its own.
+Elsewhere (a Dask worker, which already has its core) they run one after another in the caller's
+thread (InOrder), and a run that fails stops the ones after it."""
 import concurrent.futures
 import contextlib
 import functools
 import os
 
-# threads for a building's runs: a core each, at most the four runs under one record
+# threads for a building's runs: a core each, at most 4 (as assess's threads for its cases)
 MAX_THREADS = 4
 
 

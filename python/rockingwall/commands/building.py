@@ -49,7 +49,7 @@ def run_building(path, args):
     records = [cc.record_from_args(spec, args) for spec in args.records]
     pgas = [record.pga / intensity.G for record in records]
     codes = code_checks(args, pgas, building=building)  # before any run: a bad option loses nothing
-    with concurrent_runs.threads() as pool:   # each record's four runs side by side
+    with concurrent_runs.threads() as pool:   # each record's runs side by side
         runs = [monolithic.simulate_building(building, record, rtol=args.rtol, solver=getattr(args, "solver", None),
                                              check_sensitivity=True, output_interval=0.01 if args.out else None,
                                              executor=pool, tie_forces=True)
