@@ -52,7 +52,7 @@ def filtered_peak(a, dt, cutoff_hz=CUTOFF_HZ):
     return np.max(np.abs(lowpass(a, dt, cutoff_hz)), axis=0)
 
 
-def alias_share(a, dt):
+def _alias_share(a, dt):
     """The filtered peaks of every sample, and how far those of every other sample are from them
     (relative to the filtered peak, or to 1e-3 of the raw one where the filter leaves less)."""
     full = filtered_peak(a, dt)
@@ -87,45 +87,41 @@ def sample_dt(spec):
     return max(dt, DT_MIN), dt >= DT_MIN
 
 
-def sampled_run(spec, record, t_end, rtol, engine, dt, histories, what):
-    """A run of the scene sampled every dt [s] keeping `histories` (scene_engine.HISTORIES), its
-    energy checked (`what` names it in the error), and the number of grid rows it reached."""
+def _sampled_history(spec, record, t_end, rtol, engine, dt, history, what):
+    """One history of the scene (a name of scene_engine.HISTORIES) sampled every dt [s] up to where
+    the run stopped, from a run whose energy is checked (`what` names it in the error)."""
     start = float(record.t[0])
     end = float(record.t[-1]) if t_end is None else float(t_end)
     grid = start + dt * np.arange(int(np.floor((end - start) / dt)) + 1)
     r = scene_engine.run(spec, record.t, record.ag, t_end=end, rtol=rtol, t_out=grid, engine=engine,
-                         histories=histories)
+                         histories=(history,))
     check_energy(r, f"{record.name} sampled every {dt:g} s ({what})")
-    rows = getattr(r, histories[0])
+    rows = getattr(r, history)
     reached = np.flatnonzero(np.all(np.isfinite(rows), axis=1))   # rows after the run stopped are NaN
-    return r, grid, (reached[-1] + 1 if reached.size else 0)
+    return rows[: reached[-1] + 1] if reached.size else np.zeros((1, rows.shape[1]))
 
 
-def sampled_peaks(spec, record, series, histories, what, t_end=None, rtol=1e-8, engine=None):
-    """(the filtered peak of each column of series(run, grid, rows reached) (a 2-D array of samples),
-    their raw peaks on the same samples, the sampling interval [s], whether it resolved them: its
-    Nyquist frequency above the scene's fastest mode and every other sample giving the same
-    filtered peaks within ALIAS_SHARE)."""
+def sampled_peaks(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
+    """(the filtered peak of each storey's `history` (a name of scene_engine.HISTORIES), their raw
+    peaks on the same samples, the sampling interval [s], whether it resolved them: its Nyquist
+    frequency above the scene's fastest mode and every other sample giving the same filtered peaks
+    within ALIAS_SHARE)."""
     dt, fine_enough = sample_dt(spec)
     for refinement in range(REFINEMENTS + 1):
-        samples = series(*sampled_run(spec, record, t_end, rtol, engine, dt, histories, what))
-        raw = np.max(np.abs(samples), axis=0) if len(samples) else np.zeros(samples.shape[1:])
+        samples = _sampled_history(spec, record, t_end, rtol, engine, dt, history, what)
+        raw = np.max(np.abs(samples), axis=0)
         if len(samples) < 64:                           # too short to filter: the raw samples' peak
             return raw, raw, dt, fine_enough
-        filtered, share = alias_share(samples, dt)
+        filtered, share = _alias_share(samples, dt)
         if share <= ALIAS_SHARE or dt / 2 < DT_MIN * (1 - 1e-12):
             break
         dt /= 2
     return filtered, raw, dt, fine_enough and share <= ALIAS_SHARE
 
 
-def _floors(r, grid, reached):
-    return r.base_acc[:reached] if reached else np.zeros((1, r.base_acc.shape[1]))
-
-
 def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
     """(the filtered peak [m/s2] of each storey's floor, the sampling interval [s] used, whether it
     resolved the floor: sampled_peaks')."""
-    filtered, _, dt, resolved = sampled_peaks(spec, record, _floors, ("base_acc",), "the floors' accelerations",
-                                              t_end, rtol, engine)
+    filtered, _, dt, resolved = sampled_peaks(spec, record, "base_acc", "the floors' accelerations", t_end, rtol,
+                                              engine)
     return filtered, dt, resolved

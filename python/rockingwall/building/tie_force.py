@@ -10,16 +10,10 @@ filtered force is the one the diaphragm's spring, dashpot and mass put on the co
 one depends on an idealised connection's stiffness, which the user seldom gives. A wall that
 collapses leaves the scene and its tie with it: its force is then 0, and no demand is read from
 a collapsed wall's."""
-import numpy as np
-
 from . import floor_acc
-
-
-def _forces(r, grid, reached):
-    return r.tie[:reached] if reached else np.zeros((1, r.tie.shape[1]))
 
 
 def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
     """(the filtered peak [N/m] of each storey's tie force, their raw peaks on the same samples
     [N/m], the sampling interval [s], whether the sampling resolved them: floor_acc.sampled_peaks')."""
-    return floor_acc.sampled_peaks(spec, record, _forces, ("tie",), "the ties' forces", t_end, rtol, engine)
+    return floor_acc.sampled_peaks(spec, record, "tie", "the ties' forces", t_end, rtol, engine)
