@@ -10,7 +10,7 @@ import pytest
 from rockingwall.building import building_file, monolithic
 from rockingwall.commands import sweep as sweep_command
 from rockingwall.records import read_at2
-from rockingwall.sweep import suites
+from rockingwall.sweep import rows as row_format, store, suites
 
 
 @pytest.fixture
@@ -42,6 +42,7 @@ def test_a_building_sweep_has_one_row_per_storey_as_the_building_run_gives(build
         assert row.collapsed == s.collapsed
         assert row.peak_s1 == pytest.approx(s.peak_s1_m, rel=1e-12)
         assert row.peak_s2 == pytest.approx(s.peak_s2_m, rel=1e-12)
+    assert rows.peak_F_top.isna().all()  # the tie force is not computed here: empty, not a 0 that reads as none
     assert np.allclose(rows.scale * rows.record_pga_g, rows.pga_g)
 
 
@@ -54,6 +55,14 @@ def test_a_resumed_building_sweep_reuses_rows_until_the_file_changes(building, t
     assert sweep(building, out) == 0
     rows = pd.read_csv(out)
     assert (rows.kd_kN == 200.0).sum() == 4  # the upper storey's runs again, with the new roof
+
+
+def test_only_a_building_row_may_leave_its_tie_force_empty():
+    good = {c: "1" for c in row_format.COLUMNS} | dict(run_id="r", status="ok", collapsed="False", steps="3",
+                                                 impacts="2", model=row_format.BUILDING_MODEL, peak_F_top="")
+    assert store.check_row(good) == ""
+    assert "peak_F_top" in store.check_row(dict(good, model="RockingWall"))
+    assert "peak_s1" in store.check_row(dict(good, peak_s1=""))
 
 
 def test_a_bad_building_file_is_refused_with_its_line(tmp_path, capsys):

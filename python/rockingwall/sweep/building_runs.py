@@ -11,9 +11,8 @@ import math
 import numpy as np
 
 from ..building import building_file
+from .rows import BUILDING_MODEL as MODEL
 from .run_spec import RunSpec
-
-MODEL = "building"
 
 
 def _fmt(x):

@@ -35,14 +35,16 @@ def run(spec, record):
 
 
 def _building_row(spec, record, t0, c0):
-    """The row of one storey of a building run (building_runs): its wall's peaks and collapse."""
+    """The row of one storey of a building run (building_runs): its wall's peaks and collapse. Its
+    peak_F_top stays empty: the tie's force, filtered as an engineer reads it, takes one more run
+    (`rockingwall building`, `assess --building`), and a 0 would read as a tie that carries nothing."""
     from rockingwall.building.trusted_run import BuildingError
     from rockingwall.scene_engine import SceneError
     try:
         s, result = building_runs.storey_result(spec, record)
     except (BuildingError, SceneError, ValueError) as exc:
         return make_row(spec, ERROR, str(exc))
-    return make_row(spec, OK, peak_s1=s.peak_s1_m, peak_s2=s.peak_s2_m, peak_F_top=0.0, collapsed=s.collapsed,
+    return make_row(spec, OK, peak_s1=s.peak_s1_m, peak_s2=s.peak_s2_m, peak_F_top="", collapsed=s.collapsed,
                     impacts=s.impacts, end_time=float(spec["stop_time"]), steps=result.steps,
                     cpu_s=time.process_time() - c0, elapsed_s=time.perf_counter() - t0)
 

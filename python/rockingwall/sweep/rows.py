@@ -16,6 +16,7 @@ PROVENANCE = COLUMNS[COLUMNS.index("key"):]
 OK, ERROR, KILLED, TIMEOUT = "ok", "error", "killed", "timeout"
 STATUSES = (OK, ERROR, KILLED, TIMEOUT)
 RETRIED = (KILLED, TIMEOUT)   # not finished: run again on resume
+BUILDING_MODEL = "building"   # the model of a building sweep's rows, whose peak_F_top stays empty
 
 
 def make_row(spec, status, message="", **values):
