@@ -118,8 +118,8 @@ def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False,
                                    check_sensitivity=True, tie_forces=True)
     (s,) = result.storeys
-    history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.s1[:, 0],
-                            "s2": h.s2[:, 0]})
+    history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.scene.s1[:, 0],
+                            "s2": h.scene.s2[:, 0]})
     force, found = float("nan"), None
     if not s.collapsed:  # a toppled wall's connection force is no demand: it fell
         force = s.tie_force_N_per_m

@@ -209,7 +209,7 @@ def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):
     standing walls' tie forces from a second run (tie_force.peaks), else NaN."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
-        result, r = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)
+        result, _ = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)
     except (BuildingError, RuntimeError):
         return None
     return [(s.peak_s1_m, s.peak_s2_m, np.nan if s.tie_force_N_per_m is None else s.tie_force_N_per_m, s.collapsed,

@@ -8,6 +8,8 @@ depends on an idealised connection; the floor's motion that walls, parts and con
 well below 25 Hz, the cut-off strong-motion processing and floor spectra use. Filtered there, the
 peak stops depending on the tie (docs/your-building.md, "Floor acceleration"). The sampling and the
 filter serve the tie's force too (tie_force.py), whose raw peak rings the same way."""
+import dataclasses
+
 import numpy as np
 from scipy import signal
 
@@ -53,12 +55,13 @@ def filtered_peak(a, dt, cutoff_hz=CUTOFF_HZ):
 
 
 def _alias_share(a, dt):
-    """The filtered peaks of every sample, and how far those of every other sample are from them
+    """Every sample filtered, and how far the filtered peaks of every other sample are from theirs
     (relative to the filtered peak, or to 1e-3 of the raw one where the filter leaves less)."""
-    full = filtered_peak(a, dt)
+    filtered = lowpass(a, dt)
+    full = np.max(np.abs(filtered), axis=0)
     half = filtered_peak(a[::2], 2.0 * dt)
     scale = np.maximum(full, 1e-3 * np.max(np.abs(a), axis=0)) + 1e-300
-    return full, float(np.max(np.abs(full - half) / scale))
+    return filtered, float(np.max(np.abs(full - half) / scale))
 
 
 def fastest_hz(spec):
@@ -87,6 +90,27 @@ def sample_dt(spec):
     return max(dt, DT_MIN), dt >= DT_MIN
 
 
+@dataclasses.dataclass(frozen=True)
+class Sampled:
+    """One history of every storey sampled densely and low-pass filtered: the filtered peaks, the raw
+    peaks on the same samples, the sampling interval [s] from `start` [s], whether the sampling
+    resolved them (its Nyquist frequency above the scene's fastest mode and every other sample
+    giving the same filtered peaks within ALIAS_SHARE), and the filtered samples (rows: times)."""
+    filtered_peak: np.ndarray
+    raw_peak: np.ndarray
+    dt: float
+    resolved: bool
+    filtered: np.ndarray
+    start: float
+
+    def at(self, t):
+        """The filtered history at the times t [s] (rows), linear between samples; NaN after the
+        run stopped (the samples end there)."""
+        times = self.start + self.dt * np.arange(len(self.filtered))
+        columns = [np.interp(t, times, col, right=np.nan) for col in np.atleast_2d(self.filtered.T)]
+        return np.column_stack(columns)
+
+
 def _sampled_history(spec, record, t_end, rtol, engine, dt, history, what):
     """One history of the scene (a name of scene_engine.HISTORIES) sampled every dt [s] up to where
     the run stopped, from a run whose energy is checked (`what` names it in the error)."""
@@ -101,27 +125,23 @@ def _sampled_history(spec, record, t_end, rtol, engine, dt, history, what):
     return rows[: reached[-1] + 1] if reached.size else np.zeros((1, rows.shape[1]))
 
 
-def sampled_peaks(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
-    """(the filtered peak of each storey's `history` (a name of scene_engine.HISTORIES), their raw
-    peaks on the same samples, the sampling interval [s], whether it resolved them: its Nyquist
-    frequency above the scene's fastest mode and every other sample giving the same filtered peaks
-    within ALIAS_SHARE)."""
+def sampled(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
+    """Each storey's `history` (a name of scene_engine.HISTORIES) sampled and filtered: a Sampled,
+    its sampling refined until every other sample gives the same filtered peaks."""
     dt, fine_enough = sample_dt(spec)
+    start = float(record.t[0])
     for refinement in range(REFINEMENTS + 1):
         samples = _sampled_history(spec, record, t_end, rtol, engine, dt, history, what)
         raw = np.max(np.abs(samples), axis=0)
-        if len(samples) < 64:                           # too short to filter: the raw samples' peak
-            return raw, raw, dt, fine_enough
+        if len(samples) < 64:                           # too short to filter: the raw samples as they are
+            return Sampled(raw, raw, dt, fine_enough, samples, start)
         filtered, share = _alias_share(samples, dt)
         if share <= ALIAS_SHARE or dt / 2 < DT_MIN * (1 - 1e-12):
             break
         dt /= 2
-    return filtered, raw, dt, fine_enough and share <= ALIAS_SHARE
+    return Sampled(np.max(np.abs(filtered), axis=0), raw, dt, fine_enough and share <= ALIAS_SHARE, filtered, start)
 
 
 def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
-    """(the filtered peak [m/s2] of each storey's floor, the sampling interval [s] used, whether it
-    resolved the floor: sampled_peaks')."""
-    filtered, _, dt, resolved = sampled_peaks(spec, record, "base_acc", "the floors' accelerations", t_end, rtol,
-                                              engine)
-    return filtered, dt, resolved
+    """Each storey's floor acceleration [m/s2], sampled and filtered (a Sampled)."""
+    return sampled(spec, record, "base_acc", "the floors' accelerations", t_end, rtol, engine)

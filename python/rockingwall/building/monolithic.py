@@ -141,27 +141,40 @@ def peak_sensitivity(r, scaled):
     return worst
 
 
-def storey_results(r, wall_params_list, floor, ties=None):
-    """Each storey's StoreyResult from a scene_engine.Result, its floors' filtered peaks and the
-    ties' filtered and raw forces (tie_force.peaks' first two; None: not computed)."""
+def storey_results(r, wall_params_list, floor=None, ties=None):
+    """Each storey's StoreyResult from a scene_engine.Result, its floors' and ties' sampled and
+    filtered histories (floor_acc.Sampled; None: not computed)."""
     storeys = []
     for i, params in enumerate(wall_params_list):
         collapsed = bool(r.collapsed[i])
-        tie, tie_raw = (None, None) if ties is None or collapsed else (float(ties[0][i]), float(ties[1][i]))
+        tie, tie_raw = (None, None) if ties is None or collapsed else (float(ties.filtered_peak[i]),
+                                                                          float(ties.raw_peak[i]))
         du = engine.delta_u(**params) if params else math.nan
         storeys.append(StoreyResult(
             storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
             diaphragm_peak_m=float(r.peak_diaphragm[i]),
-            base_peak_acc_m_s2=None if floor[i] is None else float(floor[i]),
+            base_peak_acc_m_s2=None if floor is None else float(floor.filtered_peak[i]),
             base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i]),
             tie_force_N_per_m=tie, tie_force_raw_N_per_m=tie_raw))
     return tuple(storeys)
 
 
+@dataclasses.dataclass(frozen=True)
+class Histories:
+    """A building run's histories on the output grid asked for: the scene's (scene_engine.Result)
+    and, where computed, the floors' accelerations [m/s2] and the ties' forces [N/m] from their
+    dense samples filtered at floor_acc.CUTOFF_HZ (rows: the scene's times; None: not computed or no
+    grid). The scene's own base_acc and tie rows are raw: on a coarse grid the tie's ringing aliases
+    into them."""
+    scene: object
+    floor_acc: np.ndarray = None
+    tie_force: np.ndarray = None
+
+
 def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
             filter_floor=True, executor=None, tie_forces=False):
-    """Runs a Spec under a record: (BuildingResult, the scene_engine.Result with its histories).
+    """Runs a Spec under a record: (BuildingResult, Histories).
     solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
     check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
     runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
@@ -179,16 +192,16 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
               for sign in ((-1.0, 1.0) if check_sensitivity else ())]
     r = main.result()
     share = check_energy(r, record.name)
-    floor, floor_dt, resolved = floor.result() if floor else ([None] * len(wall_params_list), None, None)
-    ties = ties.result() if ties else None
+    floor, ties = (f.result() if f else None for f in (floor, ties))
     result = BuildingResult(record=record.name, storeys=storey_results(r, wall_params_list, floor, ties),
                             solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
                             peak_sensitivity=peak_sensitivity(r, [f.result() for f in scaled]) if scaled else None,
-                            floor_sample_dt_s=floor_dt, floor_resolved=resolved,
-                            tie_sample_dt_s=ties[2] if ties else None, tie_resolved=ties[3] if ties else None)
-    return result, r
+                            floor_sample_dt_s=floor.dt if floor else None, floor_resolved=floor.resolved if floor else None,
+                            tie_sample_dt_s=ties.dt if ties else None, tie_resolved=ties.resolved if ties else None)
+    on_grid = [None if sampled is None or t_out is None else sampled.at(r.t) for sampled in (floor, ties)]
+    return result, Histories(r, *on_grid)
 
 
 def simulate_building(building, record, t_end=None, rtol=1e-8, output_interval=None, solver=None,

@@ -92,21 +92,29 @@ def to_json(building, results):
                    "runs": [r.to_dict() for r in results]})
 
 
-def history_csv(history, path):
+def history_csv(histories, path):
     """time [s] and, per storey, s1 and s2 [m] (relative to the wall's base), the diaphragm [m]
-    (relative to its supports) and the wall base's absolute acceleration [m/s2]."""
-    n = history.s1.shape[1]
-    columns = [history.t] + [a[:, i] for i in range(n) for a in (history.s1, history.s2, history.diaphragm,
-                                                                   history.base_acc)]
-    names = ["time"] + [f"{name}_{i + 1}" for i in range(n) for name in ("s1", "s2", "diaphragm", "base_acc")]
+    (relative to its supports), and where computed the absolute acceleration of the floor the wall
+    stands on [m/s2] and the tie's force on the diaphragm [N/m], both low-pass filtered at
+    floor_acc.CUTOFF_HZ (monolithic.Histories): raw on this grid, the tie's ringing would alias
+    into them."""
+    scene = histories.scene
+    n = scene.s1.shape[1]
+    per_storey = {"s1": scene.s1, "s2": scene.s2, "diaphragm": scene.diaphragm}
+    for name, filtered in (("floor_acc", histories.floor_acc), ("tie_force", histories.tie_force)):
+        if filtered is not None:
+            per_storey[f"{name}_{CUTOFF_HZ:g}Hz"] = filtered
+    columns = [scene.t] + [a[:, i] for i in range(n) for a in per_storey.values()]
+    names = ["time"] + [f"{name}_{i + 1}" for i in range(n) for name in per_storey]
     np.savetxt(path, np.column_stack(columns), delimiter=",", header=",".join(names), comments="", fmt="%.9g")
 
 
-def plot(building, result, history, path):
+def plot(building, result, histories, path):
     """s1 of each storey's wall and its diaphragm over time, one panel per storey (top storey first)."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    history = histories.scene
     n = len(result.storeys)
     fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n + 0.6), sharex=True, squeeze=False)
     for panel, s in zip(axes[::-1, 0], result.storeys):

@@ -14,6 +14,5 @@ from . import floor_acc
 
 
 def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
-    """(the filtered peak [N/m] of each storey's tie force, their raw peaks on the same samples
-    [N/m], the sampling interval [s], whether the sampling resolved them: floor_acc.sampled_peaks')."""
-    return floor_acc.sampled_peaks(spec, record, "tie", "the ties' forces", t_end, rtol, engine)
+    """Each storey's tie force [N/m], sampled and filtered (a floor_acc.Sampled)."""
+    return floor_acc.sampled(spec, record, "tie", "the ties' forces", t_end, rtol, engine)
