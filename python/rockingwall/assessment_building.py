@@ -27,7 +27,7 @@ def run_cases(building, lvs, states, ensemble=None):
     """One row per record at an intensity level (lvs: assessment.levels()) and storey, and the
     ensemble outcomes of each row."""
     walls = storey_walls(building)
-    tie_forces = any(s.quantity == "F_top" for st in states for s in st)  # one more run each, where asked for
+    tie_forces = any(limits.ask_tie_force(st) for st in states)  # one more run each, where asked for
 
     def one(lv):
         result, _ = monolithic.simulate_building(building, lv.record, filter_floor=False, tie_forces=tie_forces)
@@ -35,8 +35,7 @@ def run_cases(building, lvs, states, ensemble=None):
                    if ensemble is not None else [None] * len(walls))
         rows = []
         for s, wall, st, m in zip(result.storeys, walls, states, members):
-            f_top = np.nan if s.tie_force_N_per_m is None else s.tie_force_N_per_m
-            peaks = dict(peak_s1=s.peak_s1_m, peak_s2=s.peak_s2_m, peak_F_top=f_top, collapsed=s.collapsed)
+            peaks = dict(peak_s1=s.peak_s1_m, peak_s2=s.peak_s2_m, peak_F_top=s.tie_force_or_nan, collapsed=s.collapsed)
             summary = ens.summarize(m, st, robustness.nominal_outcome(st, peaks)) if m is not None else None
             row = case_row(lv, {STOREY_COLUMN: s.storey}, "building", peaks, s.t_collapse_s or np.nan, s.impacts,
                            wall.delta_u, st, summary)

@@ -212,7 +212,7 @@ def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):
         result, _ = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)
     except (BuildingError, RuntimeError):
         return None
-    return [(s.peak_s1_m, s.peak_s2_m, np.nan if s.tie_force_N_per_m is None else s.tie_force_N_per_m, s.collapsed,
+    return [(s.peak_s1_m, s.peak_s2_m, s.tie_force_or_nan, s.collapsed,
              s.t_collapse_s if s.collapsed else np.nan) for s in result.storeys]
 
 

@@ -53,6 +53,11 @@ class LimitState:
         return f"{self.name}: {self.quantity} >= {value}"
 
 
+def ask_tie_force(states):
+    """Whether any of the limit states is on F_top (its runs then need their tie forces)."""
+    return any(s.quantity == "F_top" for s in states)
+
+
 def parse(text, wall):
     """A LimitState from 'NAME: s1 >= 0.6*Delta_u' (NAME optional) for this wall."""
     m = _FORM.match(text)

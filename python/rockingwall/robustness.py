@@ -26,8 +26,7 @@ def members(wall_params, record, t_end, ensemble, diaphragm=None, tie=None, stat
     (the members' tie forces too where one of the limit states `states` is on F_top)."""
     if diaphragm is None:
         return ens.wall_members(wall_params, record, ensemble, t_end)
-    with_tie_force = any(s.quantity == "F_top" for s in states)
-    return ens.diaphragm_members(wall_params, diaphragm, tie, record, ensemble, t_end, with_tie_force)
+    return ens.diaphragm_members(wall_params, diaphragm, tie, record, ensemble, t_end, limits.ask_tie_force(states))
 
 
 def of_result(result, record, t_end, ensemble, diaphragm=None, tie=None, states=None):

@@ -43,6 +43,11 @@ class StoreyResult:
     tie_force_raw_N_per_m: float = None  # the same unfiltered (it grows with the tie's stiffness)
 
     @property
+    def tie_force_or_nan(self):
+        """tie_force_N_per_m, NaN where not computed or collapsed (for arrays of runs)."""
+        return math.nan if self.tie_force_N_per_m is None else self.tie_force_N_per_m
+
+    @property
     def s1_over_delta_u(self):
         return self.peak_s1_m / self.delta_u_m
 
@@ -198,7 +203,8 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
                             event_losses_J_m=r.event_losses, residual_share=share, steps=r.steps, events=r.events,
                             peak_sensitivity=peak_sensitivity(r, [f.result() for f in scaled]) if scaled else None,
-                            floor_sample_dt_s=floor.dt if floor else None, floor_resolved=floor.resolved if floor else None,
+                            floor_sample_dt_s=floor.dt if floor else None,
+                            floor_resolved=floor.resolved if floor else None,
                             tie_sample_dt_s=ties.dt if ties else None, tie_resolved=ties.resolved if ties else None)
     on_grid = [None if sampled is None or t_out is None else sampled.at(r.t) for sampled in (floor, ties)]
     return result, Histories(r, *on_grid)
