@@ -86,3 +86,17 @@ def private_tmp(tmp_path, monkeypatch):
     monkeypatch.setenv("TMPDIR", str(tmp))
     monkeypatch.setattr(tempfile, "tempdir", str(tmp))
     return tmp
+
+
+@pytest.fixture()
+def figures(monkeypatch):
+    """Every matplotlib figure saved while the test runs (the plots close them after saving)."""
+    import matplotlib.figure
+    saved = []
+    original = matplotlib.figure.Figure.savefig
+
+    def keep(self, *a, **k):
+        saved.append(self)
+        return original(self, *a, **k)
+    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", keep)
+    return saved

@@ -4,7 +4,6 @@ import ast
 import json
 import pathlib
 
-import matplotlib.figure
 import numpy as np
 import pandas as pd
 import pytest
@@ -16,19 +15,6 @@ from rockingwall.cli import main
 PACKAGE = pathlib.Path(rw.__file__).parent
 WALL = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013"]
 PULSE = "gaussian:0.04,1.0"
-
-
-@pytest.fixture()
-def figures(monkeypatch):
-    """Every figure saved while the test runs (the plots close them after saving)."""
-    saved = []
-    original = matplotlib.figure.Figure.savefig
-
-    def keep(self, *a, **k):
-        saved.append(self)
-        return original(self, *a, **k)
-    monkeypatch.setattr(matplotlib.figure.Figure, "savefig", keep)
-    return saved
 
 
 def test_finding2_fragility_colours_are_keyed_to_kd_in_every_panel(tmp_path, figures):
