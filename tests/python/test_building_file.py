@@ -48,15 +48,21 @@ def test_an_eccentric_overburden_reaches_the_wall_and_the_echo():
     assert building_file.parse(CONTRACT).wall_parameters(0)["eTop"] == 0.0
 
 
-@pytest.mark.parametrize("edit, line, words", [
-    (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 4, "unknown key"),
-    (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 4, "not a unit of"),
-    (lambda t: t.replace('W = "25.2 kN/m", ', 'W = "25.2 kN/m", unit_weight = "18 kN/m3", '), 4, "one of the two"),
+@pytest.mark.parametrize("edit, line, words", [  # the line the problem is on (was its storey's header's)
+    (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 7, "unknown key"),
+    (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 7, "not a unit of"),
+    (lambda t: t.replace('W = "25.2 kN/m", ', 'W = "25.2 kN/m", unit_weight = "18 kN/m3", '), 6, "one of the two"),
     (lambda t: t.replace('height = "3.6 m"', 'height = "3.6 m"\nheight = "3 m"'), 12, "not valid TOML"),
-    (lambda t: t.replace('mass = "200 kg/m"', 'mass = "-200 kg/m"'), 10, "outside"),
-    (lambda t: t.replace('wall = { b = "350 mm"', 'wal = { b = "350 mm"'), 4, "unknown key"),
-    (lambda t: t.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "120 mm"'), 10,
+    (lambda t: t.replace('mass = "200 kg/m"', 'mass = "-200 kg/m"'), 13, "outside"),
+    (lambda t: t.replace('wall = { b = "350 mm"', 'wal = { b = "350 mm"'), 6, "unknown key"),
+    (lambda t: t.replace('overburden = "1.5 kN/m"', 'overburden = "1.5 kN/m", e_top = "120 mm"'), 12,
      "|e_top| <= b/2 = 115 mm"),
+    (lambda t: t.replace('tie = "1e6 N/m/m"\n\n', 'tie = "1e6 N/m"\n\n'), 8, "not a unit of"),
+    (lambda t: t.replace('wall = { b = "230 mm", unit_weight = "18 kN/m3", overburden = "1.5 kN/m" }\n', '')
+     + '\n[storey.wall]\nb = "230 mm"\nunit_weight = "18 kN/m3"\noverburden = "-1.5 kN/m"\n', 18,
+     "outside"),  # a sub-table's key on its own line
+    (lambda t: t.replace('diaphragm = { stiffness = "20 kN/m/m", mass = "200 kg/m", damping = 0.05 }', ''), 10,
+     "diaphragm is missing"),  # nothing to point at: the storey's header
 ])
 def test_a_bad_file_names_the_file_the_line_and_the_problem(edit, line, words):
     with pytest.raises(building_file.BuildingFileError) as err:

@@ -31,13 +31,45 @@ class BuildingFileError(ValueError):
 
 
 class _Where:
-    """The file and the line of a table, for messages."""
+    """The file and its lines, for messages that name the line a problem is on."""
 
     def __init__(self, path, lines):
         self.path, self.lines = path, lines
 
-    def error(self, line, message):
-        return BuildingFileError(f"{self.path}:{line}: {message}")
+    def error(self, line, message, at=()):
+        """The error of a problem in the table whose header is on `line`, at the keys `at` below it
+        (the line where the innermost of them that is set is named)."""
+        return BuildingFileError(f"{self.path}:{self.line_of(line, at)}: {message}")
+
+    def line_of(self, start, keys):
+        """The line (1-based) that sets keys[-1] of the table whose header is on line `start`, found
+        key by key (an inline table's keys on its own line, a sub-table's below its header); the
+        line of the innermost key found, `start` if none is."""
+        line, end = start, self._table_end(start)
+        for key in keys:
+            found = self._find(key, line, end)
+            if found is None:
+                break
+            line = found
+            if re.search(r"=\s*\{", self.lines[line - 1]):  # an inline table: all its keys are on its line
+                end = line + 1
+        return line
+
+    def _table_end(self, start):
+        """The first line after `start` that opens the next storey or the [building] table."""
+        header = re.compile(r"^\s*\[(\[\s*storey\s*\]|\s*building\s*)\]")
+        return next((n for n in range(start + 1, len(self.lines) + 1) if header.match(self.lines[n - 1])),
+                    len(self.lines) + 1)
+
+    def _find(self, key, first, end):
+        k = re.escape(key)
+        pattern = re.compile(rf'(^|[{{,])\s*(["\']?){k}\2\s*=|^\s*\[\s*[\w.]*\b{k}\s*\]')
+        return next((n for n in range(first, end) if pattern.search(self.lines[n - 1])), None)
+
+
+def _keys(what):
+    """The keys below its table that a message's subject names: 'storey 1.diaphragm' -> ['diaphragm']."""
+    return what.split(".")[1:]
 
 
 def _table_lines(text, header):
@@ -49,57 +81,62 @@ def _table_lines(text, header):
 def _check_keys(table, allowed, what, where, line):
     unknown = sorted(set(table) - allowed)
     if unknown:
-        raise where.error(line, f"{what}: unknown key(s) {', '.join(unknown)}; known: {', '.join(sorted(allowed))}")
+        raise where.error(line, f"{what}: unknown key(s) {', '.join(unknown)}; known: {', '.join(sorted(allowed))}",
+                          _keys(what) + unknown[:1])
 
 
 def _quantity(table, key, unit, where, line, what, default=None):
     if key not in table:
         if default is None:
-            raise where.error(line, f"{what}.{key} is missing")
+            raise where.error(line, f"{what}.{key} is missing", _keys(what))
         return default
     try:
         v = parse_quantity(table[key], unit, f"{what}.{key}")
     except ValueError as exc:
-        raise where.error(line, str(exc)) from None
+        raise where.error(line, str(exc), _keys(what) + [key]) from None
     low, high = RANGES[key]
     if not low <= v <= high:
-        raise where.error(line, f"{what}.{key} = {table[key]!r} is outside [{low:g}, {high:g}] {unit or ''}".rstrip())
+        raise where.error(line, f"{what}.{key} = {table[key]!r} is outside [{low:g}, {high:g}] {unit or ''}".rstrip(),
+                          _keys(what) + [key])
     return v
 
 
 def _wall(table, height, where, line, what):
     if not isinstance(table, dict):
-        raise where.error(line, f"{what} must be a table, e.g. {{ b = \"230 mm\", W = \"14.9 kN/m\" }}")
+        raise where.error(line, f"{what} must be a table, e.g. {{ b = \"230 mm\", W = \"14.9 kN/m\" }}", _keys(what))
     _check_keys(table, WALL_KEYS, what, where, line)
     b = _quantity(table, "b", "m", where, line, what)
     if ("W" in table) == ("unit_weight" in table):
-        raise where.error(line, f"{what}: give W (weight per metre of wall) or unit_weight, one of the two")
+        raise where.error(line, f"{what}: give W (weight per metre of wall) or unit_weight, one of the two",
+                          _keys(what))
     W = (_quantity(table, "W", "N/m", where, line, what) if "W" in table
          else _quantity(table, "unit_weight", "N/m3", where, line, what) * b * height)
     law = table.get("hinge_law", HINGE_LAW_DEFAULT)
     if law not in HINGE_LAWS:
-        raise where.error(line, f"{what}.hinge_law = {law!r}: known {', '.join(HINGE_LAWS)}")
+        raise where.error(line, f"{what}.hinge_law = {law!r}: known {', '.join(HINGE_LAWS)}", _keys(what) + ["hinge_law"])
     e_top = _quantity(table, "e_top", "m", where, line, what, 0.0)
     if not abs(e_top) <= b / 2:
         raise where.error(line, f"{what}.e_top = {table['e_top']!r}: the overburden must bear within the wall, "
-                                f"|e_top| <= b/2 = {b / 2 * 1e3:g} mm")
+                                f"|e_top| <= b/2 = {b / 2 * 1e3:g} mm", _keys(what) + ["e_top"])
     return WallLayer(b=b, W=W, overburden=_quantity(table, "overburden", "N/m", where, line, what, 0.0),
                      e_top=e_top, hinge_law=law, e_r=_quantity(table, "e_r", "1", where, line, what, E_R_DEFAULT))
 
 
 def _diaphragm(table, where, line, what):
     if not isinstance(table, dict):
-        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"20 kN/m/m\", mass = \"200 kg/m\" }}")
+        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"20 kN/m/m\", mass = \"200 kg/m\" }}",
+                          _keys(what))
     _check_keys(table, DIAPHRAGM_KEYS, what, where, line)
     law = table.get("law", "linear")
     if law not in DIAPHRAGM_LAWS:
-        raise where.error(line, f"{what}.law = {law!r}: known {', '.join(DIAPHRAGM_LAWS)}")
+        raise where.error(line, f"{what}.law = {law!r}: known {', '.join(DIAPHRAGM_LAWS)}", _keys(what) + ["law"])
     hysteretic = law != "linear"
     if hysteretic != ("yield_force" in table):
-        raise where.error(line, f"{what}: yield_force is given with a Bouc-Wen law and only with one")
+        raise where.error(line, f"{what}: yield_force is given with a Bouc-Wen law and only with one", _keys(what))
     given = [k for k in PINCHING_KEYS if k in table]
     if given and law != "boucWenPinched":
-        raise where.error(line, f"{what}: {', '.join(given)} is the pinching of law = \"boucWenPinched\" only")
+        raise where.error(line, f"{what}: {', '.join(given)} is the pinching of law = \"boucWenPinched\" only",
+                          _keys(what))
     pinching = {k: _quantity(table, k, "1", where, line, what, PINCHING_TIMBER[k]) for k in PINCHING_KEYS}
     return Diaphragm(stiffness=_quantity(table, "stiffness", "N/m2", where, line, what),
                      mass=_quantity(table, "mass", "kg/m", where, line, what),
@@ -111,7 +148,8 @@ def _diaphragm(table, where, line, what):
 
 def _in_plane(table, where, line, what):
     if not isinstance(table, dict):
-        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"5 MN/m/m\", mass = \"800 kg/m\" }}")
+        raise where.error(line, f"{what} must be a table, e.g. {{ stiffness = \"5 MN/m/m\", mass = \"800 kg/m\" }}",
+                          _keys(what))
     _check_keys(table, IN_PLANE_KEYS, what, where, line)
     return InPlaneWalls(stiffness=_quantity(table, "stiffness", "N/m2", where, line, what),
                         mass=_quantity(table, "mass", "kg/m", where, line, what),
@@ -129,7 +167,8 @@ def _storey(table, tie, where, line, k):
             raise where.error(line, f"{what}.{key} is missing")
     wall = _wall(table["wall"], height, where, line, f"{what}.wall")
     if not wall.b < height:
-        raise where.error(line, f"{what}: the wall's thickness b = {wall.b:g} m must be less than its height {height:g} m")
+        raise where.error(line, f"{what}: the wall's thickness b = {wall.b:g} m must be less than its height {height:g} m",
+                          ["wall"])
     in_plane = _in_plane(table["in_plane"], where, line, f"{what}.in_plane") if "in_plane" in table else None
     return Storey(height=height, wall=wall, diaphragm=_diaphragm(table["diaphragm"], where, line, f"{what}.diaphragm"),
                   tie=_quantity(table, "tie", "N/m2", where, line, what, tie), in_plane=in_plane)
