@@ -53,8 +53,8 @@ def test_the_file_sets_the_pinching_and_every_solver_takes_it():
 
 
 @pytest.mark.parametrize("extra, line, words", [
-    (', pinch_size = 1.5', 4, "outside"),
-    (', pinch_width = "0.2 m"', 4, "unit"),
+    (', pinch_size = 1.5', 7, "outside"),  # the diaphragm's line
+    (', pinch_width = "0.2 m"', 7, "unit"),
 ])
 def test_bad_pinching_names_the_file_and_line(extra, line, words):
     with pytest.raises(building_file.BuildingFileError) as err:
@@ -66,7 +66,7 @@ def test_pinching_with_another_law_is_refused():
     text = (TIMBER % ', pinch_size = 0.5').replace('"boucWenPinched"', '"boucWen"')
     with pytest.raises(building_file.BuildingFileError) as err:
         building_file.parse(text, "roof.toml")
-    assert "roof.toml:4:" in str(err.value) and "boucWenPinched" in str(err.value)
+    assert "roof.toml:7:" in str(err.value) and "boucWenPinched" in str(err.value)
 
 
 def test_pinching_changes_a_yielding_diaphragm_and_nothing_else():
