@@ -38,7 +38,8 @@ class TieForce:
 @dataclasses.dataclass
 class Result:
     """Peaks [m] of the mid-height (s1) and top (s2) displacements, collapse, impacts, and the
-    time history (DataFrame: time [s], ag [m/s^2], s1 [m], s2 [m]) on the output grid."""
+    time history (DataFrame: time [s], ag [m/s^2], s1 [m], s2 [m], and under a diaphragm with mass
+    F_top_25Hz [N/m], the tie's force filtered as peak_F_top is) on the output grid."""
     wall: Wall
     record: str
     engine: str
@@ -119,7 +120,7 @@ def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
                                    check_sensitivity=True, tie_forces=True)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.scene.s1[:, 0],
-                            "s2": h.scene.s2[:, 0]})
+                            "s2": h.scene.s2[:, 0], "F_top_25Hz": h.tie_force[:, 0]})
     force, found = float("nan"), None
     if not s.collapsed:  # a toppled wall's connection force is no demand: it fell
         force = s.tie_force_N_per_m

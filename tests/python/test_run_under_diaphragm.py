@@ -97,3 +97,15 @@ def test_a_sensitive_run_is_said_under_the_table(monkeypatch, capsys):
     assert main(["run", *WALL_ARGS, "--pga", "0.2", "gaussian:0.04,1", "--json"]) == 0
     (run,) = json.loads(capsys.readouterr().out)["runs"]
     assert "peak_sensitivity" not in run
+
+
+def test_the_written_history_has_the_tie_force_the_table_reads(tmp_path, capsys):
+    """`run --diaphragm-mass --out` wrote time, ag, s1 and s2: the connection's force, the number an
+    assessor checks next to the wall, had no history. The CSV now has F_top_25Hz, filtered as the
+    reported peak is: its peak on the 0.01-s grid never above that one and within 5 % of it."""
+    assert main(["run", *WALL_ARGS, "--diaphragm-mass", "200kg/m", "--pga", "0.1", "elcentro", "--json",
+                 "--out", str(tmp_path)]) == 0
+    (run,) = json.loads(capsys.readouterr().out)["runs"]
+    (csv,) = tmp_path.glob("*.csv")
+    written = np.max(np.abs(np.genfromtxt(csv, delimiter=",", names=True)["F_top_25Hz"]))
+    assert 0.95 * run["peak_F_top_N_per_m"] <= written <= run["peak_F_top_N_per_m"] * (1 + 1e-9)
