@@ -10,7 +10,7 @@ import pytest
 from rockingwall.building import building_file, monolithic
 from rockingwall.commands import sweep as sweep_command
 from rockingwall.records import read_at2
-from rockingwall.sweep import rows as row_format, store, suites
+from rockingwall.sweep import building_runs, rows as row_format, store, suites
 
 
 @pytest.fixture
@@ -55,6 +55,22 @@ def test_a_resumed_building_sweep_reuses_rows_until_the_file_changes(building, t
     assert sweep(building, out) == 0
     rows = pd.read_csv(out)
     assert (rows.kd_kN == 200.0).sum() == 4  # the upper storey's runs again, with the new roof
+
+
+def test_rows_of_the_earlier_format_are_computed_again(building, tmp_path, monkeypatch, capsys):
+    """Rows written when a building row's peak_F_top was 0 are not reused on resume: the row format
+    is part of each run's key."""
+    out = tmp_path / "sweep.csv"
+    monkeypatch.setattr(building_runs, "ROW_FORMAT", "1")
+    assert sweep(building, out) == 0
+    monkeypatch.undo()
+    capsys.readouterr()
+    assert sweep(building, out) == 0
+    said = capsys.readouterr()
+    assert said.err.count("computed from other inputs (settings differ): run again") == 8
+    assert "8 runs (0 errors, 0 killed or timed out, 0 already done)" in said.out
+    rows = pd.read_csv(out)
+    assert len(rows) == 8 and rows.peak_F_top.isna().all()
 
 
 def test_only_a_building_row_may_leave_its_tie_force_empty():

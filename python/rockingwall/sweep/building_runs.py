@@ -14,6 +14,10 @@ from ..building import building_file
 from .rows import BUILDING_MODEL as MODEL
 from .run_spec import RunSpec
 
+# What a row holds, part of each run's key: rows of an earlier format are computed again on resume.
+# 2: peak_F_top left empty (1 wrote 0 there, which reads as a tie that carries nothing).
+ROW_FORMAT = "2"
+
 
 def _fmt(x):
     return f"{x:.6g}"
@@ -39,10 +43,10 @@ def expand(grid, suite):
         for (scale, pga), (i, storey) in itertools.product(pairs, enumerate(building.storeys, 1)):
             level = pga if tag == "pga" else scale
             run_id = f"b{digest}|storey{i}|{rec.name}|{tag}{_fmt(level)}|tail{_fmt(grid['tail'])}"
+            sets = (("building", text), ("storey", str(i)), ("row_format", ROW_FORMAT))
             specs.append(RunSpec(run_id, f"{building.name}: storey {i}", MODEL, storey.wall.hinge_law,
                                  storey.diaphragm.stiffness / 1e3, rec.name, rec.path, rec.pga_g, scale, pga,
-                                 rec.duration + float(grid["tail"]), (("building", text), ("storey", str(i))),
-                                 rec.error, rec.sha256))
+                                 rec.duration + float(grid["tail"]), sets, rec.error, rec.sha256))
     return specs
 
 
