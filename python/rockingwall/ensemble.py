@@ -156,7 +156,7 @@ def wall_members(params, record, ensemble, t_end):
 def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a wall tied to a diaphragm with mass (scene b): the diaphragm's stiffness,
     mass and damping and the tie perturbed too; one scene run per member, and with_tie_force one
-    more for each standing member's tie force (tie_force.peaks, as the nominal run's; else NaN)."""
+    more for each standing member's tie force (tie_force.sample, as the nominal run's; else NaN)."""
     factors = ensemble.factors()
     walls = member_walls(params, factors)
     runs = []
@@ -206,7 +206,7 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
 def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):
     """(peak_s1, peak_s2, peak_F_top, collapsed, t_collapse) per storey, or None for a run that
     failed (the solver refused it or its energy balance did not close). with_tie_force: the
-    standing walls' tie forces from a second run (tie_force.peaks), else NaN."""
+    standing walls' tie forces from a second run (tie_force.sample), else NaN."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
         result, _ = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)

@@ -50,8 +50,8 @@ def test_a_limit_on_the_tie_force_has_its_probability_over_the_members(tmp_path,
     is reached by all, one far above by none (the probability was left blank: no member had it).
     Where no limit is on F_top only the nominal run's tie force is computed."""
     calls = []
-    real_peaks = tie_force.peaks
-    monkeypatch.setattr(tie_force, "peaks", lambda *a, **kw: calls.append(1) or real_peaks(*a, **kw))
+    real_sample = tie_force.sample
+    monkeypatch.setattr(tie_force, "sample", lambda *a, **kw: calls.append(1) or real_sample(*a, **kw))
     args = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013", "--kd-values", "20kN/m/m",
             "--diaphragm-mass", "200kg/m", "--pga", "0.1", "--ensemble", "4"]
     limits = ["--limit", "low: F_top >= 0.1kN/m", "--limit", "high: F_top >= 100kN/m"]

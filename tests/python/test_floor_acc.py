@@ -61,7 +61,7 @@ def test_a_sine_of_ground_motion_passes_below_the_cut_off_and_not_above(hz, gain
     ramp = 0.5 * (1 - np.cos(np.pi * np.clip(np.minimum(t, 4.0 - t) / 0.5, 0.0, 1.0)))
     ag = 0.1 * G * np.sin(2 * np.pi * hz * t) * ramp
     spec = se.Spec(storeys=(bench.storey(1e8, False),))
-    floor = floor_acc.peaks(spec, Record("sine", t, ag), engine="exact")
+    floor = floor_acc.sample(spec, Record("sine", t, ag), engine="exact")
     assert floor.resolved
     assert floor.filtered_peak[0] == pytest.approx(gain * 0.1 * G, abs=2e-3 * 0.1 * G)
 
@@ -86,6 +86,6 @@ def test_content_that_would_alias_into_the_pass_band_is_caught():
     ramp = 0.5 * (1 - np.cos(np.pi * np.clip(np.minimum(t, 4.0 - t) / 0.5, 0.0, 1.0)))
     ag = G * (0.1 * np.sin(2 * np.pi * 2.0 * t) + 0.5 * np.sin(2 * np.pi * 510.0 * t)) * ramp
     spec = se.Spec(storeys=(bench.storey(1e8, False),))
-    floor = floor_acc.peaks(spec, Record("two sines", t, ag), engine="exact")
+    floor = floor_acc.sample(spec, Record("two sines", t, ag), engine="exact")
     assert floor.resolved and floor.dt == pytest.approx(5e-4)
     assert floor.filtered_peak[0] == pytest.approx(0.1 * G, rel=0.01)

@@ -125,7 +125,7 @@ def _sampled_history(spec, record, t_end, rtol, engine, dt, history, what):
     return rows[: reached[-1] + 1] if reached.size else np.zeros((1, rows.shape[1]))
 
 
-def sampled(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
+def sample_history(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
     """Each storey's `history` (a name of scene_engine.HISTORIES) sampled and filtered: a Sampled,
     its sampling refined until every other sample gives the same filtered peaks."""
     dt, fine_enough = sample_dt(spec)
@@ -142,6 +142,6 @@ def sampled(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
     return Sampled(np.max(np.abs(filtered), axis=0), raw, dt, fine_enough and share <= ALIAS_SHARE, filtered, start)
 
 
-def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
+def sample(spec, record, t_end=None, rtol=1e-8, engine=None):
     """Each storey's floor acceleration [m/s2], sampled and filtered (a Sampled)."""
-    return sampled(spec, record, "base_acc", "the floors' accelerations", t_end, rtol, engine)
+    return sample_history(spec, record, "base_acc", "the floors' accelerations", t_end, rtol, engine)

@@ -165,13 +165,17 @@ def storey_results(r, wall_params_list, floor=None, ties=None):
     return tuple(storeys)
 
 
+# The main run's histories on the output grid. Not the floors' accelerations or the ties' forces:
+# raw on a coarse grid the tie's ringing aliases into them (Histories has them filtered).
+SCENE_HISTORIES = ("s1", "s2", "diaphragm")
+
+
 @dataclasses.dataclass(frozen=True)
 class Histories:
-    """A building run's histories on the output grid asked for: the scene's (scene_engine.Result)
-    and, where computed, the floors' accelerations [m/s2] and the ties' forces [N/m] from their
-    dense samples filtered at floor_acc.CUTOFF_HZ (rows: the scene's times; None: not computed or no
-    grid). The scene's own base_acc and tie rows are raw: on a coarse grid the tie's ringing aliases
-    into them."""
+    """A building run's histories on the output grid asked for: the scene's (scene_engine.Result,
+    with SCENE_HISTORIES) and, where computed, the floors' accelerations [m/s2] and the ties' forces
+    [N/m] from their dense samples filtered at floor_acc.CUTOFF_HZ (rows: the scene's times; None:
+    not computed or no grid)."""
     scene: object
     floor_acc: np.ndarray = None
     tie_force: np.ndarray = None
@@ -183,16 +187,17 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
     solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
     check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
     runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
-    the floors' filtered peak acceleration (floor_acc.peaks: one more run on a dense grid); else
+    the floors' filtered peak acceleration (floor_acc.sample: one more run on a dense grid); else
     base_peak_acc_m_s2 is None. tie_forces: each standing wall's tie force filtered at 25 Hz
-    (tie_force.peaks: one more run on a dense grid). executor: where those runs go
+    (tie_force.sample: one more run on a dense grid). executor: where those runs go
     (concurrent_runs.threads(): side by side; None: one after another); every run's energy balance
     is checked, the main run's first."""
     pool = executor or InOrder()
     solver = scene_engine.engine_for(spec, solver)
-    main = pool.submit(scene_engine.run, spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver)
-    floor = pool.submit(floor_acc.peaks, spec, record, t_end, rtol, solver) if filter_floor else None
-    ties = pool.submit(tie_force.peaks, spec, record, t_end, rtol, solver) if tie_forces else None
+    main = pool.submit(scene_engine.run, spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver,
+                       histories=SCENE_HISTORIES)
+    floor = pool.submit(floor_acc.sample, spec, record, t_end, rtol, solver) if filter_floor else None
+    ties = pool.submit(tie_force.sample, spec, record, t_end, rtol, solver) if tie_forces else None
     scaled = [pool.submit(scaled_run, spec, record, 1.0 + sign * SENSITIVITY_PERTURBATION, t_end, rtol, solver)
               for sign in ((-1.0, 1.0) if check_sensitivity else ())]
     r = main.result()

@@ -13,6 +13,6 @@ a collapsed wall's."""
 from . import floor_acc
 
 
-def peaks(spec, record, t_end=None, rtol=1e-8, engine=None):
+def sample(spec, record, t_end=None, rtol=1e-8, engine=None):
     """Each storey's tie force [N/m], sampled and filtered (a floor_acc.Sampled)."""
-    return floor_acc.sampled(spec, record, "tie", "the ties' forces", t_end, rtol, engine)
+    return floor_acc.sample_history(spec, record, "tie", "the ties' forces", t_end, rtol, engine)
