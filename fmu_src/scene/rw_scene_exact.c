@@ -73,9 +73,11 @@ static int enter_region(sx_run *R)
             return entered(R);
         }
     if (R->nregions < R->capacity) slot = R->nregions++;
-    else
+    else {
         for (k = 0; k < R->capacity; k++)
             if (slot < 0 || R->regions[k].used < R->regions[slot].used) slot = k;
+        sx_settle_doubts(R, slot); /* their steps need the region's matrix */
+    }
     R->cur = slot;
     R->regions[slot].used = R->stamp;
     k = sx_region_build(&R->sc, &key, &R->regions[slot]);
@@ -185,6 +187,7 @@ static void collect(sx_run *R)
 static void free_run(sx_run *R)
 {
     int k;
+    sx_free_doubts(R);
     for (k = 0; k < R->nregions; k++) sx_region_free(&R->regions[k]);
     free(R->regions);
     free(R);
@@ -238,6 +241,7 @@ int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, co
         observe(R, R->t);
         code = integrate(R);
     }
+    sx_settle_doubts(R, -1);
     collect(R);
     free_run(R);
     return code;

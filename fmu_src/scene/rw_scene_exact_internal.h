@@ -28,6 +28,9 @@
 
 /* kinds of functionals */
 enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC };
+/* a storey's peak quantities: s1 = (h/2) q1, s2 = (h/2)(q1 + q2), the diaphragm's deformation and
+ * the base acceleration */
+enum { SX_PEAK_S1 = 0, SX_PEAK_S2, SX_PEAK_DEFORM, SX_PEAK_ACC, SX_PEAK_KINDS };
 
 /* what selects a region: which walls stand and their hinge moments Q = c + J q */
 typedef struct {
@@ -121,6 +124,15 @@ typedef struct {
     double a0, a1, s, t, c;
 } sx_line;
 
+/* a step whose quiet test left a peak in doubt: the step was taken, and the peak of `kind` of
+ * `storey` inside it is bounded by `bound`; it is resolved on the exact series only if the peak
+ * reached elsewhere stays under that bound (rw_scene_exact_peaks.c) */
+typedef struct {
+    double bound, h;
+    int storey, kind, region;
+    double xa0[SX_MAX_NA];
+} sx_doubt;
+
 typedef struct {
     rw_scene sc;
     const rw_scene_record *rec;
@@ -138,6 +150,8 @@ typedef struct {
     double last_event_t;
     int same_instant;
     int error;               /* an event's error code (Zeno, no memory, a singular mass matrix) */
+    sx_doubt *doubts;        /* the steps whose peaks are in doubt, in the order taken */
+    int ndoubts;
 } sx_run;
 
 /* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */
@@ -198,21 +212,37 @@ void sx_modes_build(sx_region *r);
 int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
-/* the quiet test on given polynomials of the functionals: 0 (quiet: then the peaks are those of
- * the step's ends, sx_watch_peaks_at_ends), or the first reason why not it found */
+/* the quiet test on given polynomials of the functionals over a step of length h from xa0 in the
+ * current region: 0 (quiet: then the peaks are those of the step's ends, sx_watch_peaks_at_ends,
+ * and of the doubts it left, sx_doubt_peak), or the first reason why not it found (SX_MAY_PEAK
+ * only where no doubt could be kept) */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F]);
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[]);
 /* the peaks at a quiet step's exact ends, xa0 and xa1 */
 void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const double xa0[], const double xa1[]);
 /* the walls' indicator lines under the current modes (after every event) */
 void sx_watch_lines(sx_run *R);
 /* the quiet test of a step from its start state with its table: 1 when no indicator can change
- * sign and no peak can rise over it (then xa1 = exp(Aa h) xa0, the end, and the peaks are those
- * of the ends), else 0 (xa1 not set) */
+ * sign and no peak can rise over it unnoticed (then xa1 = exp(Aa h) xa0, the end, and the peaks
+ * are those of the ends and of the doubts it left), else 0 (xa1 not set) */
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
 /* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
+/* the largest |value| of storey i's peak quantity `kind` over [0, 1] of a series, if over best */
+double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, int storey, int kind, double best);
 /* the work of the ground and of the dashpots over [0, u] of a series */
 void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping);
+
+/* ---- peaks left in doubt by quiet steps (rw_scene_exact_peaks.c) ---- */
+/* the running peak of storey i's quantity `kind` */
+double *sx_peak_of(rw_scene_result *res, int storey, int kind);
+/* keeps a doubt on the current region's step [0, h] from xa0: 0, or 1 if it cannot be kept (no
+ * memory: the caller resolves the step instead) */
+int sx_doubt_peak(sx_run *R, int storey, int kind, double bound, double h, const double xa0[]);
+/* resolves the doubts on region slot `region` (-1: all of them, the largest bounds first, each
+ * only while its bound is over its quantity's peak) and forgets them: before the region is
+ * rebuilt for another key, and at the run's end */
+void sx_settle_doubts(sx_run *R, int region);
+void sx_free_doubts(sx_run *R);
 
 #endif

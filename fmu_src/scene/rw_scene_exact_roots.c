@@ -100,20 +100,46 @@ static void storey_polys(const sx_region *r, const sx_series *s, storey_series *
     }
 }
 
+/* storey i's peak quantity `kind` over the series and its error (0: the storey has none) */
+static int quantity(const sx_run *R, int i, const storey_series *S, int kind, int deg, double *p, double *err)
+{
+    const double h2 = S->wall ? 0.5 * R->sc.S.wall[i].h : 0.0;
+    int k;
+    switch (kind) {
+    case SX_PEAK_S1:
+        for (k = 0; k <= deg; k++) p[k] = h2 * S->q1[k];
+        *err = h2 * S->err_q1;
+        return S->wall;
+    case SX_PEAK_S2:
+        for (k = 0; k <= deg; k++) p[k] = h2 * (S->q1[k] + S->q2[k]);
+        *err = h2 * (S->err_q1 + S->err_q2);
+        return S->wall;
+    case SX_PEAK_DEFORM: memcpy(p, S->deform, sizeof(double) * (size_t)(deg + 1)), *err = S->err_deform; return 1;
+    default: memcpy(p, S->acc, sizeof(double) * (size_t)(deg + 1)), *err = S->err_acc; return 1;
+    }
+}
+
 static void storey_peaks(sx_run *R, int i, const storey_series *S, int deg, double u)
 {
-    rw_scene_result *res = R->res;
-    if (S->wall) {
-        const double h2 = 0.5 * R->sc.S.wall[i].h;
-        double p[SX_PMAX];
-        int k;
-        for (k = 0; k <= deg; k++) p[k] = h2 * S->q1[k];
-        res->peak_s1[i] = sx_poly_max_abs(p, deg, h2 * S->err_q1, u, res->peak_s1[i]);
-        for (k = 0; k <= deg; k++) p[k] = h2 * (S->q1[k] + S->q2[k]);
-        res->peak_s2[i] = sx_poly_max_abs(p, deg, h2 * (S->err_q1 + S->err_q2), u, res->peak_s2[i]);
+    double p[SX_PMAX], err;
+    int kind;
+    for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
+        double *peak = sx_peak_of(R->res, i, kind);
+        if (quantity(R, i, S, kind, deg, p, &err)) *peak = sx_poly_max_abs(p, deg, err, u, *peak);
     }
-    res->peak_diaphragm[i] = sx_poly_max_abs(S->deform, deg, S->err_deform, u, res->peak_diaphragm[i]);
-    res->peak_base_acc[i] = sx_poly_max_abs(S->acc, deg, S->err_acc, u, res->peak_base_acc[i]);
+}
+
+/* every storey's polynomials over the series (a storey without a functional: zero) */
+static void all_storeys(const sx_run *R, const sx_region *r, const sx_series *s, storey_series P[])
+{
+    const size_t used = sizeof(double) * (size_t)(s->deg + 1);
+    int i;
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        memset(P[i].q1, 0, used), memset(P[i].q2, 0, used), memset(P[i].deform, 0, used), memset(P[i].acc, 0, used);
+        P[i].err_q1 = P[i].err_q2 = P[i].err_deform = P[i].err_acc = 0.0;
+        P[i].wall = 0;
+    }
+    storey_polys(r, s, P);
 }
 
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
@@ -121,13 +147,7 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     storey_series P[RW_SCENE_MAX_STOREYS];
     double first = 2.0;
     int i, k;
-    for (i = 0; i < R->sc.S.n_storeys; i++) { /* a storey's polynomials without a functional: zero */
-        const size_t used = sizeof(double) * (size_t)(s->deg + 1);
-        memset(P[i].q1, 0, used), memset(P[i].q2, 0, used), memset(P[i].deform, 0, used), memset(P[i].acc, 0, used);
-        P[i].err_q1 = P[i].err_q2 = P[i].err_deform = P[i].err_acc = 0.0;
-        P[i].wall = 0;
-    }
-    storey_polys(r, s, P);
+    all_storeys(R, r, s, P);
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         if (!P[i].wall) continue;
         for (k = 0; k < R->nlines[i]; k++) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
@@ -135,6 +155,14 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     }
     for (i = 0; i < R->sc.S.n_storeys; i++) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0));
     return first;
+}
+
+double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, int storey, int kind, double best)
+{
+    storey_series P[RW_SCENE_MAX_STOREYS];
+    double p[SX_PMAX], err;
+    all_storeys(R, r, s, P);
+    return quantity(R, storey, &P[storey], kind, s->deg, p, &err) ? sx_poly_max_abs(p, s->deg, err, 1.0, best) : best;
 }
 
 void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping)

@@ -113,7 +113,7 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     int why;
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     if (!sx_modes_polys(r, h, xa0, P)) return -1;
-    if ((why = sx_watch_quiet_polys(R, r, P)) != 0) return why;
+    if ((why = sx_watch_quiet_polys(R, r, P, h, xa0)) != 0) return why;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
     sx_matvec(r->na, r->na, st->E, xa0, xa1);
     sx_watch_peaks_at_ends(R, r, xa0, xa1);

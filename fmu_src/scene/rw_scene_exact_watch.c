@@ -151,12 +151,12 @@ static int monotone(const sx_lopoly *p)
     return d.lo > 0.0 || d.hi < 0.0;
 }
 
-/* a peak quantity (a combination of functionals) can rise over its peak inside the step */
-static int peak_may_rise(const sx_lopoly *P, double peak)
+/* the bound on |p| over the step if a peak quantity p can rise over `peak` inside it, else 0 */
+static double may_rise_to(const sx_lopoly *P, double peak)
 {
     const span s = poly_span(P);
-    if (max2(fabs(s.lo), fabs(s.hi)) <= peak) return 0;
-    return !monotone(P);
+    const double bound = max2(fabs(s.lo), fabs(s.hi));
+    return bound > peak && !monotone(P) ? bound : 0.0;
 }
 
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb)
@@ -256,41 +256,49 @@ static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_p
     return collapse_quiet(&r->col[i], P->q1, P->q2);
 }
 
-/* a peak of storey i may rise over the step */
-static int storey_may_peak(const sx_run *R, int i, const storey_polys *s)
+/* storey i's peak quantity `kind` over the step (0: the storey has none) */
+static int quantity(const sx_run *R, int i, const storey_polys *s, int kind, sx_lopoly *out)
 {
-    const rw_scene_result *res = R->res;
-    if (s->acc && peak_may_rise(s->acc, res->peak_base_acc[i])) return 1;
-    if (s->deform && peak_may_rise(s->deform, res->peak_diaphragm[i])) return 1;
-    if (s->q1) {
-        const double h2 = 0.5 * R->sc.S.wall[i].h;
-        sx_lopoly sp;
-        combine(&sp, s->q1, h2, NULL, 0.0);
-        if (peak_may_rise(&sp, res->peak_s1[i])) return 1;
-        combine(&sp, s->q1, h2, s->q2, h2);
-        if (peak_may_rise(&sp, res->peak_s2[i])) return 1;
+    const double h2 = 0.5 * R->sc.S.wall[i].h;
+    switch (kind) {
+    case SX_PEAK_S1: return s->q1 ? (combine(out, s->q1, h2, NULL, 0.0), 1) : 0;
+    case SX_PEAK_S2: return s->q1 ? (combine(out, s->q1, h2, s->q2, h2), 1) : 0;
+    case SX_PEAK_DEFORM: return s->deform ? (*out = *s->deform, 1) : 0;
+    default: return s->acc ? (*out = *s->acc, 1) : 0;
     }
+}
+
+/* the step's peaks that may rise inside it are kept as doubts (1: one could not be) */
+static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double xa0[])
+{
+    int i, kind;
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
+            sx_lopoly p;
+            double bound;
+            if (!quantity(R, i, &S[i], kind, &p)) continue;
+            bound = may_rise_to(&p, *sx_peak_of(R->res, i, kind));
+            if (bound > 0.0 && sx_doubt_peak(R, i, kind, bound, h, xa0)) return 1;
+        }
     return 0;
 }
 
-/* the peaks first: with a stiff tie they are what most often stops a step, and cost least */
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F])
+/* the crossings first: a peak that may rise costs a doubt, not a halving */
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[])
 {
     storey_polys S[RW_SCENE_MAX_STOREYS];
     int i;
     storey_view(R, r, P, S);
     for (i = 0; i < R->sc.S.n_storeys; i++)
-        if (storey_may_peak(R, i, &S[i])) return SX_MAY_PEAK;
-    for (i = 0; i < R->sc.S.n_storeys; i++)
         if (S[i].q1 && !wall_quiet(R, r, i, &S[i])) return SX_MAY_CROSS;
-    return 0;
+    return doubt_peaks(R, S, h, xa0) ? SX_MAY_PEAK : 0;
 }
 
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
 {
     sx_lopoly P[SX_MAX_F];
     low_polys(r, st, xa0, P);
-    if (sx_watch_quiet_polys(R, r, P) != 0) return 0;
+    if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
     sx_matvec(r->na, r->na, st->E, xa0, xa1);
     sx_watch_peaks_at_ends(R, r, xa0, xa1);
     return 1;
