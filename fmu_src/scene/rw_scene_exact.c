@@ -89,11 +89,21 @@ static int enter_region(sx_run *R)
 
 static double energy(sx_run *R, double t) { return rw_scene_energy(&R->sc, sx_ground(R, t), R->x); }
 
+/* the peaks at the state after an event (a quiet step watches only its end: its start is the
+ * end of the step before, or this state) */
+static void peaks_now(sx_run *R)
+{
+    const sx_region *r = current(R);
+    double xa[SX_MAX_NA];
+    sx_gather(r, R->x, sx_ground(R, R->t), 0.0, xa); /* no functional has a term in the record's slope */
+    sx_watch_peaks_at(R, r, xa);
+}
+
 /* the walls' event rules at t until nothing changes, then the new indicator lines and region */
 int sx_handle_events(sx_run *R)
 {
     const double ag = sx_ground(R, R->t);
-    int rounds = 0, flags;
+    int rounds = 0, flags, code;
     if (R->t == R->last_event_t && ++R->same_instant > MAX_EVENTS_PER_INSTANT) {
         snprintf(R->res->message, sizeof R->res->message, "more than %d events at t = %.9g s", MAX_EVENTS_PER_INSTANT, R->t);
         return RW_SCENE_ZENO;
@@ -112,7 +122,9 @@ int sx_handle_events(sx_run *R)
         }
     } while (flags & 3);
     sx_watch_lines(R);
-    return enter_region(R);
+    code = enter_region(R);
+    if (code == RW_SCENE_OK) peaks_now(R);
+    return code;
 }
 
 static void track(double *peak, double v)

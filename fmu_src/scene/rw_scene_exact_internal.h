@@ -213,13 +213,13 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
 /* the quiet test on given polynomials of the functionals over a step of length h from xa0 in the
- * current region: 0 (quiet: then the peaks are those of the step's ends, sx_watch_peaks_at_ends,
+ * current region: 0 (quiet: then the peaks are those of the step's ends, sx_watch_peaks_at,
  * and of the doubts it left, sx_doubt_peak), or the first reason why not it found (SX_MAY_PEAK
  * only where no doubt could be kept) */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
 int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[]);
-/* the peaks at a quiet step's exact ends, xa0 and xa1 */
-void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const double xa0[], const double xa1[]);
+/* the peaks at a state of the region (a quiet step's exact end, the state after an event) */
+void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[]);
 /* the walls' indicator lines under the current modes (after every event) */
 void sx_watch_lines(sx_run *R);
 /* the quiet test of a step from its start state with its table: 1 when no indicator can change

@@ -116,7 +116,7 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     if ((why = sx_watch_quiet_polys(R, r, P, h, xa0)) != 0) return why;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
     sx_matvec(r->na, r->na, st->E, xa0, xa1);
-    sx_watch_peaks_at_ends(R, r, xa0, xa1);
+    sx_watch_peaks_at(R, r, xa1);
     table_step(R, r, st, xa0, xa1, t1);
     return 0;
 }

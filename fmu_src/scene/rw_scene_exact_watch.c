@@ -173,33 +173,31 @@ typedef struct {
     const sx_lopoly *q1, *q2, *deform, *acc;
 } storey_polys;
 
-/* the peaks at a cleared step's exact ends (xa0, xa1). Not the start from the step's polynomial:
- * the modes' quiet test holds a fast mode's quasi-static value there (its band covers the rest),
- * which could raise a peak above anything the motion reached. */
-void sx_watch_peaks_at_ends(sx_run *R, const sx_region *r, const double xa0[], const double xa1[])
+/* the peaks at a state xa of the region: a cleared step's exact end (its start was the end of the
+ * step before, or a state after an event, sx_handle_events). Not from the step's polynomial: the
+ * modes' quiet test holds a fast mode's quasi-static value there (its band covers the rest), which
+ * could raise a peak above anything the motion reached. */
+void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[])
 {
     rw_scene_result *res = R->res;
-    double q1[2] = {0.0, 0.0}, q2[2] = {0.0, 0.0};
+    double q1 = 0.0;
     int f, k;
     for (f = 0; f < r->nf; f++) {
         const int i = r->f_storey[f];
-        double start = 0.0, end = 0.0, *peak;
-        for (k = 0; k < r->na; k++) start += r->F[f][k] * xa0[k], end += r->F[f][k] * xa1[k];
+        double v = 0.0, *peak;
+        for (k = 0; k < r->na; k++) v += r->F[f][k] * xa[k];
         switch (r->f_kind[f]) {
-        case SX_Q1: q1[0] = start, q1[1] = end; continue;
+        case SX_Q1: q1 = v; continue;
         case SX_Q2: { /* q1 comes first: the wall's peaks */
             const double h2 = 0.5 * R->sc.S.wall[i].h;
-            q2[0] = start, q2[1] = end;
-            for (k = 0; k < 2; k++) {
-                res->peak_s1[i] = max2(res->peak_s1[i], fabs(h2 * q1[k]));
-                res->peak_s2[i] = max2(res->peak_s2[i], fabs(h2 * (q1[k] + q2[k])));
-            }
+            res->peak_s1[i] = max2(res->peak_s1[i], fabs(h2 * q1));
+            res->peak_s2[i] = max2(res->peak_s2[i], fabs(h2 * (q1 + v)));
             continue;
         }
         case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
         default: peak = &res->peak_base_acc[i]; break;
         }
-        *peak = max2(*peak, max2(fabs(start), fabs(end)));
+        *peak = max2(*peak, fabs(v));
     }
 }
 
@@ -300,6 +298,6 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
     low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
     sx_matvec(r->na, r->na, st->E, xa0, xa1);
-    sx_watch_peaks_at_ends(R, r, xa0, xa1);
+    sx_watch_peaks_at(R, r, xa1);
     return 1;
 }
