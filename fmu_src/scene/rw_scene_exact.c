@@ -213,7 +213,7 @@ static int region_capacity(const rw_scene_spec *spec)
     const double per = (double)sizeof(sx_region) +
                        8.0 * (na * na + SX_STEPS * (2.0 * na * na + n * na + 2.0 * na + 4.0 * spec->n_storeys * (SX_LO + 1) * na));
     const double fit = SX_CACHE_BYTES / per;
-    return fit >= SX_REGIONS ? SX_REGIONS : (fit < 8.0 ? 8 : (int)fit);
+    return fit >= SX_REGIONS ? SX_REGIONS : (fit < 8.0 ? (SX_REGIONS < 8 ? SX_REGIONS : 8) : (int)fit);
 }
 
 static sx_run *new_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,

@@ -22,7 +22,9 @@
 #define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
 #define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
 #define SX_STEPS 8       /* step lengths cached per region */
+#ifndef SX_REGIONS /* (the C tests build the scenes with the least memory too) */
 #define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) ... */
+#endif
 #define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
 

@@ -12,7 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#ifndef SX_DOUBTS
 #define SX_DOUBTS 4096 /* kept at most at once (1.5 MB): when full, they are settled as at the end */
+#endif
 
 double *sx_peak_of(rw_scene_result *res, int storey, int kind)
 {
