@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "check.h"
+#include "scene_pulse.h"
 #include "rw_scene_exact.h"
 
 static double uniform(double lo, double hi) { return lo + (hi - lo) * (rand() / (double)RAND_MAX); }
@@ -129,17 +130,6 @@ static void test_rates_match_the_scene(void)
           worst_case);
 }
 
-/* the pulse D exp(-(t-1)^2/(2 s^2)) as acceleration, s = 0.15 s, 2 s at 5 ms */
-static void pulse(double D, double t[401], double ag[401])
-{
-    int i;
-    for (i = 0; i <= 400; i++) {
-        const double s = 0.15, tt = 0.005 * i - 1.0;
-        t[i] = 0.005 * i;
-        ag[i] = D * (tt * tt / (s * s) - 1.0) / (s * s) * exp(-tt * tt / (2.0 * s * s));
-    }
-}
-
 /* the exact engine against CVODES at rtol 1e-10 (Adams, or BDF with bdf): peaks within 1e-4, the
  * same impacts and collapses; stiff: Adams goes on with Newton iteration */
 static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, double D, int bdf, int stiff)
@@ -149,7 +139,7 @@ static void compare_with_cvodes(const char *what, const rw_scene_spec *spec, dou
     rw_scene_record rec;
     double t[401], ag[401];
     int i, ca, cb;
-    pulse(D, t, ag);
+    pulse(D, 401, t, ag);
     rec.n = 401, rec.t = t, rec.ag = ag;
     memset(&opt, 0, sizeof opt);
     opt.t_end = 2.0, opt.rtol = 1e-10, opt.bdf = bdf;
