@@ -89,3 +89,17 @@ def test_content_that_would_alias_into_the_pass_band_is_caught():
     floor = floor_acc.sample(spec, Record("two sines", t, ag), engine="exact")
     assert floor.resolved and floor.dt == pytest.approx(5e-4)
     assert floor.filtered_peak[0] == pytest.approx(0.1 * G, rel=0.01)
+
+
+def test_a_short_run_is_filtered_too(ff19a):
+    """A run of a few dozen dense samples (the first 0.04 s) is filtered like any other: its 25 Hz
+    history is the low-pass of the samples, not the raw samples under the filtered history's name
+    (as it was below 64 samples), and its peak that history's."""
+    spec = two_storeys(1e8)
+    sampled = floor_acc.sample(spec, ff19a, t_end=0.04)
+    grid = sampled.start + sampled.dt * np.arange(len(sampled.filtered))
+    raw = se.run(spec, ff19a.t, ff19a.ag, t_end=0.04, t_out=grid, histories=("base_acc",)).base_acc
+    assert len(grid) < 64
+    assert np.max(np.abs(raw - sampled.filtered)) > 0.05 * np.max(np.abs(raw))
+    np.testing.assert_allclose(sampled.filtered, floor_acc.lowpass(raw, sampled.dt), rtol=1e-9, atol=1e-12)
+    np.testing.assert_array_equal(sampled.filtered_peak, np.max(np.abs(sampled.filtered), axis=0))
