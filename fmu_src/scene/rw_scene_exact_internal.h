@@ -191,6 +191,10 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
 void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s);
 /* the longest step the series is built for */
 double sx_hmax(const sx_region *r);
+/* the parts, no longer than that, a length is taken in (at least 1) */
+int sx_parts(const sx_region *r, double length);
+/* the augmented state at u in [0, 1] of a series */
+void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[]);
 
 /* ---- polynomials on [0, 1] (rw_scene_exact_poly.c) ---- */
 double sx_poly_eval(const double *p, int deg, double u);

@@ -29,20 +29,15 @@ double *sx_peak_of(rw_scene_result *res, int storey, int kind)
 /* the doubt's peak on the exact series, over parts no longer than the region's limit */
 static void resolve(sx_run *R, const sx_region *r, const sx_doubt *d)
 {
-    const int parts = (int)ceil(d->h / sx_hmax(r) * (1.0 - 1e-12));
-    const double L = d->h / (parts > 1 ? parts : 1);
+    const int parts = sx_parts(r, d->h);
     double *peak = sx_peak_of(R->res, d->storey, d->kind), xa[SX_MAX_NA];
     sx_series s;
-    int p, k, j;
+    int p;
     memcpy(xa, d->xa0, sizeof(double) * (size_t)r->na);
-    for (p = 0; p < (parts > 1 ? parts : 1); p++) {
-        sx_series_of(r, xa, L, &s);
+    for (p = 0; p < parts; p++) {
+        sx_series_of(r, xa, d->h / parts, &s);
         *peak = sx_series_peak(R, r, &s, d->storey, d->kind, *peak);
-        for (k = 0; k < r->na; k++) { /* the series at u = 1: the next part's start */
-            double v = 0.0;
-            for (j = s.deg; j >= 0; j--) v += s.X[(size_t)j * (size_t)r->na + (size_t)k];
-            xa[k] = v;
-        }
+        sx_series_at(r, &s, 1.0, xa); /* the next part's start */
     }
 }
 

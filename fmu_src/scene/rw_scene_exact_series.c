@@ -39,6 +39,22 @@ static int matrix_degree(double rho)
     return k < SX_LO + 1 ? SX_LO + 1 : k;
 }
 
+int sx_parts(const sx_region *r, double length)
+{
+    const int n = (int)ceil(length / sx_hmax(r) * (1.0 - 1e-12));
+    return n > 1 ? n : 1;
+}
+
+void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[])
+{
+    int k, j;
+    for (k = 0; k < r->na; k++) {
+        double v = 0.0;
+        for (j = s->deg; j >= 0; j--) v = v * u + s->X[(size_t)j * (size_t)r->na + (size_t)k];
+        xa[k] = v;
+    }
+}
+
 void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s)
 {
     const int na = r->na;

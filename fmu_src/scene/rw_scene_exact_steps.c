@@ -33,24 +33,17 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
 {
     while (R->t < t1) {
         sx_region *r = current(R);
-        const int parts = (int)ceil((t1 - R->t) / sx_hmax(r) * (1.0 - 1e-12));
-        const double L = (t1 - R->t) / (parts > 1 ? parts : 1);
+        const int parts = sx_parts(r, t1 - R->t);
+        const double L = (t1 - R->t) / parts;
         double xa[SX_MAX_NA], wg, wd, u;
         sx_series s;
-        int k;
         sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa);
         sx_series_of(r, xa, L, &s);
         u = sx_watch_step(R, r, &s);
         sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
         R->work_ground += wg;
         R->work_damping += wd;
-        for (k = 0; k < r->na; k++) xa[k] = 0.0;
-        for (k = 0; k < r->n; k++) {
-            double v = 0.0;
-            int j;
-            for (j = s.deg; j >= 0; j--) v = v * fmin(u, 1.0) + s.X[(size_t)j * (size_t)r->na + (size_t)k];
-            xa[k] = v;
-        }
+        sx_series_at(r, &s, fmin(u, 1.0), xa);
         sx_scatter(r, xa, R->x);
         R->res->steps++;
         if (u > 1.0) {
@@ -85,8 +78,7 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
 static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slope)
 {
     const double t0 = R->t;
-    const int n = (int)ceil((t1 - t0) / sx_hmax(current(R)) * (1.0 - 1e-12));
-    const int steps = n > 1 ? n : 1;
+    const int steps = sx_parts(current(R), t1 - t0);
     const double h = (t1 - t0) / steps;
     int k = 0;
     while (R->t < t1) {

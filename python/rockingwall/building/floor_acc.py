@@ -133,7 +133,7 @@ def sample_history(spec, record, history, what, t_end=None, rtol=1e-8, engine=No
     for refinement in range(REFINEMENTS + 1):
         samples = _sampled_history(spec, record, t_end, rtol, engine, dt, history, what)
         raw = np.max(np.abs(samples), axis=0)
-        filtered, share = _alias_share(samples, dt)     # a run of a few samples too: then rarely resolved
+        filtered, share = _alias_share(samples, dt)     # any length: a run of a few samples too
         if share <= ALIAS_SHARE or dt / 2 < DT_MIN * (1 - 1e-12):
             break
         dt /= 2
