@@ -211,7 +211,7 @@ static int region_capacity(const rw_scene_spec *spec)
 {
     const double na = 2.0 * 4.0 * spec->n_storeys + 3.0, n = na - 3.0;
     const double per = (double)sizeof(sx_region) +
-                       8.0 * (na * na + SX_STEPS * (2.0 * na * na + n * na + 2.0 * na + 4.0 * spec->n_storeys * (SX_LO + 1) * na));
+                       8.0 * (2.0 * na * na + SX_STEPS * (4.0 * na * na + n * na + 2.0 * na + 4.0 * spec->n_storeys * (SX_LO + 1) * na));
     const double fit = SX_CACHE_BYTES / per;
     return fit >= SX_REGIONS ? SX_REGIONS : (fit < 8.0 ? (SX_REGIONS < 8 ? SX_REGIONS : 8) : (int)fit);
 }

@@ -111,6 +111,31 @@ void sx_matvec(int rows, int cols, const double *A, const double *x, double *y)
     }
 }
 
+/* y = A x from A stored by columns (At[j * rows + i] = A_ij). Each y_i's sum runs over j in order,
+ * as sx_matvec's does (the same result), and the inner loop runs down a column, which the compiler
+ * vectorises (a dot product it cannot, as it would reorder the sum); four columns a pass */
+void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+{
+    int i, j = 0;
+    for (i = 0; i < rows; i++) y[i] = 0.0;
+    for (; j + 4 <= cols; j += 4) {
+        const double *a0 = At + (size_t)j * (size_t)rows, *a1 = a0 + rows, *a2 = a1 + rows, *a3 = a2 + rows;
+        const double x0 = x[j], x1 = x[j + 1], x2 = x[j + 2], x3 = x[j + 3];
+        for (i = 0; i < rows; i++) y[i] = (((y[i] + a0[i] * x0) + a1[i] * x1) + a2[i] * x2) + a3[i] * x3;
+    }
+    for (; j < cols; j++) {
+        const double *a = At + (size_t)j * (size_t)rows, xj = x[j];
+        for (i = 0; i < rows; i++) y[i] += a[i] * xj;
+    }
+}
+
+void sx_transpose(int rows, int cols, const double *A, double *At)
+{
+    int i, j;
+    for (i = 0; i < rows; i++)
+        for (j = 0; j < cols; j++) At[(size_t)j * (size_t)rows + (size_t)i] = A[(size_t)i * (size_t)cols + (size_t)j];
+}
+
 void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2])
 {
     const double a = A[0][0], d = A[1][1], b = 0.5 * (A[0][1] + A[1][0]);

@@ -64,7 +64,7 @@ typedef struct {
      * slow steps' loop over the functionals runs on these, which the compiler vectorises */
     double share_re[SX_MAX_N][SX_MAX_F], share_im[SX_MAX_N][SX_MAX_F], share_abs[SX_MAX_N][SX_MAX_F];
     double cond;     /* the product of Vr's and Winv's balanced norms */
-    double Winv[SX_MAX_N * SX_MAX_N];
+    double Winv_cols[SX_MAX_N * SX_MAX_N]; /* Winv by columns */
 } sx_modes;
 
 /* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
@@ -82,10 +82,12 @@ typedef struct {
     int deg;      /* degree of the matrix series */
     double rho;   /* ||A_s|| h */
     double *E;    /* na x na: exp(Aa h) */
-    double *T;    /* n x na: x part of (Aa h)^(SX_LO+1)/(SX_LO+1)!, the quiet test's tail */
+    double *T;    /* n x na by columns: x part of (Aa h)^(SX_LO+1)/(SX_LO+1)!, the quiet test's tail */
     double *Wd;   /* na x na: the viscous dissipation over the step as a quadratic form of xa */
+    double *Et, *Wdt; /* E and Wd by columns, for the quiet steps' products (sx_matvec_cols) */
     double *wg;   /* 2 x na: the momentum's integrals over the step of E(tau) and tau E(tau) */
-    double *rows; /* nf x (SX_LO+1) x na: functional f's Taylor coefficients l.(Aa h)^k/k! */
+    double *rows; /* (nf (SX_LO+1)) x na by columns: functional f's Taylor coefficients l.(Aa h)^k/k!
+                     in row f (SX_LO+1) + k */
 } sx_step;
 
 typedef struct {
@@ -95,6 +97,7 @@ typedef struct {
     int pos[SX_MAX_DOF], vel[SX_MAX_DOF]; /* each DOF's displacement and velocity in the scene state */
     int wall_dof[RW_SCENE_MAX_STOREYS], floor_dof[RW_SCENE_MAX_STOREYS], diaph_dof[RW_SCENE_MAX_STOREYS];
     double *Aa;                /* na x na, row-major */
+    double *Aa_cols;           /* the same by columns, for the series' products */
     double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */
     double norm;               /* ||A_s||_inf */
     double F[SX_MAX_F][SX_MAX_NA]; /* functional rows over xa */
@@ -165,6 +168,9 @@ int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
 void sx_matvec(int rows, int cols, const double *A, const double *x, double *y);
+/* the same product from A stored by columns (At: cols x rows), vectorised; the same result */
+void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y);
+void sx_transpose(int rows, int cols, const double *A, double *At); /* At (cols x rows) = A^T */
 double sx_sym2_min_eig(const double A[2][2]);
 void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
 

@@ -63,7 +63,7 @@ static void modal_forcing(const sx_region *r, const sx_modes *m, int col, double
     double y[SX_MAX_N], v[SX_MAX_N];
     int k;
     for (k = 0; k < n; k++) v[k] = r->Aa[k * r->na + col];
-    sx_matvec(n, n, m->Winv, v, y);
+    sx_matvec_cols(n, n, m->Winv_cols, v, y);
     for (k = 0; k < m->count; k++)
         g[k] = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
 }
@@ -87,15 +87,16 @@ void sx_modes_build(sx_region *r)
 {
     sx_modes *m = &r->modes;
     const int n = r->n;
-    double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], LU[SX_MAX_N * SX_MAX_N];
+    double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], LU[SX_MAX_N * SX_MAX_N], Winv[SX_MAX_N * SX_MAX_N];
     int i, j;
     memset(m, 0, sizeof *m);
     if (decompose(r, wr, wi, Vr)) return;
     memcpy(LU, Vr, sizeof(double) * (size_t)(n * n));
     for (i = 0; i < n; i++)
-        for (j = 0; j < n; j++) m->Winv[i * n + j] = i == j;
-    if (sx_lu_solve(n, LU, m->Winv, n)) return;
-    m->cond = condition(r, Vr, m->Winv);
+        for (j = 0; j < n; j++) Winv[i * n + j] = i == j;
+    if (sx_lu_solve(n, LU, Winv, n)) return;
+    sx_transpose(n, n, Winv, m->Winv_cols);
+    m->cond = condition(r, Vr, Winv);
     if (!(m->cond < SX_MODES_COND)) return;
     for (i = 0; i < n; i++) {
         const int k = m->count++;
@@ -164,7 +165,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
     const int nf = r->nf;
     int f, k;
     if (!m->valid) return 0;
-    sx_matvec(r->n, r->n, m->Winv, xa0, y);
+    sx_matvec_cols(r->n, r->n, m->Winv_cols, xa0, y);
     for (f = 0; f < nf; f++) { /* the functionals' own terms in ag and the constant */
         c0[f] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
         c1[f] = r->F[f][r->n] * slope * h;

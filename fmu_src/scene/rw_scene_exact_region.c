@@ -270,10 +270,10 @@ static void collapse_forms(const rw_scene *sc, const sx_key *key, sx_region *r)
     }
 }
 
-/* one step table: E, Wd (na x na), T (n x na), wg (2 x na), rows (nf x (SX_LO+1) x na) */
+/* one step table: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na), rows (nf x (SX_LO+1) x na) */
 static size_t step_doubles(const sx_region *r)
 {
-    return (size_t)(2 * r->na * r->na + r->n * r->na + 2 * r->na + r->nf * (SX_LO + 1) * r->na);
+    return (size_t)(4 * r->na * r->na + r->n * r->na + 2 * r->na + r->nf * (SX_LO + 1) * r->na);
 }
 
 static int allocate(sx_region *r)
@@ -281,15 +281,18 @@ static int allocate(sx_region *r)
     const size_t per = step_doubles(r);
     int k;
     free(r->blob);
-    r->blob = (double *)calloc((size_t)(r->na * r->na) + SX_STEPS * per, sizeof(double));
+    r->blob = (double *)calloc((size_t)(2 * r->na * r->na) + SX_STEPS * per, sizeof(double));
     if (!r->blob) return 1;
     r->Aa = r->blob;
+    r->Aa_cols = r->Aa + r->na * r->na;
     for (k = 0; k < SX_STEPS; k++) {
         sx_step *s = &r->step[k];
         memset(s, 0, sizeof *s);
-        s->E = r->blob + (size_t)(r->na * r->na) + (size_t)k * per;
+        s->E = r->blob + (size_t)(2 * r->na * r->na) + (size_t)k * per;
         s->Wd = s->E + r->na * r->na;
-        s->T = s->Wd + r->na * r->na;
+        s->Et = s->Wd + r->na * r->na;
+        s->Wdt = s->Et + r->na * r->na;
+        s->T = s->Wdt + r->na * r->na;
         s->wg = s->T + r->n * r->na;
         s->rows = s->wg + 2 * r->na;
     }
@@ -328,6 +331,7 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
             for (j = 0; j < r->n; j++) A[i * r->n + j] = r->Aa[i * r->na + j];
         sx_balance(r->n, A, r->scale, &r->norm);
     }
+    sx_transpose(r->na, r->na, r->Aa, r->Aa_cols);
     functionals(sc, r);
     energy_rows(sc, r);
     collapse_forms(sc, key, r);
@@ -339,7 +343,7 @@ void sx_region_free(sx_region *r)
 {
     free(r->blob);
     r->blob = NULL;
-    r->Aa = NULL;
+    r->Aa = r->Aa_cols = NULL;
 }
 
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[])

@@ -66,7 +66,7 @@ void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s
     for (k = 0; k < SX_MAX_DEG; k++) {
         double *next = s->X + (size_t)(k + 1) * (size_t)na;
         int i;
-        sx_matvec(na, na, r->Aa, s->X + (size_t)k * (size_t)na, next);
+        sx_matvec_cols(na, na, r->Aa_cols, s->X + (size_t)k * (size_t)na, next);
         for (i = 0; i < na; i++) next[i] *= L / (k + 1);
         nk = scaled_norm(r, next);
         if (nk > biggest) biggest = nk;
@@ -119,7 +119,7 @@ static void exponential(const sx_region *r, sx_step *st)
         matmul(na, r->Aa, B, Bn);
         for (i = 0; i < na * na; i++) B[i] = Bn[i] * st->h / (k + 1);
         for (i = 0; i < na * na; i++) st->E[i] += B[i];
-        if (k + 1 == SX_LO + 1) memcpy(st->T, B, sizeof(double) * (size_t)(r->n * na));
+        if (k + 1 == SX_LO + 1) sx_transpose(r->n, na, B, st->T);
     }
 }
 
@@ -127,13 +127,14 @@ static void exponential(const sx_region *r, sx_step *st)
 static void rows(const sx_region *r, sx_step *st)
 {
     const int na = r->na, D = SX_LO + 1;
-    double cur[SX_MAX_NA], next[SX_MAX_NA];
+    double cur[SX_MAX_NA], next[SX_MAX_NA], by_rows[SX_MAX_F * (SX_LO + 1) * SX_MAX_NA];
     int f, k, j;
     for (f = 0; f < r->nf; f++) {
-        double *out = st->rows + (size_t)f * (size_t)(D * na);
+        double *out = by_rows + (size_t)f * (size_t)(D * na);
         memcpy(out, r->F[f], sizeof(double) * (size_t)na);
         for (k = 0; k < SX_LO; k++) row_step(r, out + k * na, k, st->h, out + (k + 1) * na);
     }
+    sx_transpose(r->nf * D, na, by_rows, st->rows);
     memcpy(cur, r->mom, sizeof(double) * (size_t)na);
     memset(st->wg, 0, sizeof(double) * (size_t)(2 * na));
     for (k = 0; k <= st->deg; k++) {
@@ -251,6 +252,8 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
         rows(r, st);
         dissipation(r, st);
     }
+    sx_transpose(r->na, r->na, st->E, st->Et);
+    sx_transpose(r->na, r->na, st->Wd, st->Wdt);
     st->used = stamp;
     st->h = h;
     return st;

@@ -14,7 +14,7 @@ static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const d
 {
     double Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
     int k;
-    sx_matvec(r->na, r->na, st->Wd, xa0, Wx);
+    sx_matvec_cols(r->na, r->na, st->Wdt, xa0, Wx);
     for (k = 0; k < r->na; k++) {
         wd += xa0[k] * Wx[k];
         m0 += st->wg[k] * xa0[k];
@@ -107,7 +107,7 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     if (!sx_modes_polys(r, h, xa0, P)) return -1;
     if ((why = sx_watch_quiet_polys(R, r, P, h, xa0)) != 0) return why;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
-    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     table_step(R, r, st, xa0, xa1, t1);
     return 0;

@@ -108,9 +108,8 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
 /* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
  * sum_k mu_k (e_k.q)^2 - c.q with each combination's own range (a stiff tie's entries of A are
  * large and nearly cancel along the motion: the ranges of q1 and q2 alone would lose that) */
-static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lopoly *q2)
+static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lopoly *q2, span s1, span s2)
 {
-    const span s1 = poly_span(q1), s2 = poly_span(q2);
     sx_lopoly p;
     span G = {0.0, 0.0};
     int k;
@@ -151,11 +150,17 @@ static int monotone(const sx_lopoly *p)
     return d.lo > 0.0 || d.hi < 0.0;
 }
 
-/* the bound on |p| over the step if a peak quantity p can rise over `peak` inside it, else 0 */
+/* the bound on |p| over the step if a peak quantity p can rise over `peak` inside it, else 0 (the
+ * sum of its coefficients' sizes and its tail first: most steps stay under the peak by that) */
 static double may_rise_to(const sx_lopoly *P, double peak)
 {
-    const span s = poly_span(P);
-    const double bound = max2(fabs(s.lo), fabs(s.hi));
+    double size = P->tail, bound;
+    span s;
+    int k;
+    for (k = 0; k <= P->deg; k++) size += fabs(P->coef[k]);
+    if (size <= peak) return 0.0;
+    s = poly_span(P);
+    bound = max2(fabs(s.lo), fabs(s.hi));
     return bound > peak && !monotone(P) ? bound : 0.0;
 }
 
@@ -204,20 +209,15 @@ void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[])
 /* each functional's polynomial over a step from its table (rows and tail) */
 static void low_polys(const sx_region *r, const sx_step *st, const double xa0[], sx_lopoly P[SX_MAX_F])
 {
-    double Xt[SX_MAX_N], tn = 0.0;
+    double Xt[SX_MAX_N], tn = 0.0, coef[SX_MAX_F * (SX_LO + 1)];
     const double q = st->rho / (SX_LO + 2);
     int f, k;
-    sx_matvec(r->n, r->na, st->T, xa0, Xt);
+    sx_matvec_cols(r->n, r->na, st->T, xa0, Xt);
     for (k = 0; k < r->n; k++) tn = max2(tn, fabs(Xt[k]) / r->scale[k]);
+    sx_matvec_cols(r->nf * (SX_LO + 1), r->na, st->rows, xa0, coef);
     for (f = 0; f < r->nf; f++) {
         sx_lopoly *p = &P[f];
-        const double *row = st->rows + (size_t)f * (size_t)((SX_LO + 1) * r->na);
-        for (k = 0; k <= SX_LO; k++) {
-            double v = 0.0;
-            int j;
-            for (j = 0; j < r->na; j++) v += row[k * r->na + j] * xa0[j];
-            p->coef[k] = v;
-        }
+        for (k = 0; k <= SX_LO; k++) p->coef[k] = coef[f * (SX_LO + 1) + k];
         p->tail = r->f_scale[f] * tn / (1.0 - q);
         p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
         p->deg = SX_LO;
@@ -241,17 +241,22 @@ static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[S
     }
 }
 
+/* A line is cleared first on the box of q1's and q2's ranges (a few operations, and it clears most
+ * lines: a wall at rest or rocking away from them); only a line the box does not clear is tested on
+ * its own combination of the two polynomials, whose range is tighter where q1 and q2 move together */
 static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_polys *P)
 {
+    const span box1 = poly_span(P->q1), box2 = poly_span(P->q2);
     int k;
     for (k = 0; k < R->nlines[i]; k++) {
         const sx_line *L = &R->lines[i][k];
+        const double tol = line_tol(L, P->q1->coef[0], P->q2->coef[0]);
         sx_lopoly w;
+        if (clear_of_zero(line_span(L, sum(scaled(box1, L->a0), scaled(box2, L->a1))), tol)) continue;
         combine(&w, P->q1, L->a0, P->q2, L->a1);
-        if (!clear_of_zero(line_span(L, poly_span(&w)), line_tol(L, P->q1->coef[0], P->q2->coef[0])))
-            return 0;
+        if (!clear_of_zero(line_span(L, poly_span(&w)), tol)) return 0;
     }
-    return collapse_quiet(&r->col[i], P->q1, P->q2);
+    return collapse_quiet(&r->col[i], P->q1, P->q2, box1, box2);
 }
 
 /* storey i's peak quantity `kind` over the step (0: the storey has none) */
@@ -297,7 +302,7 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
     sx_lopoly P[SX_MAX_F];
     low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
-    sx_matvec(r->na, r->na, st->E, xa0, xa1);
+    sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
 }
