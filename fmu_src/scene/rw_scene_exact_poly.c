@@ -108,6 +108,10 @@ static double first_root(const double *p, int deg, double err, double a, double 
 
 double sx_poly_first_root(const double *p, int deg, double err)
 {
+    double moves = 0.0;
+    int k;
+    for (k = 1; k <= deg; k++) moves += fabs(p[k]);
+    if (p[0] > moves) return 2.0; /* clear of zero over [0, 1]: most lines over most pieces */
     return first_root(p, deg, err, 0.0, 1.0);
 }
 
