@@ -157,7 +157,12 @@ static double max_abs(const double *p, int deg, double err, double a, double b, 
 
 double sx_poly_max_abs(const double *p, int deg, double err, double b, double best)
 {
-    return b > 0.0 ? max_abs(p, deg, err, 0.0, b, best) : fmax(best, fabs(p[0]));
+    double size = err;
+    int k;
+    if (!(b > 0.0)) return fmax(best, fabs(p[0]));
+    for (k = 0; k <= deg; k++) size += fabs(p[k]);
+    if (b <= 1.0 && size <= best) return best; /* under the peak over [0, 1]: most quantities most pieces */
+    return max_abs(p, deg, err, 0.0, b, best);
 }
 
 double sx_poly_integral(const double *p, int deg, double b)
