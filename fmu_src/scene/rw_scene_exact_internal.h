@@ -204,6 +204,8 @@ void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[])
 
 /* ---- polynomials on [0, 1] (rw_scene_exact_poly.c) ---- */
 double sx_poly_eval(const double *p, int deg, double u);
+/* sum_k |p_k|: a bound on |p| over [0, 1] (0 for deg < 0) */
+double sx_poly_abs_sum(const double *p, int deg);
 double sx_poly_deriv(const double *p, int deg, double u);
 /* the first u in (0, 1] where g = p + r changes sign from g(0) > 0 (p within `err` of the function),
  * or 2 if none */

@@ -106,12 +106,17 @@ static double first_root(const double *p, int deg, double err, double a, double 
     }
 }
 
+double sx_poly_abs_sum(const double *p, int deg)
+{
+    double s = 0.0;
+    int k;
+    for (k = 0; k <= deg; k++) s += fabs(p[k]);
+    return s;
+}
+
 double sx_poly_first_root(const double *p, int deg, double err)
 {
-    double moves = 0.0;
-    int k;
-    for (k = 1; k <= deg; k++) moves += fabs(p[k]);
-    if (p[0] > moves) return 2.0; /* clear of zero over [0, 1]: most lines over most pieces */
+    if (p[0] > sx_poly_abs_sum(p + 1, deg - 1)) return 2.0; /* clear of zero over [0, 1]: most lines, most pieces */
     return first_root(p, deg, err, 0.0, 1.0);
 }
 
@@ -157,11 +162,8 @@ static double max_abs(const double *p, int deg, double err, double a, double b, 
 
 double sx_poly_max_abs(const double *p, int deg, double err, double b, double best)
 {
-    double size = err;
-    int k;
     if (!(b > 0.0)) return fmax(best, fabs(p[0]));
-    for (k = 0; k <= deg; k++) size += fabs(p[k]);
-    if (b <= 1.0 && size <= best) return best; /* under the peak over [0, 1]: most quantities most pieces */
+    if (b <= 1.0 && err + sx_poly_abs_sum(p, deg) <= best) return best; /* under the peak over [0, 1]: most pieces */
     return max_abs(p, deg, err, 0.0, b, best);
 }
 

@@ -154,11 +154,9 @@ static int monotone(const sx_lopoly *p)
  * sum of its coefficients' sizes and its tail first: most steps stay under the peak by that) */
 static double may_rise_to(const sx_lopoly *P, double peak)
 {
-    double size = P->tail, bound;
     span s;
-    int k;
-    for (k = 0; k <= P->deg; k++) size += fabs(P->coef[k]);
-    if (size <= peak) return 0.0;
+    double bound;
+    if (P->tail + sx_poly_abs_sum(P->coef, P->deg) <= peak) return 0.0;
     s = poly_span(P);
     bound = max2(fabs(s.lo), fabs(s.hi));
     return bound > peak && !monotone(P) ? bound : 0.0;
