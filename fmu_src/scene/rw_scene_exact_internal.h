@@ -88,6 +88,7 @@ typedef struct {
     double *wg;   /* 2 x na: the momentum's integrals over the step of E(tau) and tau E(tau) */
     double *rows; /* (nf (SX_LO+1)) x na by columns: functional f's Taylor coefficients l.(Aa h)^k/k!
                      in row f (SX_LO+1) + k */
+    double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
 } sx_step;
 
 typedef struct {
@@ -112,7 +113,7 @@ typedef struct {
     sx_collapse col[RW_SCENE_MAX_STOREYS];
     sx_modes modes;
     sx_step step[SX_STEPS];
-    double *blob;              /* every array above that is allocated */
+    double *blob;              /* Aa and Aa_cols (the step tables have their own) */
 } sx_region;
 
 /* a step's Taylor series of the augmented state (X[k*na + i]) and its tail bound in the S norm */
@@ -189,7 +190,8 @@ double sx_region_energy(const sx_region *r, const double x[]);
 
 /* ---- propagators (rw_scene_exact_series.c) ---- */
 /* the step table of length h (cached, built if missing; lengths within tol share one: the
- * rounding of the record's times) */
+ * rounding of the record's times); NULL if its memory could not be had (the caller takes the
+ * step on the exact series instead) */
 sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
 /* that rounding at time t */
 #define SX_TIME_TOL(t) (16.0 * DBL_EPSILON * fmax(fabs(t), 1.0))

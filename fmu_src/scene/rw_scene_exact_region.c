@@ -270,32 +270,16 @@ static void collapse_forms(const rw_scene *sc, const sx_key *key, sx_region *r)
     }
 }
 
-/* one step table: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na), rows (nf x (SX_LO+1) x na) */
-static size_t step_doubles(const sx_region *r)
-{
-    return (size_t)(4 * r->na * r->na + r->n * r->na + 2 * r->na + r->nf * (SX_LO + 1) * r->na);
-}
-
+/* the region's matrix (its step tables are allocated as they are first built, sx_step_of: a
+ * region uses a few of its SX_STEPS lengths, and small allocations are reused run after run where
+ * one for all of them would be mapped and faulted in anew) */
 static int allocate(sx_region *r)
 {
-    const size_t per = step_doubles(r);
-    int k;
-    free(r->blob);
-    r->blob = (double *)calloc((size_t)(2 * r->na * r->na) + SX_STEPS * per, sizeof(double));
+    sx_region_free(r);
+    r->blob = (double *)calloc((size_t)(2 * r->na * r->na), sizeof(double));
     if (!r->blob) return 1;
     r->Aa = r->blob;
     r->Aa_cols = r->Aa + r->na * r->na;
-    for (k = 0; k < SX_STEPS; k++) {
-        sx_step *s = &r->step[k];
-        memset(s, 0, sizeof *s);
-        s->E = r->blob + (size_t)(2 * r->na * r->na) + (size_t)k * per;
-        s->Wd = s->E + r->na * r->na;
-        s->Et = s->Wd + r->na * r->na;
-        s->Wdt = s->Et + r->na * r->na;
-        s->T = s->Wdt + r->na * r->na;
-        s->wg = s->T + r->n * r->na;
-        s->rows = s->wg + 2 * r->na;
-    }
     return 0;
 }
 
@@ -341,9 +325,14 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
 
 void sx_region_free(sx_region *r)
 {
+    int k;
     free(r->blob);
     r->blob = NULL;
     r->Aa = r->Aa_cols = NULL;
+    for (k = 0; k < SX_STEPS; k++) {
+        free(r->step[k].mem);
+        memset(&r->step[k], 0, sizeof r->step[k]);
+    }
 }
 
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[])

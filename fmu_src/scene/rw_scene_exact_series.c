@@ -6,6 +6,7 @@
 #include "rw_scene_exact_internal.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #define SX_SERIES_REL 1e-19 /* the series stops where its terms are this small against the largest */
@@ -226,6 +227,21 @@ static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
     doubled(r, st);
 }
 
+/* a slot's memory, the first time it is built: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na),
+ * rows (nf (SX_LO+1) x na); 0, or 1 if none could be had */
+static int table_memory(const sx_region *r, sx_step *st)
+{
+    const size_t nn = (size_t)(r->na * r->na);
+    if (st->mem) return 0;
+    st->mem = (double *)malloc(sizeof(double) * (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1)) * r->na)));
+    if (!st->mem) return 1;
+    st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdt = st->Et + nn;
+    st->T = st->Wdt + nn;
+    st->wg = st->T + r->n * r->na;
+    st->rows = st->wg + 2 * r->na;
+    return 0;
+}
+
 /* The table of length h: cached (a length within tol, the rounding of the record's times, is the
  * same), or built. A step longer than the series converge over is the table of h/2 doubled (itself
  * cached, so that the halves of a slow step find theirs ready). */
@@ -235,11 +251,12 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
     int k;
     if (st) return (st->used = stamp), st;
     if (r->norm * h > SX_RHO * (1.0 + 1e-12)) {
-        half = sx_step_of(r, 0.5 * h, 0.5 * tol, stamp);
+        if (!(half = sx_step_of(r, 0.5 * h, 0.5 * tol, stamp))) return NULL;
         half->used = stamp + 1; /* not the slot this one takes */
     }
     for (k = 0; k < SX_STEPS; k++)
         if (!st || r->step[k].used < st->used) st = &r->step[k];
+    if (table_memory(r, st)) return NULL;
     if (half) {
         half->used = stamp;
         from_half(r, half, st);

@@ -65,7 +65,7 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     sx_step *st;
     if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
-    if (st->is_long) return 0; /* a length at the limit, doubled: no polynomial rows */
+    if (!st || st->is_long) return 0; /* no memory, or a length at the limit, doubled: no polynomial rows */
     sx_gather(r, R->x, ag0, slope, xa0);
     if (!sx_watch_quiet(R, r, st, xa0, xa1)) return 0;
     table_step(R, r, st, xa0, xa1, t1);
@@ -107,6 +107,8 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     if (!sx_modes_polys(r, h, xa0, P)) return -1;
     if ((why = sx_watch_quiet_polys(R, r, P, h, xa0)) != 0) return why;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
+    if (!st) return -1; /* no memory for it: the dyadic pieces end on the exact series (the doubts
+                           kept are of the same motion, resolved on it) */
     sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     table_step(R, r, st, xa0, xa1, t1);
