@@ -85,11 +85,12 @@ typedef struct {
     int wall;
 } storey_series;
 
-static void storey_polys(const sx_region *r, const sx_series *s, storey_series *P)
+static void storey_polys(const sx_region *r, const sx_series *s, storey_series *P, int only)
 {
     int f;
     for (f = 0; f < r->nf; f++) {
         storey_series *S = &P[r->f_storey[f]];
+        if (only >= 0 && r->f_storey[f] != only) continue;
         const double err = r->f_scale[f] * s->tail;
         switch (r->f_kind[f]) {
         case SX_Q1: poly_of(r, f, s, S->q1), S->err_q1 = err, S->wall = 1; break;
@@ -129,17 +130,19 @@ static void storey_peaks(sx_run *R, int i, const storey_series *S, int deg, doub
     }
 }
 
-/* every storey's polynomials over the series (a storey without a functional: zero) */
-static void all_storeys(const sx_run *R, const sx_region *r, const sx_series *s, storey_series P[])
+/* every storey's polynomials over the series, or storey `only`'s (a storey without a functional:
+ * zero) */
+static void storeys(const sx_run *R, const sx_region *r, const sx_series *s, storey_series P[], int only)
 {
     const size_t used = sizeof(double) * (size_t)(s->deg + 1);
     int i;
     for (i = 0; i < R->sc.S.n_storeys; i++) {
+        if (only >= 0 && i != only) continue;
         memset(P[i].q1, 0, used), memset(P[i].q2, 0, used), memset(P[i].deform, 0, used), memset(P[i].acc, 0, used);
         P[i].err_q1 = P[i].err_q2 = P[i].err_deform = P[i].err_acc = 0.0;
         P[i].wall = 0;
     }
-    storey_polys(r, s, P);
+    storey_polys(r, s, P, only);
 }
 
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
@@ -147,7 +150,7 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     storey_series P[RW_SCENE_MAX_STOREYS];
     double first = 2.0;
     int i, k;
-    all_storeys(R, r, s, P);
+    storeys(R, r, s, P, -1);
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         if (!P[i].wall) continue;
         for (k = 0; k < R->nlines[i]; k++) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
@@ -161,7 +164,7 @@ double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, i
 {
     storey_series P[RW_SCENE_MAX_STOREYS];
     double p[SX_PMAX], err;
-    all_storeys(R, r, s, P);
+    storeys(R, r, s, P, storey); /* the one storey a doubt is about */
     return quantity(R, storey, &P[storey], kind, s->deg, p, &err) ? sx_poly_max_abs(p, s->deg, err, 1.0, best) : best;
 }
 

@@ -93,7 +93,8 @@ static void row_step(const sx_region *r, const double *rk, int k, double h, doub
 }
 
 /* C = A B (na x na), a row of C at a time as a sum of B's rows: each entry's sum runs over l in
- * order as a dot product would, and the inner loop runs along rows (the compiler vectorises it) */
+ * order as a dot product would, and the inner loop runs along rows (the compiler vectorises it).
+ * A zero of A adds nothing and is skipped: half of Aa's rows (x's displacements) hold one 1. */
 static void matmul(int na, const double *A, const double *B, double *C)
 {
     int i, j, l;
@@ -102,6 +103,7 @@ static void matmul(int na, const double *A, const double *B, double *C)
         for (j = 0; j < na; j++) c[j] = 0.0;
         for (l = 0; l < na; l++) {
             const double a = A[i * na + l], *b = B + l * na;
+            if (a == 0.0) continue;
             for (j = 0; j < na; j++) c[j] += a * b[j];
         }
     }
