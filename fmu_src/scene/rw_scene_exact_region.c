@@ -270,9 +270,9 @@ static void collapse_forms(const rw_scene *sc, const sx_key *key, sx_region *r)
     }
 }
 
-/* the region's matrix (its step tables are allocated as they are first built, sx_step_of: a
- * region uses a few of its SX_STEPS lengths, and small allocations are reused run after run where
- * one for all of them would be mapped and faulted in anew) */
+/* the region's matrix. Its step tables are allocated as each is first built (sx_step_of): a
+ * region uses a few of its SX_STEPS lengths, and one allocation for all of them (188 KB for two
+ * storeys) was mapped and faulted in anew at every build. */
 static int allocate(sx_region *r)
 {
     sx_region_free(r);
