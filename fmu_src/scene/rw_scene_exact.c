@@ -270,7 +270,7 @@ int rw_scene_exact_rates(const rw_scene *sc, double ag, const double x[], double
     code = sx_region_build(sc, &key, &r);
     if (code) return sx_region_free(&r), code;
     sx_gather(&r, x, ag, 0.0, xa);
-    sx_matvec(r.na, r.na, r.Aa, xa, d);
+    sx_matvec_cols(r.na, r.na, r.Aa_cols, xa, d);
     memset(dx, 0, sizeof(double) * RW_SCENE_NX);
     for (k = 0; k < r.ndof; k++) {
         dx[r.pos[k]] = d[k];

@@ -89,31 +89,9 @@ void sx_balance(int n, const double *A, double *S, double *norm)
     }
 }
 
-/* four rows at a time: each row's sum keeps its order (the same result), the four chains of
- * additions overlap (this product is most of a quiet step's arithmetic) */
-void sx_matvec(int rows, int cols, const double *A, const double *x, double *y)
-{
-    int i = 0, j;
-    for (; i + 4 <= rows; i += 4) {
-        const double *a0 = A + (size_t)i * (size_t)cols, *a1 = a0 + cols, *a2 = a1 + cols, *a3 = a2 + cols;
-        double v0 = 0.0, v1 = 0.0, v2 = 0.0, v3 = 0.0;
-        for (j = 0; j < cols; j++) {
-            const double xj = x[j];
-            v0 += a0[j] * xj, v1 += a1[j] * xj, v2 += a2[j] * xj, v3 += a3[j] * xj;
-        }
-        y[i] = v0, y[i + 1] = v1, y[i + 2] = v2, y[i + 3] = v3;
-    }
-    for (; i < rows; i++) {
-        const double *a = A + (size_t)i * (size_t)cols;
-        double v = 0.0;
-        for (j = 0; j < cols; j++) v += a[j] * x[j];
-        y[i] = v;
-    }
-}
-
 /* y = A x from A stored by columns (At[j * rows + i] = A_ij). Each y_i's sum runs over j in order,
- * as sx_matvec's does (the same result), and the inner loop runs down a column, which the compiler
- * vectorises (a dot product it cannot, as it would reorder the sum); four columns a pass */
+ * as a row's dot product would (the same result), and the inner loop runs down a column, which the
+ * compiler vectorises (a dot product it cannot, as it would reorder the sum); four columns a pass */
 void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
 {
     int i, j = 0;

@@ -168,8 +168,7 @@ int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
-void sx_matvec(int rows, int cols, const double *A, const double *x, double *y);
-/* the same product from A stored by columns (At: cols x rows), vectorised; the same result */
+/* y = A x from A stored by columns (At: cols x rows), vectorised; each sum in a row's order */
 void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y);
 void sx_transpose(int rows, int cols, const double *A, double *At); /* At (cols x rows) = A^T */
 double sx_sym2_min_eig(const double A[2][2]);
