@@ -55,13 +55,14 @@ def filtered_peak(a, dt, cutoff_hz=CUTOFF_HZ):
 
 
 def _alias_share(a, dt):
-    """Every sample filtered, and how far the filtered peaks of every other sample are from theirs
-    (relative to the filtered peak, or to 1e-3 of the raw one where the filter leaves less)."""
+    """Every sample filtered, their filtered peaks, and how far the filtered peaks of every other
+    sample are from those (relative to the filtered peak, or to 1e-3 of the raw one where the filter
+    leaves less)."""
     filtered = lowpass(a, dt)
     full = np.max(np.abs(filtered), axis=0)
     half = filtered_peak(a[::2], 2.0 * dt)
     scale = np.maximum(full, 1e-3 * np.max(np.abs(a), axis=0)) + 1e-300
-    return filtered, float(np.max(np.abs(full - half) / scale))
+    return filtered, full, float(np.max(np.abs(full - half) / scale))
 
 
 def fastest_hz(spec):
@@ -133,11 +134,11 @@ def sample_history(spec, record, history, what, t_end=None, rtol=1e-8, engine=No
     for refinement in range(REFINEMENTS + 1):
         samples = _sampled_history(spec, record, t_end, rtol, engine, dt, history, what)
         raw = np.max(np.abs(samples), axis=0)
-        filtered, share = _alias_share(samples, dt)     # any length: a run of a few samples too
+        filtered, peak, share = _alias_share(samples, dt)  # any length: a run of a few samples too
         if share <= ALIAS_SHARE or dt / 2 < DT_MIN * (1 - 1e-12):
             break
         dt /= 2
-    return Sampled(np.max(np.abs(filtered), axis=0), raw, dt, fine_enough and share <= ALIAS_SHARE, filtered, start)
+    return Sampled(peak, raw, dt, fine_enough and share <= ALIAS_SHARE, filtered, start)
 
 
 def sample(spec, record, t_end=None, rtol=1e-8, engine=None):
