@@ -12,6 +12,7 @@ import venv
 import pytest
 
 import rockingwall as rw
+from test_engine_library import threads_started_by
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
@@ -35,6 +36,7 @@ def test_pip_install_gives_a_working_command(fresh_env):
     assert "site-packages" in where and where.endswith("_bin")
     for part in ("RockingWall.fmu", "Diaphragm.fmu", "fmi2sim", "librwengine.so"):
         assert (pathlib.Path(where) / part).is_file(), part
+    assert threads_started_by(pathlib.Path(where) / "librwengine.so", python) == 0  # its LAPACK found as built
     command = root / "venv" / "bin" / "rockingwall"
     proc = subprocess.run([str(command), "run", "--wall", "paper1", "--Kd", "50kN/m/m", "gaussian", "--json"],
                           capture_output=True, text=True, env=env, cwd=root, timeout=300)
