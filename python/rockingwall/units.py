@@ -1,5 +1,5 @@
-"""Quantities with explicit units: '30kN/m/m', '30 kN/m per m', '14.08 kN/m', '230 mm', or a bare
-number in the parameter's SI unit (the unit column of `rockingwall info`).
+"""Quantities with explicit units: '30kN/m/m', '30 kN/m per m', '14.08 kN/m', '230 mm', '5 %' (a
+ratio), or a bare number in the parameter's SI unit (the unit column of `rockingwall info`).
 
 Every parameter has one SI unit (fmu_src/wall/rw_parameters.h); a value given with a unit is converted
 to it here, and a unit of the wrong kind (kN/m for a stiffness per metre of wall) is an error."""
@@ -17,6 +17,7 @@ _SPELLINGS = {
     "N/m3": {"n/m3": 1.0, "kn/m3": 1e3},
     "g": {"g": 1.0, "m/s/s": 1.0 / 9.81},   # an acceleration as a fraction of g (the codes' hazard)
     "s": {"s": 1.0, "ms": 1e-3},
+    "1": {"%": 1e-2},                      # a ratio as engineers write a damping ratio: '5 %'
 }
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(.*?)\s*$")
 
@@ -37,10 +38,10 @@ def parse(value, si_unit, name="value"):
     number, unit = _finite(float(m.group(1)), value, name), m.group(2)
     if not unit or _canonical(unit) == _canonical(si_unit or "1"):
         return number
-    factors = _SPELLINGS.get(si_unit, {})
+    factors = _SPELLINGS.get(si_unit or "1", {})
     factor = factors.get(_canonical(unit))
     if factor is None:
-        known = ", ".join(sorted({si_unit, *[_display(k) for k in factors]})) if factors else si_unit or "none"
+        known = ", ".join(sorted({si_unit or "1", *[_display(k) for k in factors]})) if factors else si_unit or "none"
         raise ValueError(f"{name}: unit {unit!r} is not a unit of {name} (accepted: {known})")
     return number * factor
 

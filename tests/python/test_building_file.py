@@ -146,3 +146,23 @@ def test_the_floor_acceleration_is_filtered_and_says_at_what(house, capsys):
     assert run["floor_acc"]["cutoff_hz"] == 25.0 and run["floor_acc"]["resolved"] is True
     for s in run["storeys"]:
         assert 0 < s["base_peak_acc_m_s2"] and 0 < s["base_peak_acc_raw_m_s2"]
+
+
+def test_a_ratio_may_be_written_in_percent(house, capsys):
+    """'5 %' is 0.05 wherever a ratio is read: the building file's damping, --diaphragm-damping, psi."""
+    b = building_file.parse(CONTRACT.replace("damping = 0.05", 'damping = "5 %"'))
+    assert [s.diaphragm.damping for s in b.storeys] == [pytest.approx(0.05)] * 2
+    args = ["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-mass", "200kg/m", "gaussian", "--json"]
+    runs = []
+    for damping in ("0.05", "5%"):
+        assert cli.main(args + ["--diaphragm-damping", damping]) == 0
+        runs.append(json.loads(capsys.readouterr().out)["runs"][0])
+    assert runs[0] == runs[1]
+    assert cli.main(["run", "--wall", "paper1", "--psi", "20 %", "gaussian", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["wall"]["psi"] == pytest.approx(0.2)
+
+
+def test_a_diaphragm_option_without_the_diaphragm_is_refused(capsys):
+    """--diaphragm-damping (as --tie) describes a diaphragm with mass: alone it was silently ignored."""
+    assert cli.main(["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-damping", "0.1", "gaussian"]) == 2
+    assert "--diaphragm-damping is of a diaphragm with mass" in capsys.readouterr().err

@@ -93,8 +93,8 @@ def add_diaphragm_arguments(parser):
         "a diaphragm with mass (the wall tied to it, its supports on the ground); without "
         "--diaphragm-mass the top spring K_d ends at a fixed point (the paper's scene)")
     g.add_argument("--diaphragm-mass", help="the diaphragm's mass per metre of wall, e.g. 200kg/m")
-    g.add_argument("--diaphragm-damping", type=float, default=DAMPING_DEFAULT,
-                   help=f"its damping ratio (default {DAMPING_DEFAULT:g}); its stiffness is --Kd")
+    g.add_argument("--diaphragm-damping",
+                   help=f"its damping ratio, e.g. 0.05 or 5%% (default {DAMPING_DEFAULT:g}); its stiffness is --Kd")
     g.add_argument("--tie", help=f"the wall-to-diaphragm connection [N/m per m] (default {TIE_DEFAULT:g})")
 
 
@@ -102,17 +102,20 @@ def diaphragm_from_args(args, wall):
     """(Diaphragm or None, tie [N/m per m]) from --diaphragm-mass, --diaphragm-damping, --tie and
     the wall's K_d as the diaphragm's stiffness."""
     tie = units.parse(args.tie, "N/m2", "--tie") if args.tie else TIE_DEFAULT
+    damping = (units.parse(args.diaphragm_damping, "1", "--diaphragm-damping") if args.diaphragm_damping is not None
+               else DAMPING_DEFAULT)
     if args.diaphragm_mass is None:
-        if args.tie:
-            raise ValueError("--tie is the connection to a diaphragm with mass: give --diaphragm-mass too")
+        for given, option in ((args.tie, "--tie"), (args.diaphragm_damping, "--diaphragm-damping")):
+            if given is not None:
+                raise ValueError(f"{option} is of a diaphragm with mass: give --diaphragm-mass too")
         return None, tie
     if int(wall.params["support"]) != SUPPORTS["flexibleTop"]:
         raise ValueError("--diaphragm-mass: a diaphragm holds the wall's top (support flexibleTop)")
     mass = units.parse(args.diaphragm_mass, "kg/m", "--diaphragm-mass")
-    if not 0 < mass < 1e7 or not 0 <= args.diaphragm_damping <= 2 or not 1 <= tie <= 1e12:
+    if not 0 < mass < 1e7 or not 0 <= damping <= 2 or not 1 <= tie <= 1e12:
         raise ValueError("--diaphragm-mass must be in (0, 1e7) kg/m, --diaphragm-damping in [0, 2], --tie in "
                          "[1, 1e12] N/m per m")
-    return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=args.diaphragm_damping), tie
+    return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=damping), tie
 
 
 def add_record_arguments(parser, many=False):
