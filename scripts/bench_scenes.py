@@ -20,7 +20,8 @@ method cannot skip at the steps and events it counted. Per record interval one e
 exp(Aa h) xa and one dissipation form xa.Wd xa (2 na^2 multiply-adds; na = 3 + 2 x the degrees of
 freedom), per event one exact series (about 20 na^2), at the rate this core does dense arithmetic
 (a 256 x 256 matrix product's flops over its CPU time, measured in the same run). Every time is
-CPU time on a shared machine: read ratios, not absolutes.
+CPU time on a shared machine: read ratios, not absolutes. A run's is its thread's (time.thread_time):
+the process's would count NumPy's BLAS threads, which spin for a while after the matrix product.
 
     .venv/bin/python scripts/bench_scenes.py [--pga 0.2] [--calls 5]
 """
@@ -74,9 +75,9 @@ def hysteretic(tie):
 
 
 def timed_cvode(spec, t, ag, rtol, bdf):
-    start = time.process_time()
+    start = time.thread_time()
     res = se.run(spec, t, ag, engine="cvode", rtol=rtol, bdf=bdf)
-    return res, time.process_time() - start
+    return res, time.thread_time() - start
 
 
 def print_hysteretic(t, ag):
@@ -116,9 +117,9 @@ def print_building_runs(t, ag):
 def best_time(run, calls):
     result, best = run(), float("inf")
     for _ in range(calls):
-        start = time.process_time()
+        start = time.thread_time()
         run()
-        best = min(best, time.process_time() - start)
+        best = min(best, time.thread_time() - start)
     return result, best
 
 
@@ -171,9 +172,9 @@ def main(argv=None):
               f"{wall.steps:7d} {wall.events:6d} {'':>8} | {bool(wall.collapsed)}")
         for label, spec in scenes(tie).items():
             exact, t_exact = best_time(lambda: se.run(spec, t, ag, engine="exact"), a.calls)
-            start = time.process_time()
+            start = time.thread_time()
             cvode = se.run(spec, t, ag, engine="cvode", rtol=1e-8)
-            t_cvode = time.process_time() - start
+            t_cvode = time.thread_time() - start
             floor = floor_ms(spec, t.size - 1, exact.events, rate)
             print(f"{'':>15} {label:>9} | {t_exact * 1e3:8.2f} {t_exact / t_wall:7.1f} {floor:7.2f} | "
                   f"{t_cvode * 1e3:8.0f} {t_cvode / t_exact:8.0f} | {exact.steps:7d} {exact.events:6d} "
