@@ -21,6 +21,11 @@ def build_dir():
     return _CHECKOUT_BUILD
 
 
+def where(name):
+    """Where a compiled part is, or would be once built: for a message that points a user at it."""
+    return build_dir() / name
+
+
 def binary(name):
     """Path of one compiled part; FileNotFoundError saying how to get it when it is missing."""
     path = build_dir() / name

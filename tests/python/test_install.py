@@ -34,7 +34,8 @@ def test_pip_install_gives_a_working_command(fresh_env):
     where = subprocess.run([str(python), "-c", "from rockingwall import paths; print(paths.build_dir())"],
                            capture_output=True, text=True, env=env, cwd=root, check=True).stdout.strip()
     assert "site-packages" in where and where.endswith("_bin")
-    for part in ("RockingWall.fmu", "Diaphragm.fmu", "fmi2sim", "librwengine.so"):
+    for part in ("RockingWall.fmu", "Diaphragm.fmu", "Building.fmu", "BuildingWithWalls.fmu", "fmi3/RockingWall.fmu",
+                 "fmi3/BuildingWithWalls.fmu", "fmi2sim", "librwengine.so"):
         assert (pathlib.Path(where) / part).is_file(), part
     assert threads_started_by(pathlib.Path(where) / "librwengine.so", python) == 0  # its LAPACK found as built
     command = root / "venv" / "bin" / "rockingwall"

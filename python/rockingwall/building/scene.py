@@ -218,9 +218,11 @@ def _building_meta(b, n):
                 **{q: [v.get(f"{q}_{i + 1}", 0.0) for i in range(n)] for q in ("m", "md", "k", "kd", "cs", "cd")})
 
 
-REMEDY = ("run the building as one integration instead: `rockingwall building FILE.toml` (stable at any mass "
-          "ratio), or in an FMI tool build/BuildingWithWalls.fmu (walls, ties, diaphragms and floors as the "
-          "states of one FMU)")
+def remedy():
+    """What to run instead of an unstable building co-simulation (couple_building names the file)."""
+    return ("run the building as one integration instead: `rockingwall building FILE.toml` (stable at any mass "
+            f"ratio), or in an FMI tool {paths.where('BuildingWithWalls.fmu')} (walls, ties, diaphragms and floors "
+            "as the states of one FMU)")
 
 
 def _guard(scene, H, order, share):
@@ -242,7 +244,7 @@ def _guard(scene, H, order, share):
                           f"elastic range)")
         return (f"the co-simulation went unstable at t = {t:.4g} s: the energy residual {residual:.3g} J/m passed "
                 f"{share:g} of the input work ({peak:.3g} J/m): its motion is the coupling's, not the building's, and "
-                f"no peak or collapse of it is a result. Likely cause: {cause}. Remedy: {REMEDY}")
+                f"no peak or collapse of it is a result. Likely cause: {cause}. Remedy: {remedy()}")
 
     return energy_guard.EnergyGuard(lambda slaves: _building_meta(slaves["building"], scene.n_storeys), parts,
                                     explain, share)

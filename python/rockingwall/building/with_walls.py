@@ -1,4 +1,4 @@
-"""A building file as the start values of build/BuildingWithWalls.fmu (docs/building-with-walls.md): the
+"""A building file as the start values of BuildingWithWalls.fmu (docs/building-with-walls.md): the
 walls, ties, diaphragms and floors of a description.Building by the FMU's names, for an FMI tool
 or fmpy. The FMU runs the scene the one-integration solver (rockingwall.building.monolithic) runs,
 with the same Bouc-Wen shape and pinching (description.Building.hysteresis)."""

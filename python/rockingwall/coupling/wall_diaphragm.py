@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from .. import records
+from .. import paths, records
 from ..names import HINGE_LAWS as LAWS, SUPPORTS as MODELS, paper_wall
 from . import energy_guard, jacobi, rules
 
@@ -176,7 +176,7 @@ def unstable_message(wall, dia, H):
                 f"no peak or collapse of it is a result. Likely cause: {cause}. Remedy: --monolithic (both FMUs under "
                 f"one CVODE, no macro step), --macro-step {limit:.3g} or smaller, or the wall under a diaphragm with "
                 f"mass in one integration (`rockingwall run --Kd ... --diaphragm-mass ...`; in an FMI tool "
-                f"build/BuildingWithWalls.fmu)")
+                f"{paths.where('BuildingWithWalls.fmu')})")
     return explain
 
 
