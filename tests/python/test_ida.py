@@ -65,3 +65,21 @@ def test_ida_on_a_single_kd_gives_plots_not_a_traceback(tmp_path):
     d[d.kd_kN == 5.0].to_csv(path, index=False, lineterminator="\n")
     assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 0
     assert (tmp_path / "plots" / "kd_map.png").exists()
+
+
+def test_a_building_storey_needs_only_its_name(tmp_path, capsys):
+    """A building sweep's rows have the model 'building': the storey chosen with --wall alone was
+    refused ('no successful runs of wall ..., flexibleTop'), as --model defaulted to flexibleTop. The
+    model and hinge law are now the chosen wall's only ones, and a choice the file does not have is
+    answered with the ones it has."""
+    path = synthetic_results(tmp_path)
+    d = pd.read_csv(path)
+    d["wall"], d["model"] = d.kd_kN.map({5.0: "house: storey 1", 50.0: "house: storey 2"}), "building"
+    d.to_csv(path, index=False, lineterminator="\n")
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 2
+    assert "runs of 2 walls (house: storey 1, house: storey 2): choose one with --wall" in capsys.readouterr().err
+    assert ida_command.main([str(path), "--wall", "house: storey 2", "--out", str(tmp_path / "plots")]) == 0
+    assert len(ida.load(path, "house: storey 2")) == 8 and (tmp_path / "plots" / "fragility.png").exists()
+    assert ida_command.main([str(path), "--wall", "house: storey 2", "--model", "flexibleTop",
+                             "--out", str(tmp_path / "plots")]) == 2
+    assert "no successful runs with --model flexibleTop (here: building)" in capsys.readouterr().err

@@ -24,8 +24,9 @@ def main(argv=None):
     p.add_argument("--out", default="results")
     p.add_argument("--wall", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name "
                                   "(default: the file's only wall)")
-    p.add_argument("--model", default="flexibleTop")
-    p.add_argument("--hinge-law", default="dohertyHinge")
+    p.add_argument("--model", help="the model column (default: the chosen wall's only model; a building's "
+                                   "storeys: building)")
+    p.add_argument("--hinge-law", help="the hinge_law column (default: the only one of the chosen runs)")
     p.add_argument("--ida-kd", type=float, nargs="+", help="K_d values for the IDA and fragility plots (default: all)")
     args = p.parse_args(argv)
     try:

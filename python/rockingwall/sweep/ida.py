@@ -28,20 +28,28 @@ def report_not_ok(d, path):
               f"{failed.message.iloc[0]}", file=sys.stderr)
 
 
-def load(path, wall, model, hinge_law):
-    """The 'ok' runs of one wall, model and hinge law; damaged lines of the file are named and left
-    out (rockingwall.sweep.store), and a run_id written twice counts once (the last row)."""
+# the columns that pick one set of runs: (column, its name in a message, the option that chooses it)
+CHOICES = (("wall", "walls", "--wall"), ("model", "models", "--model"), ("hinge_law", "hinge laws", "--hinge-law"))
+
+
+def load(path, wall=None, model=None, hinge_law=None):
+    """The 'ok' runs of one wall, model and hinge law (each None: the file's only one among the
+    runs chosen so far, else the user must say which); damaged lines of the file are named and
+    left out (rockingwall.sweep.store), and a run_id written twice counts once (the last row)."""
     d = store.load_frame(path)
     report_not_ok(d, path)
     d.attrs["unfinished"] = int(d.status.isin(RETRIED).sum())
-    if wall is None:  # the file's only wall, else the user must say which
-        walls = sorted(d.wall[d.status == OK].unique())
-        if len(walls) != 1:
-            raise ValueError(f"{path}: runs of {len(walls)} walls ({', '.join(walls)}): choose one with --wall")
-        wall = walls[0]
-    d = d[(d.status == OK) & (d.wall == str(wall)) & (d.model == model) & (d.hinge_law == hinge_law)]
+    d = d[d.status == OK]
     if d.empty:
-        raise ValueError(f"{path}: no successful runs of wall {wall}, {model}, {hinge_law}")
+        raise ValueError(f"{path}: no successful runs")
+    for (column, plural, option), given in zip(CHOICES, (wall, model, hinge_law)):
+        values = sorted(d[column].unique())
+        if given is None and len(values) > 1:
+            raise ValueError(f"{path}: runs of {len(values)} {plural} ({', '.join(values)}): choose one with {option}")
+        given = values[0] if given is None else str(given)
+        if given not in values:
+            raise ValueError(f"{path}: no successful runs with {option} {given} (here: {', '.join(values)})")
+        d = d[d[column] == given]
     return d
 
 
