@@ -80,6 +80,24 @@ def test_a_building_storey_needs_only_its_name(tmp_path, capsys):
     assert "runs of 2 walls (house: storey 1, house: storey 2): choose one with --wall" in capsys.readouterr().err
     assert ida_command.main([str(path), "--wall", "house: storey 2", "--out", str(tmp_path / "plots")]) == 0
     assert len(ida.load(path, "house: storey 2")) == 8 and (tmp_path / "plots" / "fragility.png").exists()
+    assert "K_d [kN/m per m]   median [g]" in capsys.readouterr().out  # a stiffness per metre of wall
     assert ida_command.main([str(path), "--wall", "house: storey 2", "--model", "flexibleTop",
                              "--out", str(tmp_path / "plots")]) == 2
     assert "no successful runs with --model flexibleTop (here: building)" in capsys.readouterr().err
+
+
+def test_a_fragility_the_data_cannot_shape_says_so(tmp_path, capsys):
+    """Records that all stand below 0.3 g and all collapse above it leave beta unidentified and the
+    median anywhere in the gap. ida printed 'median 0.346 g, beta 0.00' and drew a solid step, as
+    if both were known; it now says so in the table, the warnings and the legend (dashed, shaded)."""
+    path = synthetic_results(tmp_path)  # both records stand at 0.3 g and collapse at 0.4 g for K_d = 5
+    assert ida_command.main([str(path), "--ida-kd", "5", "--out", str(tmp_path / "plots")]) == 0
+    out = capsys.readouterr().out
+    assert "(beta not identified)" in out
+    assert "K_d = 5 kN/m per m: no run below 0.3 reaches collapse and every run above 0.4 does" in out
+    assert "only 2 records (fewer than 10)" in out
+    fig, fits = ida.fragility_figure(ida.load(path).query("kd_kN == 5"))
+    (line,) = fig.axes[0].get_lines()[1:]
+    assert line.get_linestyle() == "--" and fits[5.0].gap == (0.3, 0.4)
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "K_d = 5 kN/m per m: median anywhere in [0.3, 0.4] g, beta not identified"]

@@ -47,9 +47,7 @@ def main(argv=None):
     fits = ida.fragility_plot(sub, out / "fragility.png")
     ida.kd_map(d, out / "kd_map.png")
     print(f"{len(d)} runs, {d.record.nunique()} records; collapse fragility against PGA (lognormal MLE):")
-    print("K_d [kN/m]   median [g]   beta   runs")
-    for kd, f in fits.items():
-        print(f"{kd:10g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}")
+    print("\n".join(ida.fragility_table(fits, d.record.nunique())))
     print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")
     # the plots are made from every good row, but a file with damaged lines or unfinished runs is
     # not a complete result: say so in the exit status too

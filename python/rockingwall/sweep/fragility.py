@@ -50,6 +50,13 @@ def no_estimate_message(status, what):
     return f"the runs are all at one intensity: the fragility of {what} has no estimate (beta not identified)"
 
 
+def gap_message(gap, what):
+    """What a fit whose data do not overlap (Fragility.gap) can say, in words naming `what`."""
+    where = f"at {gap[0]:.2g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.2g}, {gap[1]:.2g}]"
+    return (f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does: the data do not "
+            f"overlap, so beta is not identified (0) and the median is {where}")
+
+
 def fit(im, exceeded, what="collapse"):
     """The MLE of (theta, beta). ValueError where there is none: no run or every run reaches the
     limit state, the share reaching it does not rise with the intensity, or one intensity only.
@@ -127,9 +134,7 @@ def fit_tables(levels, n, z, n_boot=200, seed=1, what="collapse"):
         return Estimate(None, n_records=n_records, warnings=tuple(notes + [no_estimate_message(status, what)]))
     gap = tuple(float(x) for x in np.exp(fits.gap[0])) if status == probit.SEPARATED else None
     if gap:
-        where = f"at {gap[0]:.2g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.2g}, {gap[1]:.2g}]"
-        notes.append(f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does: the data do "
-                     f"not overlap, so beta is not identified (0) and the median is {where}")
+        notes.append(gap_message(gap, what))
     best = Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap)
     boot = fits.status[1:]
     used = (boot != probit.NONE) & (boot != probit.ALL) & (boot != probit.ONE_LEVEL)

@@ -177,7 +177,7 @@ def describe(cfg, suite, specs):
     levels = (f"target PGA [g] {cfg['pga_g']}" if cfg["pga_g"] else f"scale factors {cfg['scales']}")
     bad = [r.name for r in suite if r.error]
     lines = [f"walls {cfg['walls']}; models {cfg['models']}; hinge laws {cfg['hinge_laws']}",
-             f"K_d [kN/m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
+             f"K_d [kN/m per m] {kd} (flexibleTop only); e_r {cfg['er']}; rtol {cfg['rtol']:g}; tail {cfg['tail']:g} s",
              f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
              levels,
              f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]

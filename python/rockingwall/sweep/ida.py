@@ -72,7 +72,7 @@ def ida_curves(d, path):
             ax.set_xscale("log")
             ax.grid(True, which="both", alpha=0.3)
             if i == 0:
-                ax.set_title(f"K_d = {kd:g} kN/m")
+                ax.set_title(f"K_d = {kd:g} kN/m per m")
             ax.set_xlabel(f"peak {'s1 (mid-height)' if q == 'peak_s1' else 's2 (top)'} [mm]")
             if j == 0:
                 ax.set_ylabel("PGA [g]")
@@ -83,7 +83,22 @@ def ida_curves(d, path):
     plt.close(fig)
 
 
-def fragility_plot(d, path):
+def fragility_table(fits, n_records):
+    """The fits of fragility_plot as lines to print, with what the data cannot support."""
+    lines = ["K_d [kN/m per m]   median [g]   beta   runs"]
+    for kd, f in fits.items():
+        lines.append(f"{kd:16g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}" + ("  (beta not identified)" if f.gap else ""))
+    lines += [f"  warning: K_d = {kd:g} kN/m per m: {fragility.gap_message(f.gap, 'collapse')} g"
+              for kd, f in fits.items() if f.gap]
+    if n_records < fragility.MIN_RECORDS:
+        lines.append(f"  warning: only {n_records} records (fewer than {fragility.MIN_RECORDS}): the median and above all "
+                     "the dispersion beta are poorly constrained")
+    return lines
+
+
+def fragility_figure(d):
+    """The collapse fragility per K_d: (figure, {K_d: Fragility}). A fit whose data do not overlap
+    is a dashed step over its gap, shaded, where the median may lie anywhere."""
     fig, ax = plt.subplots(figsize=(6.4, 4.4))
     x = np.linspace(d.pga_g.min(), d.pga_g.max(), 300)
     fits = {}
@@ -94,10 +109,15 @@ def fragility_plot(d, path):
         try:
             f = fragility.fit(dk.pga_g, dk.collapsed)
         except ValueError as exc:
-            print(f"K_d = {kd:g} kN/m: {exc}")
+            print(f"K_d = {kd:g} kN/m per m: {exc}")
             continue
         fits[kd] = f
-        ax.plot(x, f(x), color=color, label=f"K_d = {kd:g} kN/m: median {f.theta:.3f} g, beta {f.beta:.2f}")
+        if f.gap is None:
+            ax.plot(x, f(x), color=color, label=f"K_d = {kd:g} kN/m per m: median {f.theta:.3f} g, beta {f.beta:.2f}")
+        else:
+            ax.axvspan(*f.gap, color=color, alpha=0.12, lw=0)
+            ax.plot(x, f(x), "--", color=color, label=f"K_d = {kd:g} kN/m per m: median anywhere in [{f.gap[0]:.3g}, "
+                                                       f"{f.gap[1]:.3g}] g, beta not identified")
     ax.set_xlabel("PGA [g]")
     ax.set_ylabel("P(collapse)")
     ax.set_ylim(-0.02, 1.02)
@@ -105,6 +125,12 @@ def fragility_plot(d, path):
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title("Collapse fragility (dots: fraction of records; lines: lognormal MLE)", fontsize=10)
     fig.tight_layout()
+    return fig, fits
+
+
+def fragility_plot(d, path):
+    """fragility_figure written to path (PNG): the fits."""
+    fig, fits = fragility_figure(d)
     outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)
     return fits
