@@ -58,3 +58,31 @@ def test_each_storeys_panel_draws_its_wall_and_the_diaphragm_it_is_tied_to(writt
         assert du == f"Delta_u = {run['storeys'][i - 1]['delta_u_m'] * 1e3:.0f} mm"
         legend = [t.get_text() for t in ax.get_legend().get_texts()]
         assert legend == ["wall s1 (mid-height) [mm]", "diaphragm [mm]", du]
+
+
+def test_a_collapsed_wall_is_drawn_up_to_its_collapse(tmp_path, capsys, figures):
+    """After a wall collapses the run holds the state it collapsed at: both plots drew that state on
+    to the record's end, a wall leaning at 230 mm for 75 s. The wall's lines now end at the collapse,
+    marked with an x in the line's colour; `run`'s plot names the collapse in its legend, last, and
+    the scene in its title. The assessor's upper wall at 0.3 g of El Centro, in the house and under
+    its roof diaphragm alone."""
+    house = tmp_path / "house.toml"
+    house.write_text(HOUSE.format(tie="1e8"))
+    assert main(["building", str(house), "elcentro", "--pga", "0.3", "--json", "--out", str(tmp_path / "h")]) == 0
+    upper = json.loads(capsys.readouterr().out)["runs"][0]["storeys"][1]
+    wall = ["--b", "230mm", "--h", "3.6", "--W", "14.904kN/m", "--psi", "0.2013", "--Kd", "20kN/m/m"]
+    assert main(["run", *wall, "--diaphragm-mass", "200kg/m", "--pga", "0.3", "elcentro", "--json",
+                 "--out", str(tmp_path / "r")]) == 0
+    alone = json.loads(capsys.readouterr().out)["runs"][0]
+    assert upper["collapsed"] and alone["collapsed"]
+    building_fig, run_fig = figures
+    panel = building_fig.axes[0]  # the top storey's
+    s1, mark = (line for line in panel.get_lines() if line.get_color() == "C0")
+    assert s1.get_xdata()[-1] <= upper["t_collapse_s"] < s1.get_xdata()[-1] + 0.011
+    assert mark.get_marker() == "x" and mark.get_xdata()[-1] == s1.get_xdata()[-1]
+    ax = run_fig.axes[1]
+    drawn = [line for line in ax.get_lines() if line.get_label().startswith(("s1", "s2"))]
+    assert [line.get_xdata()[-1] <= alone["t_collapse_s"] for line in drawn] == [True, True]
+    legend = [t.get_text() for t in ax.get_legend().get_texts()]
+    assert legend[-1] == f"collapsed at {alone['t_collapse_s']:.2f} s" and legend[0] == "s1, mid-height [mm]"
+    assert "scene: a wall tied (1e+08 N/m per m) to a diaphragm of 20 kN/m per m, 200 kg/m" in run_fig.get_suptitle()

@@ -109,6 +109,20 @@ def history_csv(histories, path):
     np.savetxt(path, np.column_stack(columns), delimiter=",", header=",".join(names), comments="", fmt="%.9g")
 
 
+def draw_wall(ax, t, y, t_collapse, **style):
+    """A wall's history on a plot, up to its collapse (t_collapse None or NaN: standing), which an x
+    marks: after it the run holds the state it collapsed at, and a line drawn on would show a wall
+    leaning there to the record's end. Returns the x's line (None for a standing wall)."""
+    if t_collapse is None or not np.isfinite(t_collapse):
+        ax.plot(t, y, **style)
+        return None
+    keep = np.asarray(t) <= t_collapse
+    t, y = np.asarray(t)[keep], np.asarray(y)[keep]
+    ax.plot(t, y, **style)
+    (mark,) = ax.plot(t[-1:], y[-1:], "x", color=style.get("color"), ms=7, mew=1.5)
+    return mark
+
+
 def plot(building, result, histories, path):
     """s1 of each storey's wall and its diaphragm over time, one panel per storey (top storey first)."""
     import matplotlib
@@ -119,7 +133,8 @@ def plot(building, result, histories, path):
     fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n + 0.6), sharex=True, squeeze=False)
     for panel, s in zip(axes[::-1, 0], result.storeys):
         i = s.storey - 1
-        panel.plot(history.t, history.s1[:, i] * 1e3, lw=0.8, color="C0", label="wall s1 (mid-height) [mm]")
+        draw_wall(panel, history.t, history.s1[:, i] * 1e3, s.t_collapse_s if s.collapsed else None, lw=0.8,
+                  color="C0", label="wall s1 (mid-height) [mm]")
         panel.plot(history.t, history.diaphragm[:, i] * 1e3, lw=0.8, color="C1", label="diaphragm [mm]")
         du = s.delta_u_m * 1e3
         panel.axhline(du, color="C3", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
