@@ -4,6 +4,7 @@ import json
 
 import pytest
 
+import rockingwall as rw
 from rockingwall import cli
 from rockingwall.building import building_file
 
@@ -166,3 +167,36 @@ def test_a_diaphragm_option_without_the_diaphragm_is_refused(capsys):
     """--diaphragm-damping (as --tie) describes a diaphragm with mass: alone it was silently ignored."""
     assert cli.main(["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-damping", "0.1", "gaussian"]) == 2
     assert "--diaphragm-damping is of a diaphragm with mass" in capsys.readouterr().err
+
+
+def test_a_bare_number_the_wall_model_cannot_take_names_its_line_and_the_slip():
+    """A bare number is SI: `W = 25.2` is 25.2 N/m, and the overburden of 3.2 kN/m is then 254 times
+    half of it. The file was read, and the run failed in the scene solver ('invalid parameter psi =
+    253.97') with no file, no line and no word of the unit."""
+    with pytest.raises(building_file.BuildingFileError) as err:
+        building_file.parse(CONTRACT.replace('W = "25.2 kN/m"', "W = 25.2"), "house.toml")
+    message = str(err.value)
+    assert message.startswith("house.toml:6: storey 1.wall: psi = ") and "must be in [0, 20]" in message
+    assert "W/(b h) = 0.018 kN/m^3 is not a masonry unit weight" in message and '"25.2 kN/m"' in message
+
+
+def test_an_implausible_number_is_warned_with_its_line_and_refused_with_strict(tmp_path, capsys):
+    """`stiffness = 20` is 20 N/m per m, a diaphragm with a period of 20 s: it ran without a word.
+    It is now a warning naming the line and the likely unit, an error with --strict (as `run` does
+    for K_d and the wall's unit weight), and so are a diaphragm's mass and a tie out of range."""
+    text = CONTRACT.replace('stiffness = "20 kN/m/m"', "stiffness = 20").replace('mass = "600 kg/m"', "mass = 0.6")
+    with pytest.warns(rw.PlausibilityWarning) as caught:
+        building_file.parse(text, "house.toml")
+    assert sorted(str(w.message) for w in caught) == [
+        "house.toml:13: storey 2: the diaphragm's stiffness 20 N/m per m is outside [500, 1e+10] N/m per m: did you "
+        'mean kN/m per m ("20 kN/m/m")?',
+        "house.toml:7: storey 1: the diaphragm's mass 0.6 kg/m is outside [10, 100000] kg/m per metre of wall: is the "
+        'unit right ("0.6 t/m")?']
+    path = tmp_path / "house.toml"
+    path.write_text(text)
+    assert cli.main(["building", str(path), "gaussian", "--pga", "0.1", "--strict"]) == 2
+    assert "house.toml:7: storey 1: the diaphragm's mass 0.6 kg/m" in capsys.readouterr().err  # the first
+    assert cli.main(["building", str(path), "gaussian", "--pga", "0.1"]) == 0
+    assert capsys.readouterr().err.count(f"rockingwall: warning: {path}:") == 2
+    with pytest.warns(rw.PlausibilityWarning, match="the tie 100 N/m per m"):
+        building_file.parse(CONTRACT.replace('tie = "1e6 N/m/m"', 'tie = "100 N/m/m"', 1), "house.toml")

@@ -4,11 +4,14 @@ import math
 import os
 import re
 import tomllib
+import warnings
 
 from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, PINCHING_TIMBER, TIE_DEFAULT, Building,
                           Diaphragm,
                           InPlaneWalls, Storey, WallLayer, parse_quantity)
 from ..names import HINGE_LAWS
+from ..wall import PlausibilityWarning
+from . import file_checks
 
 BUILDING_KEYS = {"name", "tie"}
 STOREY_KEYS = {"height", "wall", "diaphragm", "tie", "in_plane"}
@@ -197,9 +200,23 @@ def parse(text, path="<building>"):
     parsed = tuple(_storey(s, tie, where, lines[k] if k < len(lines) else head_line, k + 1)
                    for k, s in enumerate(storeys))
     try:
-        return Building(name=str(building.get("name", os.path.basename(path))), storeys=parsed, source=str(path))
+        result = Building(name=str(building.get("name", os.path.basename(path))), storeys=parsed, source=str(path))
     except ValueError as exc:
         raise where.error(head_line, str(exc)) from None
+    _check_units(result, where, [lines[k] if k < len(lines) else head_line for k in range(len(parsed))])
+    return result
+
+
+def _check_units(building, where, storey_lines):
+    """Each storey's wall as the model takes it (else an error) and its numbers as masonry buildings
+    have them (else a PlausibilityWarning naming the line and the likely unit slip)."""
+    for i, line in enumerate(storey_lines):
+        error = file_checks.model_error(building, i)
+        if error:
+            raise where.error(line, error, ["wall"])
+        for keys, message in file_checks.implausible(building, i):
+            warnings.warn(f"{where.path}:{where.line_of(line, keys)}: storey {i + 1}: {message}", PlausibilityWarning,
+                          stacklevel=4)
 
 
 def read(path):

@@ -156,7 +156,7 @@ def building_study(args):
                          "options")
     if args.engine != "exact":
         raise ValueError("--building runs on the scene solver: --engine does not apply")
-    building = building_file.read(args.building)
+    building = cc.plausible(lambda: building_file.read(args.building), args)
     states = assessment_building.storey_states(building, args.limit)
     scene = scenes.building(building).text()
     head = [building.describe(), "limit states: " + " | ".join(

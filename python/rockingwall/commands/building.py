@@ -33,6 +33,7 @@ def parser(sub=None):
     p.add_argument("--rtol", type=float, default=1e-8, help="relative tolerance where CVODES runs (default 1e-8)")
     p.add_argument("--out", help="folder for <record>.csv (time histories per storey) and <record>.png")
     p.add_argument("--json", action="store_true", help="print the results as JSON (strict: null, never NaN)")
+    cc.add_strict_argument(p)
     add_code_arguments(p)
     p.set_defaults(command=main)
     return p
@@ -45,7 +46,7 @@ def main(args):
 def run_building(path, args):
     """The building of the file at `path` under args.records (scaled as args say): what `rockingwall
     building` and `rockingwall run --building` print and write."""
-    building = building_file.read(path)
+    building = cc.plausible(lambda: building_file.read(path), args)
     records = [cc.record_from_args(spec, args) for spec in args.records]
     pgas = [record.pga / intensity.G for record in records]
     codes = code_checks(args, pgas, building=building)  # before any run: a bad option loses nothing

@@ -43,7 +43,7 @@ from ..building.scene import default_scene, run
 from ..coupling.slaves import CouplingError, CouplingUnstable
 from ..names import HINGE_LAWS
 from ..sweep import suites
-from .common import intensity_g, scale_factor
+from .common import intensity_g, plausible, scale_factor
 
 
 def parse_args(argv):
@@ -105,7 +105,7 @@ def main(argv=None):
         if a.building and a.from_ssp:
             raise ValueError("give --building or --from-ssp, not both")
         if a.building:
-            scene = cosim.scene_of(building_file.read(a.building))
+            scene = cosim.scene_of(plausible(lambda: building_file.read(a.building), a))
         elif a.from_ssp:
             scene = ssp.read(a.from_ssp)
         else:

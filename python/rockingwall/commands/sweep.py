@@ -34,6 +34,7 @@ from .. import outputs, paths
 from ..sweep import grid, store
 from ..sweep.execute import ClusterError, Terminated, check_options, describe as describe_outcome, execute
 from ..sweep.lock import Busy
+from .common import plausible
 
 def kd_in_kN(text):
     """K_d in kN/m per m from '30' (taken as kN/m per m) or a value with its unit ('3e4 N/m/m')."""
@@ -154,7 +155,7 @@ def main(argv=None):
 def run(args):
     check_command(args)
     flags = {k: v for k, v in vars(args).items() if k in grid.DEFAULTS}
-    cfg, suite, specs = grid.plan(args.config, flags)
+    cfg, suite, specs = plausible(lambda: grid.plan(args.config, flags), args)  # a building file's unit slips
     print(grid.describe(cfg, suite, specs))
     if args.dry_run:
         return 0
