@@ -12,7 +12,7 @@ its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
   60 kN/m per m and 600 kg/m under the floor, rigid in-plane walls), tied by the same ties.
 - two storeys, hysteretic: the two-storey scene with Bouc-Wen diaphragms (yield force 2 % of the
   stiffness times 1 m, post-yield ratio 0.1), which only CVODES solves, at rtol 1e-8 and 1e-6, with
-  its method (Adams) and with BDF; and `rockingwall building`'s five runs of it under the record
+  its method (Adams) and with BDF; and `rockingwall building`'s four runs of it under the record
   (wall-clock), one after another and on threads.
 Each scene: the exact engine (the best CPU time of 5 calls in-process) and CVODES (rtol 1e-8, one
 call), their peaks' largest relative difference, and the floor: the arithmetic the exact engine's
@@ -96,8 +96,8 @@ def print_hysteretic(t, ag):
 
 
 def print_building_runs(t, ag):
-    """`rockingwall building`'s five runs under one record (the main one, the sensitivity check's two,
-    the floors' and the ties' sampled ones) on the hysteretic two-storey scene: wall-clock seconds
+    """`rockingwall building`'s four runs under one record (the main one, the sensitivity check's two,
+    the floors' and the ties' sampled one) on the hysteretic two-storey scene: wall-clock seconds
     one after another and on threads (a thread per core), the same numbers either way"""
     spec = hysteretic(TIES[0])
     walls = [s.wall for s in spec.storeys]
@@ -110,7 +110,7 @@ def print_building_runs(t, ag):
         on_threads, _ = monolithic.respond(spec, walls, record, check_sensitivity=True, executor=pool,
                                            tie_forces=True)
     t_threads = time.perf_counter() - start
-    print(f"rockingwall building's 5 runs, two storeys, Bouc-Wen, tie {TIES[0]:.0e}: {t_order:.2f} s in order, "
+    print(f"rockingwall building's 4 runs, two storeys, Bouc-Wen, tie {TIES[0]:.0e}: {t_order:.2f} s in order, "
           f"{t_threads:.2f} s on threads ({t_order / t_threads:.1f} x), results {'the same' if in_order == on_threads else 'DIFFERENT'}")
 
 

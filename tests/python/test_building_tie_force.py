@@ -101,3 +101,26 @@ def test_assess_a_buildings_ties(tmp_path):
     assert (cases.peak_F_top_kN_per_m > 0.1).all()
     assert (cases.p_low == 1.0).all() and (cases.p_high == 0.0).all()
 
+
+
+def test_the_floors_and_the_ties_are_sampled_from_one_run(record, monkeypatch):
+    """`rockingwall building` ran the floors' and the ties' dense histories as two runs of the same
+    scene on the same grid (five runs a record with the sensitivity check's two; 8.4 s of
+    wall-clock time for a hysteretic two-storey building). One run now gives both, with the same
+    samples as each alone gave."""
+    from rockingwall import scene_engine
+    from rockingwall.building import floor_acc, tie_force
+    b = house(1e8)
+    spec, walls = monolithic.building_spec(b), [b.wall_parameters(i) for i in range(2)]
+    calls, real_run = [], scene_engine.run
+    monkeypatch.setattr(scene_engine, "run", lambda *a, **kw: calls.append(kw.get("histories")) or real_run(*a, **kw))
+    alone = floor_acc.sample(spec, record), tie_force.sample(spec, record)
+    runs_alone = len(calls)  # each sampler's, its sampling refined as the ringing asks (here once)
+    calls.clear()
+    result, _ = monolithic.respond(spec, walls, record, check_sensitivity=True, tie_forces=True)
+    dense = [c for c in calls if c and "s1" not in c]
+    assert dense == [("base_acc", "tie")] * (runs_alone // 2) and len(calls) == 3 + len(dense)
+    floor, ties = monolithic.sampled(spec, record, None, 1e-8, "exact", True, True)
+    for one, each in zip((floor, ties), alone):
+        assert one.dt == each.dt and np.array_equal(one.filtered, each.filtered)
+    assert [s.tie_force_N_per_m for s in result.storeys] == [float(x) for x in ties.filtered_peak]

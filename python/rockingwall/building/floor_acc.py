@@ -112,33 +112,40 @@ class Sampled:
         return np.column_stack(columns)
 
 
-def _sampled_history(spec, record, t_end, rtol, engine, dt, history, what):
-    """One history of the scene (a name of scene_engine.HISTORIES) sampled every dt [s] up to where
-    the run stopped, from a run whose energy is checked (`what` names it in the error)."""
+def _sampled_histories(spec, record, t_end, rtol, engine, dt, histories, what):
+    """{name: samples} of the scene's histories (names of scene_engine.HISTORIES) every dt [s] up to
+    where the run stopped, from one run whose energy is checked (`what` names it in the error)."""
     start = float(record.t[0])
     end = float(record.t[-1]) if t_end is None else float(t_end)
     grid = start + dt * np.arange(int(np.floor((end - start) / dt)) + 1)
     r = scene_engine.run(spec, record.t, record.ag, t_end=end, rtol=rtol, t_out=grid, engine=engine,
-                         histories=(history,))
+                         histories=tuple(histories))
     check_energy(r, f"{record.name} sampled every {dt:g} s ({what})")
-    rows = getattr(r, history)
-    reached = np.flatnonzero(np.all(np.isfinite(rows), axis=1))   # rows after the run stopped are NaN
-    return rows[: reached[-1] + 1] if reached.size else np.zeros((1, rows.shape[1]))
+    rows = {name: getattr(r, name) for name in histories}
+    first = rows[histories[0]]
+    reached = np.flatnonzero(np.all(np.isfinite(first), axis=1))   # rows after the run stopped are NaN
+    return {name: (h[: reached[-1] + 1] if reached.size else np.zeros((1, h.shape[1]))) for name, h in rows.items()}
 
 
-def sample_history(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
-    """Each storey's `history` (a name of scene_engine.HISTORIES) sampled and filtered: a Sampled,
-    its sampling refined until every other sample gives the same filtered peaks."""
+def sample_histories(spec, record, histories, what, t_end=None, rtol=1e-8, engine=None):
+    """{name: Sampled} of each storey's `histories` (names of scene_engine.HISTORIES), all from one
+    run, sampled and filtered: the sampling refined until every other sample gives the same
+    filtered peaks, for each of them."""
     dt, fine_enough = sample_dt(spec)
     start = float(record.t[0])
     for refinement in range(REFINEMENTS + 1):
-        samples = _sampled_history(spec, record, t_end, rtol, engine, dt, history, what)
-        raw = np.max(np.abs(samples), axis=0)
-        filtered, peak, share = _alias_share(samples, dt)  # any length: a run of a few samples too
-        if share <= ALIAS_SHARE or dt / 2 < DT_MIN * (1 - 1e-12):
+        samples = _sampled_histories(spec, record, t_end, rtol, engine, dt, histories, what)
+        checked = {name: _alias_share(s, dt) for name, s in samples.items()}  # any length: a few samples too
+        if all(share <= ALIAS_SHARE for _, _, share in checked.values()) or dt / 2 < DT_MIN * (1 - 1e-12):
             break
         dt /= 2
-    return Sampled(peak, raw, dt, fine_enough and share <= ALIAS_SHARE, filtered, start)
+    return {name: Sampled(peak, np.max(np.abs(samples[name]), axis=0), dt, fine_enough and share <= ALIAS_SHARE,
+                          filtered, start) for name, (filtered, peak, share) in checked.items()}
+
+
+def sample_history(spec, record, history, what, t_end=None, rtol=1e-8, engine=None):
+    """Each storey's `history` sampled and filtered, on a run of its own (a Sampled)."""
+    return sample_histories(spec, record, (history,), what, t_end, rtol, engine)[history]
 
 
 def sample(spec, record, t_end=None, rtol=1e-8, engine=None):

@@ -181,28 +181,39 @@ class Histories:
     tie_force: np.ndarray = None
 
 
+def sampled(spec, record, t_end, rtol, solver, floor, ties):
+    """(the floors' accelerations, the ties' forces) sampled and filtered (floor_acc.Sampled, or None
+    where not asked for): both from one run where both are."""
+    if floor and ties:
+        both = floor_acc.sample_histories(spec, record, ("base_acc", "tie"),
+                                          "the floors' accelerations and the ties' forces", t_end, rtol, solver)
+        return both["base_acc"], both["tie"]
+    return (floor_acc.sample(spec, record, t_end, rtol, solver) if floor else None,
+            tie_force.sample(spec, record, t_end, rtol, solver) if ties else None)
+
+
 def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
             filter_floor=True, executor=None, tie_forces=False):
     """Runs a Spec under a record: (BuildingResult, Histories).
     solver: 'exact', 'cvode' (CVODES at rtol), or None: the exact engine where it covers the scene.
     check_sensitivity: also run the record scaled by 1 -/+ SENSITIVITY_PERTURBATION (two more
     runs) and give the largest change of a peak (BuildingResult.peak_sensitivity). filter_floor:
-    the floors' filtered peak acceleration (floor_acc.sample: one more run on a dense grid); else
-    base_peak_acc_m_s2 is None. tie_forces: each standing wall's tie force filtered at 25 Hz
-    (tie_force.sample: one more run on a dense grid). executor: where those runs go
+    the floors' filtered peak acceleration; else base_peak_acc_m_s2 is None. tie_forces: each
+    standing wall's tie force filtered at 25 Hz. Either or both: one more run on a dense grid
+    (sampled). executor: where those runs go
     (concurrent_runs.threads(): side by side; None: one after another); every run's energy balance
     is checked, the main run's first."""
     pool = executor or InOrder()
     solver = scene_engine.engine_for(spec, solver)
     main = pool.submit(scene_engine.run, spec, record.t, record.ag, t_end=t_end, rtol=rtol, t_out=t_out, engine=solver,
                        histories=SCENE_HISTORIES)
-    floor = pool.submit(floor_acc.sample, spec, record, t_end, rtol, solver) if filter_floor else None
-    ties = pool.submit(tie_force.sample, spec, record, t_end, rtol, solver) if tie_forces else None
+    dense = pool.submit(sampled, spec, record, t_end, rtol, solver, filter_floor, tie_forces) \
+        if filter_floor or tie_forces else None
     scaled = [pool.submit(scaled_run, spec, record, 1.0 + sign * SENSITIVITY_PERTURBATION, t_end, rtol, solver)
               for sign in ((-1.0, 1.0) if check_sensitivity else ())]
     r = main.result()
     share = check_energy(r, record.name)
-    floor, ties = (f.result() if f else None for f in (floor, ties))
+    floor, ties = dense.result() if dense else (None, None)
     result = BuildingResult(record=record.name, storeys=storey_results(r, wall_params_list, floor, ties),
                             solver=r.engine,
                             work_ground_J_m=r.work_ground, work_damping_J_m=r.work_damping,
