@@ -52,12 +52,31 @@ def diaphragm(diaphragm, tie):
                  "storey or a top storey on rigid in-plane walls (give --building FILE for a multi-storey building)")
 
 
+BUILDING_LEFT_OUT = "the diaphragms' higher modes (one mass per metre of wall at the wall), vertical ground motion"
+STACKED = "each wall stands on the floor below and is tied to the diaphragm above"
+
+
+def coupled_building(n_storeys, storeys_with_walls, wall, diaphragm_law, source=None):
+    """Scene (c) as `rockingwall couple-building` builds it from its options: the Building FMU's
+    defaults, the paper's wall `wall` in the storeys given, diaphragms of the law numbered as the
+    FMU's diaphragmLaw (0 linear, 1 Bouc-Wen, 2 Bouc-Wen pinched); or, with `source`, the system of
+    that SSP file (wall and diaphragm_law None)."""
+    if source is not None:
+        return Scene("building", f"walls in a {n_storeys}-storey building (the system of {source}): {STACKED}",
+                     BUILDING_LEFT_OUT)
+    law = ("linear", "Bouc-Wen", "pinched Bouc-Wen")[diaphragm_law]
+    return Scene("building",
+                 f"walls in a {n_storeys}-storey building (the Building FMU's defaults; the paper's wall {wall} in "
+                 f"storeys {', '.join(map(str, storeys_with_walls))}): {STACKED}; {law} diaphragms with mass and "
+                 "damping", BUILDING_LEFT_OUT)
+
+
 def building(description):
     """Scene (c): the walls of a building (a building.description.Building)."""
     n = len(description.storeys)
     in_plane = "rigid in-plane walls" if description.rigid_in_plane else "flexible in-plane walls"
     return Scene("building",
-                 f"walls in a {n}-storey building ({description.name}): each wall stands on the floor below and is "
-                 f"tied to the diaphragm above; diaphragms with mass and damping, {in_plane}",
-                 "the diaphragms' higher modes (one mass per metre of wall at the wall), vertical ground motion"
+                 f"walls in a {n}-storey building ({description.name}): {STACKED}; diaphragms with mass and "
+                 f"damping, {in_plane}",
+                 BUILDING_LEFT_OUT
                  + (", the in-plane walls' flexibility (taken as rigid)" if description.rigid_in_plane else ""))

@@ -11,6 +11,8 @@ and the energy stop of the coupled runs (rockingwall.coupling.energy_guard):
 - the Building FMU's dashpots cd_i: a free vibration decays by the damping ratio they stand for,
   and with the defaults (0) it does not decay at all.
 """
+import json
+
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
@@ -104,3 +106,22 @@ def test_building_dashpot_is_the_damping_ratio(build_dir):
     assert decrement == pytest.approx(2 * np.pi * zeta / np.sqrt(1 - zeta ** 2), rel=0.01)
     _, undamped = free_vibration(build_dir, None)  # the default cd_1 = 0: no decay
     assert undamped.max() == pytest.approx(0.01, rel=1e-4) and undamped[-500:].max() == pytest.approx(0.01, rel=1e-3)
+
+
+def test_the_coupled_commands_name_their_scene(build_dir, tmp_path, capsys):
+    """`couple` and `couple-building` printed peaks without saying which scene they ran (every other
+    command names it and what it leaves out); couple's JSON summary had no scene either."""
+    out = tmp_path / "c.csv"
+    assert couple_command.main(["--t-end=1", f"--out={out}", f"--plot={tmp_path / 'c.png'}", "--m=400", "--k=30e3",
+                                "--Kd=1e6"]) == 0
+    printed = capsys.readouterr().out
+    scene = ("a wall tied (1e+06 N/m per m) to a diaphragm of 30 kN/m per m, 400 kg/m, 5 % damping, whose supports "
+             "(the in-plane walls) move with the ground")
+    assert f"scene: {scene}\nleft out: the floor's motion below the wall" in printed
+    assert json.loads(out.with_suffix(".json").read_text())["scene"]["description"] == scene
+    assert couple_building.main(["--record", "elcentro", "--pga", "0.05", "--t-end", "0.5"]) == 0
+    printed = capsys.readouterr().out
+    assert printed.startswith("scene: walls in a 2-storey building (the Building FMU's defaults; the paper's wall 1 "
+                              "in storeys 1, 2): each wall stands on the floor below and is tied to the diaphragm "
+                              "above; pinched Bouc-Wen diaphragms with mass and damping\nleft out: ")
+    assert "solved by co-simulation: Building.fmu and a RockingWall.fmu per wall, Jacobi, H = 0.001 s" in printed

@@ -1,4 +1,4 @@
-"""couple.py under hostile use: a slave that fails or an FMU that crashes ends the coupled run with a
+"""rockingwall couple under hostile use: a slave that fails or an FMU that crashes ends the coupled run with a
 non-zero exit and the real error first, under both masters; absurd macro steps are refused with
 their range; no extracted FMU is left in the temporary folder. The hostile FMUs are built here
 from the Diaphragm's own sources with one callback replaced, not stored as binaries. Each test is
@@ -112,7 +112,7 @@ def test_finding17_failing_slave_exits_nonzero_with_the_real_error(hostile, tmp_
                       "--diaphragm-fmu", hostile["failing"])
     assert proc.returncode == 1, (proc.returncode, proc.stdout[-1000:], proc.stderr[-2000:])
     first = proc.stderr.strip().splitlines()[0]
-    assert first.startswith("couple.py: error: ") and "cvode failed at t = 0.033" in first.lower(), proc.stderr[-2000:]
+    assert first.startswith("rockingwall couple: error: ") and "cvode failed at t = 0.033" in first.lower(), proc.stderr[-2000:]
     assert "fmi2Terminate" not in proc.stderr and "Traceback" not in proc.stderr
     assert list(private_tmp.iterdir()) == []
 
@@ -137,7 +137,7 @@ def test_finding17_absurd_macro_step_is_refused_with_the_range(tmp_path, capsys,
     assert couple_command.main(["--t-end", "0.5", f"--macro-step={H}", "--out", str(tmp_path / "c.csv"),
                         "--plot", str(tmp_path / "c.png")]) == 2
     err = capsys.readouterr().err
-    assert err.startswith(f"couple.py: error: --macro-step {float(H)!r} is outside [1e-06, t_end = 0.5] s"), err
+    assert err.startswith(f"rockingwall couple: error: --macro-step {float(H)!r} is outside [1e-06, t_end = 0.5] s"), err
     assert not (tmp_path / "c.csv").exists()
 
 

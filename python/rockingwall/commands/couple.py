@@ -38,13 +38,15 @@ import sys
 
 import numpy as np
 
-from .. import outputs, paths, records, strict_json
+from .. import outputs, paths, records, scenes, strict_json
+from ..building.description import Diaphragm
 from ..coupling import isolation, output, rules
 from ..coupling.slaves import CouplingError
 from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, RTOL_RANGE, T_END_RANGE,
                                        check_options, macro_step, parse_settings, unstable_message,
                                        wall_start_values)
 from ..names import HINGE_LAWS as LAWS
+from ..units import format_kd
 from .common import scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
@@ -165,32 +167,34 @@ def main(argv=None):
         masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
         results = {m: isolation.run_child(m, a) for m in masters}
     except (ValueError, OSError, CouplingError) as exc:
-        print(f"couple.py: error: {exc}", file=sys.stderr)
+        print(f"{isolation.ERROR}{exc}", file=sys.stderr)
         if step_warning:
-            print(f"couple.py: warning: {step_warning}", file=sys.stderr)
+            print(f"{isolation.PROG}: warning: {step_warning}", file=sys.stderr)
         return 2 if isinstance(exc, ValueError) and not isinstance(exc, CouplingError) else 1
     if step_warning:
-        print(f"couple.py: warning: {step_warning}", file=sys.stderr)
+        print(f"{isolation.PROG}: warning: {step_warning}", file=sys.stderr)
     unstable = unstable_masters(results, a)
     if unstable:
-        print(f"couple.py: error: {unstable}", file=sys.stderr)
+        print(f"{isolation.ERROR}{unstable}", file=sys.stderr)
         return 1
     r = results[masters[0]]
+    scene = scenes.diaphragm(Diaphragm(stiffness=a.k, mass=a.m, damping=a.zeta), a.Kd)
+    print(scene.text())
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     output.save_csv(r, a.out)
-    title = (f"Wall {a.wall} + diaphragm (m = {a.m:g} kg/m, k = {a.k:g} N/m2, zeta = {a.zeta:g}), "
-             f"K_d = {a.Kd:g} N/m2, " + ("monolithic" if a.monolithic else f"H = {a.macro_step:g} s"))
+    title = (f"Wall {a.wall} + diaphragm (m = {a.m:g} kg/m, k = {format_kd(a.k)}, zeta = {a.zeta:g}), "
+             f"K_d = {format_kd(a.Kd)}, " + ("monolithic" if a.monolithic else f"H = {a.macro_step:g} s"))
     output.plot(r, a.plot, title, results.get("libcosim") if len(masters) == 2 else None)
     for m in masters:
         report(m, results[m], a)
-    info = output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning)
+    info = dict(output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning), scene=scene.to_dict())
     summary_path = summary_file(a)
     outputs.write_atomic(summary_path, lambda tmp: strict_json.write(info, tmp), "--summary")
     print(f"energy: max |residual| {info['energy_residual_max']:.4g} J/m against "
           f"max |ground work| {info['ground_work_max']:.4g} J/m")
     if not info["energy_ok"]:
         share = info["energy_residual_share"]
-        print(f"couple.py: warning: ENERGY CHECK FAILED: the energy residual is "
+        print(f"{isolation.PROG}: warning: ENERGY CHECK FAILED: the energy residual is "
               f"{'unbounded' if share is None else f'{100 * share:.3g} %'} of the ground work, above "
               f"{100 * a.energy_share:g} %: the coupled result is not to be trusted (a smaller --macro-step, "
               f"or --monolithic)", file=sys.stderr)

@@ -37,7 +37,7 @@ import sys
 
 import numpy as np
 
-from .. import outputs, records
+from .. import outputs, records, scenes
 from ..building import building_file, cosim, ssp
 from ..building.scene import default_scene, run
 from ..coupling.slaves import CouplingError, CouplingUnstable
@@ -105,12 +105,15 @@ def main(argv=None):
         if a.building and a.from_ssp:
             raise ValueError("give --building or --from-ssp, not both")
         if a.building:
-            scene = cosim.scene_of(plausible(lambda: building_file.read(a.building), a))
+            description = plausible(lambda: building_file.read(a.building), a)
+            scene, named = cosim.scene_of(description), scenes.building(description)
         elif a.from_ssp:
             scene = ssp.read(a.from_ssp)
+            named = scenes.coupled_building(scene.n_storeys, [w.storey for w in scene.walls], None, None, a.from_ssp)
         else:
             walls = [int(x) for x in a.walls.split(",")] if a.walls else None
             scene = default_scene(a.storeys, walls, a.wall, a.Kd, a.diaphragm_law, a.hinge_law)
+            named = scenes.coupled_building(scene.n_storeys, [w.storey for w in scene.walls], a.wall, a.diaphragm_law)
         if a.ssp:
             ssp.write(scene, a.ssp)
             print(f"wrote {a.ssp}")
@@ -124,6 +127,8 @@ def main(argv=None):
     except (ValueError, OSError, CouplingError) as exc:  # refused input: 2; a failed run or file: 1
         print(f"couple-building: error: {exc}", file=sys.stderr)
         return 2 if isinstance(exc, ValueError) else 1
+    print(named.text() + f"\nsolved by co-simulation: Building.fmu and a RockingWall.fmu per wall, Jacobi, "
+                         f"H = {a.macro_step:g} s, inputs of order {a.order}")
     for w in scene.walls:
         print(f"wall in storey {w.storey}: peak s1 {r.peak(w.storey, 's1'):.5f} m, s2 {r.peak(w.storey, 's2'):.5f} m")
     e = r.energy_terms()

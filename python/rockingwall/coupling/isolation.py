@@ -17,6 +17,9 @@ from . import libcosim, monolithic
 from .slaves import CouplingError
 from .wall_diaphragm import CoupledResult, ground_motion, parse_settings, run_fmpy, wall_start_values
 
+PROG = "rockingwall couple"
+ERROR = f"{PROG}: error: "  # how a master's process says why it failed (commands.couple)
+
 
 def run_master_subprocess(master, args_list, out_json):
     """Run one master of `rockingwall couple` in a fresh process (an FMU that crashes, or libcosim aborting,
@@ -38,9 +41,9 @@ def child_failure(master, proc, fmus):
     when it wrote one, else the last error an FMU or libcosim logged, then how the process ended
     (a signal: an FMU crashed, or libcosim aborted on an error it threw from a thread)."""
     lines = [ln.strip() for ln in proc.stderr.splitlines() if ln.strip()]
-    own = [ln for ln in lines if ln.startswith("couple.py: error:")]
+    own = [ln for ln in lines if ln.startswith(ERROR)]
     if own:
-        return own[-1][len("couple.py: error: "):]
+        return own[-1][len(ERROR):]
     logged = [ln for ln in lines if "what():" in ln or "[error]" in ln]
     cause = logged[-1].split("what():")[-1].strip()[-500:] if logged else ""
     if proc.returncode < 0:

@@ -115,7 +115,7 @@ def close_slaves(slaves):
             if not s.failed:
                 s.terminate()
         except Exception as exc:  # noqa: BLE001  reported, not raised: the run's result stands
-            print(f"couple.py: warning: {s.fmu_path} ({s.instanceName}): fmi2Terminate failed: {exc}", file=sys.stderr)
+            print(f"rockingwall: warning: {s.fmu_path} ({s.instanceName}): fmi2Terminate failed: {exc}", file=sys.stderr)
         try:
             s.freeInstance()
         except Exception:  # noqa: BLE001
