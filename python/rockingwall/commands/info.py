@@ -11,9 +11,12 @@ def parser(sub):
 
 def main(args):
     rows = parameters()
+    ranges = [f"[{lo}, {hi}]" for _, _, _, lo, hi, _ in rows]
     width = max(len("name"), *(len(row[0]) for row in rows)) + 2
-    print(f"{'name':<{width}}{'unit':<7}{'default':>9}  {'range':<18}description")
-    for name, unit, start, lo, hi, desc in rows:
-        print(f"{name:<{width}}{unit:<7}{start:>9}  {f'[{lo}, {hi}]':<18}{desc}")
-    print("\nUnits: N/m2 is N/m per metre of wall. Values may be given with a unit: '30kN/m/m', '230mm', '14.08kN/m'.")
+    span = max(len("range"), *map(len, ranges)) + 2  # a column as wide as its widest range
+    print(f"{'name':<{width}}{'unit':<7}{'default':>9}  {'range':<{span}}description")
+    for (name, unit, start, _, _, desc), limits in zip(rows, ranges):
+        print(f"{name:<{width}}{unit:<7}{start:>9}  {limits:<{span}}{desc}")
+    print("\nUnits: N/m2 is N/m per metre of wall. Values may be given with a unit: '30kN/m/m', '230mm', '14.08kN/m', "
+          "a ratio (unit 1) in percent: '20 %'.")
     return 0
