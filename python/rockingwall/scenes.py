@@ -49,7 +49,7 @@ def diaphragm(diaphragm, tie):
                  f"a wall tied ({tie:.3g} N/m per m) to a diaphragm of {format_kd(d.stiffness)}, {d.mass:.4g} kg/m, "
                  f"{100 * d.damping:.3g} % damping, whose supports (the in-plane walls) move with the ground",
                  "the floor's motion below the wall and the in-plane walls' flexibility: right for a single "
-                 "storey or a top storey on rigid in-plane walls (give --building FILE for a multi-storey building)")
+                 "storey or a top storey on rigid in-plane walls (a multi-storey building: rockingwall building FILE)")
 
 
 BUILDING_LEFT_OUT = "the diaphragms' higher modes (one mass per metre of wall at the wall), vertical ground motion"
