@@ -66,7 +66,8 @@ def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
 def fragility_figure(frag, im_name, column=KD_COLUMN):
     """One panel per limit state: the fitted curve of every group in its own colour (solid: over
     the records; dashed: over the records and the ensembles' parameters), its 90 % band of
-    medians, and a legend entry for every group, those without an estimate said so."""
+    medians, and a legend entry for every group, those without an estimate or without an
+    identified dispersion (beta 0: the data do not overlap) said so."""
     names = list(dict.fromkeys(frag.limit_state))
     fig, axes = plt.subplots(1, len(names), figsize=(3.4 * len(names), 3.6), squeeze=False, sharey=True)
     palette = colours(frag[column]) if column in frag else {np.nan: "C0"}
@@ -87,6 +88,8 @@ def fragility_figure(frag, im_name, column=KD_COLUMN):
                 continue
             p = (np.log(x / r["median"]) > 0).astype(float) if r["beta"] == 0 else special.ndtr(
                 np.log(x / r["median"]) / r["beta"])
+            if r["beta"] == 0:  # the data do not overlap: a step anywhere in the gap, not a known median
+                label += ": beta not identified"
             ax.plot(x, p, color=colour, ls="-" if solid else "--", lw=1.2, label=label)
             if solid and np.isfinite(r["median_5"]) and np.isfinite(r["median_95"]):
                 ax.axvspan(r["median_5"], r["median_95"], color=colour, alpha=0.12)

@@ -42,6 +42,19 @@ def test_finding2_fragility_colours_are_keyed_to_kd_in_every_panel(tmp_path, fig
     assert [line.get_color() for line in drawn] == list(colour["200"])
 
 
+def test_a_fit_without_dispersion_says_so_in_the_legend(tmp_path, figures):
+    """Where no run overlaps (every run below a PGA short of the limit, every run above past it) the
+    fit has beta 0 and its median is anywhere in the gap. The printed report says so; the plot drew
+    the step with a plain label, which pasted into a report reads as a known median."""
+    rows = [dict(Kd_kN_per_m_per_m=kd, limit_state="collapsed", records=4, median=median, median_5=0.28,
+                 median_95=0.4, beta=beta, beta_5=np.nan, beta_95=np.nan, warnings="") for kd, median, beta in
+            ((20.0, 0.4, 0.0), (200.0, 0.387, 0.38))]
+    assessment_plots.fragility(pd.DataFrame(rows), "PGA [g]", tmp_path / "fragility.png")
+    (fig,) = figures
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "K_d = 20 kN/m per m: beta not identified", "K_d = 200 kN/m per m"]
+
+
 def write_csv(path, record, factor):
     np.savetxt(path, np.column_stack([record.t, record.ag * factor]), delimiter=",", header="time,acc", comments="")
 
