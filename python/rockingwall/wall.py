@@ -21,6 +21,16 @@ KD_PLAUSIBLE = (5.0e2, 1.0e10)        # N/m per m: a very flexible timber floor 
 UNIT_WEIGHT_PLAUSIBLE = (10e3, 30e3)  # N/m^3: W/(b h) of masonry (brick, stone, block)
 
 
+def unit_weight_slip(W, b, h):
+    """What W/(b h) says of W's unit where it is not a masonry unit weight, else None."""
+    gamma = W / (b * h)
+    if UNIT_WEIGHT_PLAUSIBLE[0] <= gamma <= UNIT_WEIGHT_PLAUSIBLE[1]:
+        return None
+    return (f"W/(b h) = {gamma / 1e3:.3g} kN/m^3 is not a masonry unit weight "
+            f"({UNIT_WEIGHT_PLAUSIBLE[0] / 1e3:g}-{UNIT_WEIGHT_PLAUSIBLE[1] / 1e3:g} kN/m^3): "
+            "W is the weight per metre of wall in N/m")
+
+
 class PlausibilityWarning(UserWarning):
     """A value the model accepts but a masonry wall rarely has: check its unit."""
 
@@ -77,12 +87,8 @@ class Wall:
         if p["support"] == names.SUPPORTS["flexibleTop"] and kd > 0 and not KD_PLAUSIBLE[0] <= kd <= KD_PLAUSIBLE[1]:
             out.append(f"Kd = {kd:g} N/m per m is outside [{KD_PLAUSIBLE[0]:g}, {KD_PLAUSIBLE[1]:g}] N/m per m; "
                        "did you mean kN/m per m (write '30kN/m/m')?")
-        gamma = p["W"] / (p["b"] * p["h"])
-        if not UNIT_WEIGHT_PLAUSIBLE[0] <= gamma <= UNIT_WEIGHT_PLAUSIBLE[1]:
-            out.append(f"W/(b h) = {gamma / 1e3:.3g} kN/m^3 is not a masonry unit weight "
-                       f"({UNIT_WEIGHT_PLAUSIBLE[0] / 1e3:g}-{UNIT_WEIGHT_PLAUSIBLE[1] / 1e3:g} kN/m^3): "
-                       "W is the weight per metre of wall in N/m")
-        return out
+        slip = unit_weight_slip(p["W"], p["b"], p["h"])
+        return out + ([slip] if slip else [])
 
     def statics(self):
         """The C model's statics: Delta_u and F_r per direction, the hinge capacities per side

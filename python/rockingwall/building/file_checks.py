@@ -2,7 +2,7 @@
 model's ranges (an error: the model cannot run it), and the per-metre numbers against what
 masonry buildings have (a warning naming the likely unit slip: a bare number is SI, so
 `W = 25.2` is 25.2 N/m and `stiffness = 20` is 20 N/m per m). building_file names the lines."""
-from ..wall import KD_PLAUSIBLE, PLAUSIBLE, UNIT_WEIGHT_PLAUSIBLE, Wall
+from ..wall import KD_PLAUSIBLE, PLAUSIBLE, Wall, unit_weight_slip
 
 MASS_PLAUSIBLE = (10.0, 1e5)  # kg/m per metre of wall: a light roof's strip .. a heavy concrete floor's
 
@@ -22,11 +22,9 @@ def implausible(building, i):
     buildings rarely have."""
     s, out = building.storeys[i], []
     w, d = s.wall, s.diaphragm
-    gamma = w.W / (w.b * s.height)
-    if not UNIT_WEIGHT_PLAUSIBLE[0] <= gamma <= UNIT_WEIGHT_PLAUSIBLE[1]:
-        out.append((["wall", "W"], f"W/(b h) = {gamma / 1e3:.3g} kN/m^3 is not a masonry unit weight "
-                                   f"({UNIT_WEIGHT_PLAUSIBLE[0] / 1e3:g}-{UNIT_WEIGHT_PLAUSIBLE[1] / 1e3:g} kN/m^3): W is "
-                                   "the weight per metre of wall, in N/m unless it has a unit (\"25.2 kN/m\")"))
+    slip = unit_weight_slip(w.W, w.b, s.height)
+    if slip:
+        out.append((["wall", "W"], slip + ' unless it has a unit ("25.2 kN/m")'))
     psi_high = PLAUSIBLE["psi"][1]
     if 2.0 * w.overburden / w.W > psi_high:
         out.append((["wall", "overburden"], f"the overburden {w.overburden:g} N/m is over {psi_high / 2:g} times the "
