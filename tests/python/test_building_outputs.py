@@ -86,3 +86,25 @@ def test_a_collapsed_wall_is_drawn_up_to_its_collapse(tmp_path, capsys, figures)
     legend = [t.get_text() for t in ax.get_legend().get_texts()]
     assert legend[-1] == f"collapsed at {alone['t_collapse_s']:.2f} s" and legend[0] == "s1, mid-height [mm]"
     assert "scene: a wall tied (1e+08 N/m per m) to a diaphragm of 20 kN/m per m, 200 kg/m" in run_fig.get_suptitle()
+
+
+def test_a_collapsed_walls_columns_are_empty_after_its_collapse(tmp_path, capsys):
+    """`building --out` wrote a collapsed wall's held state on to the record's end: at 1 g of El
+    Centro the upper wall's s1 sat at 230 mm (its thickness) from 3.46 s to 80 s, with a tie
+    force still written for a wall that pulls on none, where `run` leaves those cells empty and
+    the table prints '-'. Now the wall's s1, s2 and tie force are empty after its collapse and
+    written up to it; its diaphragm and floor, which still move, are written to the end. The
+    assessor's house at 0.3 g, where the upper wall collapses and the lower one stands."""
+    house = tmp_path / "house.toml"
+    house.write_text(HOUSE.format(tie="1e8"))
+    assert main(["building", str(house), "elcentro", "--pga", "0.3", "--json", "--out", str(tmp_path / "h")]) == 0
+    lower, upper = json.loads(capsys.readouterr().out)["runs"][0]["storeys"]
+    assert upper["collapsed"] and not lower["collapsed"]
+    history = pd.read_csv(tmp_path / "h" / "El_Centro_1940_at_0.3_g.csv")
+    after = history["time"] > upper["t_collapse_s"]
+    assert 0 < after.sum() < len(history) - 100
+    for name in ("s1_2", "s2_2", "tie_force_25Hz_2"):
+        assert history.loc[after, name].isna().all() and history.loc[~after, name].notna().all()
+    for name in ("diaphragm_2", "floor_acc_25Hz_2", "s1_1", "s2_1", "diaphragm_1", "tie_force_25Hz_1"):
+        assert history[name].notna().all()
+    assert history.loc[after, "diaphragm_2"].abs().max() > 1e-3  # the roof still moves

@@ -1,6 +1,7 @@
 """A building's response for people and programs: the table `rockingwall building` prints, its
 strict JSON (null, never NaN), the time histories as CSV and a plot per record."""
 import numpy as np
+import pandas as pd
 
 from .. import scenes, strict_json
 from .floor_acc import CUTOFF_HZ
@@ -92,21 +93,27 @@ def to_json(building, results):
                    "runs": [r.to_dict() for r in results]})
 
 
-def history_csv(histories, path):
+def history_csv(histories, path, t_collapse=()):
     """time [s] and, per storey, s1 and s2 [m] (relative to the wall's base), the diaphragm [m]
     (relative to its supports), and where computed the absolute acceleration of the floor the wall
     stands on [m/s2] and the tie's force on the diaphragm [N/m], both low-pass filtered at
     floor_acc.CUTOFF_HZ (monolithic.Histories): raw on this grid, the tie's ringing would alias
-    into them."""
+    into them. t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
+    s1, s2 and tie force are empty cells, as `rockingwall run` writes them: the run holds the state
+    the wall collapsed at, which is no displacement, and a collapsed wall pulls on no tie."""
     scene = histories.scene
     n = scene.s1.shape[1]
     per_storey = {"s1": scene.s1, "s2": scene.s2, "diaphragm": scene.diaphragm}
     for name, filtered in (("floor_acc", histories.floor_acc), ("tie_force", histories.tie_force)):
         if filtered is not None:
             per_storey[f"{name}_{CUTOFF_HZ:g}Hz"] = filtered
-    columns = [scene.t] + [a[:, i] for i in range(n) for a in per_storey.values()]
-    names = ["time"] + [f"{name}_{i + 1}" for i in range(n) for name in per_storey]
-    np.savetxt(path, np.column_stack(columns), delimiter=",", header=",".join(names), comments="", fmt="%.9g")
+    table = pd.DataFrame({"time": scene.t} | {f"{name}_{i + 1}": np.asarray(a[:, i], dtype=float)
+                                              for i in range(n) for name, a in per_storey.items()})
+    for i, t_c in enumerate(t_collapse):
+        if t_c is not None and np.isfinite(t_c):
+            gone = [f"{name}_{i + 1}" for name in per_storey if name in ("s1", "s2") or name.startswith("tie_force")]
+            table.loc[table["time"] > t_c, gone] = np.nan
+    table.to_csv(path, index=False, float_format="%.9g", na_rep="")
 
 
 def draw_wall(ax, t, y, t_collapse, **style):
