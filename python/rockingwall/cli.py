@@ -26,7 +26,9 @@ def build_parser():
         f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"rockingwall {__version__}")
-    sub = p.add_subparsers(title="commands", metavar="{run,assess,building,info," + ",".join(DELEGATED) + "}")
+    # cc.Parser: a subcommand's description keeps its lines (its examples one command a line)
+    sub = p.add_subparsers(title="commands", parser_class=cc.Parser,
+                           metavar="{run,assess,building,info," + ",".join(DELEGATED) + "}")
     run.parser(sub)
     assess.parser(sub)
     building.parser(sub)
