@@ -27,8 +27,9 @@ class Scene:
         return {"name": self.key, "description": self.title, "leaves_out": self.leaves_out}
 
 
-def paper(params):
-    """The scene of a wall on its own (rockingwall run/assess without a diaphragm mass)."""
+def paper(params, kd_text=None):
+    """The scene of a wall on its own (rockingwall run/assess without a diaphragm mass); kd_text
+    names K_d where it is not params["Kd"] alone (a sweep's, run by run)."""
     support = int(params["support"])
     if support == SUPPORTS["parapet"]:
         return Scene("paper", "a parapet (free top) on the ground",
@@ -36,7 +37,8 @@ def paper(params):
     if support == SUPPORTS["simplySupported"]:
         return Scene("paper", "a wall pinned at its top to a fixed point (a rigid diaphragm on the ground's motion)",
                      "the diaphragm's flexibility and mass and the floor's motion (give --Kd and --diaphragm-mass)")
-    return Scene("paper", f"the paper's: the top spring K_d = {format_kd(params['Kd'])} ends at a fixed point",
+    kd_text = kd_text or f"K_d = {format_kd(params['Kd'])}"
+    return Scene("paper", f"the paper's: the top spring {kd_text} ends at a fixed point",
                  "the diaphragm's mass and damping and the floor's motion: the diaphragm is a massless spring "
                  "and the wall stands on the ground (give --diaphragm-mass for a diaphragm with mass, "
                  "--building FILE for the wall in its building)")
@@ -80,3 +82,12 @@ def building(description):
                  f"damping, {in_plane}",
                  BUILDING_LEFT_OUT
                  + (", the in-plane walls' flexibility (taken as rigid)" if description.rigid_in_plane else ""))
+
+
+def swept(model):
+    """The scene of a sweep's runs of one model (its results' column): a storey of a building sweep
+    (model 'building'), else the wall on its own under each run's K_d."""
+    if model == "building":
+        return Scene("building", f"the wall in its building (the sweep's building file): {STACKED}; "
+                     "diaphragms with mass and damping (K_d: the diaphragm on top of the storey)", BUILDING_LEFT_OUT)
+    return paper({"support": SUPPORTS[model], "Kd": None}, kd_text="K_d (each run's)")

@@ -101,3 +101,44 @@ def test_a_fragility_the_data_cannot_shape_says_so(tmp_path, capsys):
     assert line.get_linestyle() == "--" and fits[5.0].gap == (0.3, 0.4)
     assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
         "K_d = 5 kN/m per m: median anywhere in [0.3, 0.4] g, beta not identified"]
+
+
+def test_ida_names_the_wall_and_the_scene_its_runs_ran_in(tmp_path, capsys):
+    """ida printed a fragility and drew three plots without saying which wall or scene they were of:
+    a building storey's fragility read like one of the paper's wall on its massless spring. The
+    printout and each plot now name the wall and the scene (and the printout what it leaves out);
+    a building's storey is chosen by 'storey 2' or 2 alone, where the whole name
+    ('house: storey 2') was needed."""
+    path = synthetic_results(tmp_path)
+    assert ida_command.main([str(path), "--out", str(tmp_path / "wall")]) == 0
+    out = capsys.readouterr().out
+    assert "wall: 1 (flexibleTop, dohertyHinge)\nscene: the paper's: the top spring K_d (each run's) ends at a " \
+           "fixed point\nleft out: the diaphragm's mass and damping and the floor's motion" in out
+    assert "(rockingwall sweep --building FILE: the walls in their building)" in out
+    d = pd.read_csv(path)
+    d["wall"], d["model"] = d.record.map({"r1": "house: storey 1", "r2": "house: storey 2"}), "building"
+    d.to_csv(path, index=False, lineterminator="\n")
+    for chosen in ("storey 2", "2"):
+        assert ida_command.main([str(path), "--wall", chosen, "--out", str(tmp_path / "house")]) == 0
+        out = capsys.readouterr().out
+        assert out.startswith("wall: house: storey 2 (building, dohertyHinge)\nscene: the wall in its building")
+        assert "left out: the diaphragms' higher modes" in out
+    assert ida_command.main([str(path), "--wall", "3", "--out", str(tmp_path / "house")]) == 2
+    assert "no successful runs with --wall 3" in capsys.readouterr().err
+    fig, _ = ida.fragility_figure(ida.load(path, "2"))
+    assert "house: storey 2; scene: the wall in its building" in fig._suptitle.get_text().replace("\n", " ")
+
+
+def test_a_gap_of_one_level_is_a_median_at_it(tmp_path):
+    """Runs that all stand below 0.3 g, all collapse above it and are mixed at 0.3 g leave beta
+    unidentified with the median at 0.3 g: the legend said 'median anywhere in [0.3, 0.3] g'; it
+    now says 'median at 0.3 g', as the printed warning does."""
+    path = synthetic_results(tmp_path)
+    d = pd.read_csv(path)
+    d = d[d.kd_kN == 5.0]
+    d["collapsed"] = (d.pga_g > 0.3) | ((d.pga_g == 0.3) & (d.record == "r2"))
+    d.to_csv(path, index=False, lineterminator="\n")
+    fig, fits = ida.fragility_figure(ida.load(path))
+    assert fits[5.0].gap == (0.3, 0.3)
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "K_d = 5 kN/m per m: median at 0.3 g, beta not identified"]

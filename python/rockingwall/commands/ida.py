@@ -22,8 +22,8 @@ def main(argv=None):
     p = argparse.ArgumentParser(prog="rockingwall ida", description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("results", help="results CSV of `rockingwall sweep`")
     p.add_argument("--out", default="results")
-    p.add_argument("--wall", help="the wall column of the results: a preset (1, paper2) or a [walls.NAME] name "
-                                  "(default: the file's only wall)")
+    p.add_argument("--wall", help="the wall column of the results: a preset (1, paper2), a [walls.NAME] name "
+                                  "or a building's storey ('storey 2' or 2) (default: the file's only wall)")
     p.add_argument("--model", help="the model column (default: the chosen wall's only model; a building's "
                                    "storeys: building)")
     p.add_argument("--hinge-law", help="the hinge_law column (default: the only one of the chosen runs)")
@@ -46,6 +46,7 @@ def main(argv=None):
     ida.ida_curves(sub, out / "ida_curves.png")
     fits = ida.fragility_plot(sub, out / "fragility.png")
     ida.kd_map(d, out / "kd_map.png")
+    print(f"wall: {d.wall.iloc[0]} ({d.model.iloc[0]}, {d.hinge_law.iloc[0]})\n{ida.scene(d).text()}")
     print(f"{len(d)} runs, {d.record.nunique()} records; collapse fragility against PGA (lognormal MLE):")
     print("\n".join(ida.fragility_table(fits, d.record.nunique())))
     print(f"wrote {out / 'ida_curves.png'}, {out / 'fragility.png'}, {out / 'kd_map.png'}")

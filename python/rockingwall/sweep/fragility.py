@@ -50,9 +50,15 @@ def no_estimate_message(status, what):
     return f"the runs are all at one intensity: the fragility of {what} has no estimate (beta not identified)"
 
 
+def gap_median(gap, digits=2):
+    """Where the median of a fit whose data do not overlap lies, in words: 'at x' where the gap is
+    one level (whose runs are mixed), else 'anywhere in [lo, hi]'."""
+    return f"at {gap[0]:.{digits}g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.{digits}g}, {gap[1]:.{digits}g}]"
+
+
 def gap_message(gap, what):
     """What a fit whose data do not overlap (Fragility.gap) can say, in words naming `what`."""
-    where = f"at {gap[0]:.2g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.2g}, {gap[1]:.2g}]"
+    where = gap_median(gap)
     return (f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does: the data do not "
             f"overlap, so beta is not identified (0) and the median is {where}")
 

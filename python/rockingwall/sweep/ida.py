@@ -3,14 +3,16 @@ file of a sweep (one wall, model and hinge law at a time): the runs read back, a
 plots of `rockingwall ida`. A run that collapsed has no meaningful peak (the run stops at the
 instability point): the IDA curves end there with a cross, and the medians count it as larger
 than any peak."""
+import dataclasses
 import sys
+import textwrap
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .. import outputs
+from .. import outputs, scenes
 from . import fragility, store
 from .rows import ERROR, OK, RETRIED
 
@@ -46,11 +48,29 @@ def load(path, wall=None, model=None, hinge_law=None):
         values = sorted(d[column].unique())
         if given is None and len(values) > 1:
             raise ValueError(f"{path}: runs of {len(values)} {plural} ({', '.join(values)}): choose one with {option}")
-        given = values[0] if given is None else str(given)
+        given = values[0] if given is None else _named(values, str(given))
         if given not in values:
             raise ValueError(f"{path}: no successful runs with {option} {given} (here: {', '.join(values)})")
         d = d[d[column] == given]
     return d
+
+
+def scene(d):
+    """The scene of a frame load() chose (one wall and model): scenes.swept's."""
+    found = scenes.swept(d.model.iloc[0])
+    if found.key == "paper":  # a sweep's remedy is its own option, not run's
+        found = dataclasses.replace(found, leaves_out=found.leaves_out.split(" (give ")[0]
+                                    + " (rockingwall sweep --building FILE: the walls in their building)")
+    return found
+
+
+def _named(values, given):
+    """The value `given` names: itself, or the one storey of a building sweep's walls it names on its
+    own ('storey 2' or '2' for 'two-storey brick, timber floors: storey 2'); else `given` unchanged."""
+    if given in values:
+        return given
+    named = [v for v in values if v.rpartition(": ")[2] in (given, f"storey {given}")]
+    return named[0] if len(named) == 1 else given
 
 
 def ida_curves(d, path):
@@ -77,10 +97,18 @@ def ida_curves(d, path):
             if j == 0:
                 ax.set_ylabel("PGA [g]")
     axes[0, 0].legend(loc="upper left", fontsize=8)
-    fig.suptitle("IDA curves: one line per record component, x = collapse", fontsize=10)
+    _name_scene(fig, d, "IDA curves: one line per record component, x = collapse")
     fig.tight_layout()
     outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)
+
+
+def _name_scene(fig, d, head="", fontsize=8):
+    """The figure's title: `head` (a line) over the wall and the scene its runs ran in, wrapped to
+    the figure's width (about 0.55 fontsize points a character)."""
+    width = max(40, int(fig.get_figwidth() * 72 / (0.55 * fontsize)))
+    lines = ([head] if head else []) + textwrap.wrap(f"{d.wall.iloc[0]}; scene: {scene(d).title}", width)
+    fig.suptitle("\n".join(lines), fontsize=fontsize)
 
 
 def fragility_table(fits, n_records):
@@ -116,14 +144,15 @@ def fragility_figure(d):
             ax.plot(x, f(x), color=color, label=f"K_d = {kd:g} kN/m per m: median {f.theta:.3f} g, beta {f.beta:.2f}")
         else:
             ax.axvspan(*f.gap, color=color, alpha=0.12, lw=0)
-            ax.plot(x, f(x), "--", color=color, label=f"K_d = {kd:g} kN/m per m: median anywhere in [{f.gap[0]:.3g}, "
-                                                       f"{f.gap[1]:.3g}] g, beta not identified")
+            ax.plot(x, f(x), "--", color=color, label=f"K_d = {kd:g} kN/m per m: median {fragility.gap_median(f.gap, 3)} g, "
+                                                       "beta not identified")
     ax.set_xlabel("PGA [g]")
     ax.set_ylabel("P(collapse)")
     ax.set_ylim(-0.02, 1.02)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="lower right")
     ax.set_title("Collapse fragility (dots: fraction of records; lines: lognormal MLE)", fontsize=10)
+    _name_scene(fig, d, fontsize=7)
     fig.tight_layout()
     return fig, fits
 
@@ -162,6 +191,7 @@ def kd_map(d, path):
         ax.set_title(f"median peak {label} [mm]; grey: median run collapses", fontsize=9)
         fig.colorbar(mesh, ax=ax)
     axes[0].set_ylabel("PGA [g]")
+    _name_scene(fig, d)
     fig.tight_layout()
     outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
     plt.close(fig)
