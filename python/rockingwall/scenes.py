@@ -90,4 +90,6 @@ def swept(model):
     if model == "building":
         return Scene("building", f"the wall in its building (the sweep's building file): {STACKED}; "
                      "diaphragms with mass and damping (K_d: the diaphragm on top of the storey)", BUILDING_LEFT_OUT)
-    return paper({"support": SUPPORTS[model], "Kd": None}, kd_text="K_d (each run's)")
+    alone = paper({"support": SUPPORTS[model], "Kd": None}, kd_text="K_d (each run's)")
+    return dataclasses.replace(alone, leaves_out=alone.leaves_out.split(" (")[0]
+                               + " (rockingwall sweep --building FILE: the walls in their building)")

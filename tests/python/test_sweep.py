@@ -137,8 +137,14 @@ def test_dry_run_prints_the_plan_and_runs_nothing(suite_dir, tmp_path, capsys):
     assert sweep.main(["--suite", str(suite_dir), "--kd", "5", "50", "500", "--pga", "0.1", "0.2",
                        "--models", "flexibleTop", "simplySupported", "--out", str(out), "--dry-run"]) == 0
     # flexibleTop: 2 records x 3 K_d x 2 PGAs; simplySupported has no spring: 2 x 2
-    assert "16 runs" in capsys.readouterr().out
+    printed = capsys.readouterr().out
+    assert "16 runs" in printed
     assert not out.exists()
+    # each model's scene, named as every output names it (the plan named none)
+    assert "scene: the paper's: the top spring K_d (each run's) ends at a fixed point\nleft out: the diaphragm's " \
+           "mass and damping and the floor's motion: the diaphragm is a massless spring and the wall stands on the " \
+           "ground (rockingwall sweep --building FILE: the walls in their building)" in printed
+    assert "scene: a wall pinned at its top to a fixed point" in printed
 
 
 def test_fema_farfield_conversion(tmp_path):

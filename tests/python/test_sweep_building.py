@@ -86,3 +86,12 @@ def test_a_bad_building_file_is_refused_with_its_line(tmp_path, capsys):
     bad.write_text('[[storey]]\nheight = "3 m"\n')
     assert sweep(bad, tmp_path / "out.csv", "--dry-run") == 2
     assert f"{bad}:1: storey 1.wall is missing" in capsys.readouterr().err
+
+
+def test_the_plan_names_the_building_scene(building, tmp_path, capsys):
+    """A building sweep's plan echoed the building but not the scene its runs are solved in."""
+    assert sweep(building, tmp_path / "out.csv", "--dry-run") == 0
+    printed = capsys.readouterr().out
+    assert "scene: walls in a 2-storey building (two-storey brick, timber floors): each wall stands on the floor " \
+           "below and is tied to the diaphragm above" in printed
+    assert "left out: the diaphragms' higher modes" in printed

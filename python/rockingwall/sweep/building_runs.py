@@ -11,6 +11,7 @@ import warnings
 
 import numpy as np
 
+from .. import scenes
 from ..building import building_file
 from ..wall import PlausibilityWarning
 from .rows import BUILDING_MODEL as MODEL
@@ -63,7 +64,8 @@ def expand(grid, suite):
 def describe(grid, suite, specs):
     building, _ = _quiet(read_text, grid["building"])
     levels = f"target PGA [g] {grid['pga_g']}" if grid["pga_g"] else f"scale factors {grid['scales']}"
-    return "\n".join([building.describe(), f"records: {len(suite)} from '{grid['suite']}'", levels,
+    return "\n".join([building.describe(), scenes.building(building).text(),
+                      f"records: {len(suite)} from '{grid['suite']}'", levels,
                       f"{len(specs)} runs ({len(building.storeys)} storeys per record and intensity, "
                       "one building solution each)"])
 

@@ -6,6 +6,7 @@ import math
 import tomllib
 
 
+from .. import scenes
 from ..names import HINGE_LAWS, PAPER_WALLS, SUPPORTS as MODELS, paper_wall
 from . import suites
 from .run_spec import RunSpec
@@ -181,4 +182,4 @@ def describe(cfg, suite, specs):
              f"records: {len(suite)} from '{cfg['suite']}'" + (f" ({len(bad)} unreadable: {bad})" if bad else ""),
              levels,
              f"{len(specs)} runs, {sum(s.stop_time for s in specs):.0f} s of simulated time"]
-    return "\n".join(lines)
+    return "\n".join(lines + [scenes.swept(model).text() for model in dict.fromkeys(cfg["models"])])

@@ -3,7 +3,6 @@ file of a sweep (one wall, model and hinge law at a time): the runs read back, a
 plots of `rockingwall ida`. A run that collapsed has no meaningful peak (the run stops at the
 instability point): the IDA curves end there with a cross, and the medians count it as larger
 than any peak."""
-import dataclasses
 import sys
 import textwrap
 
@@ -57,11 +56,7 @@ def load(path, wall=None, model=None, hinge_law=None):
 
 def scene(d):
     """The scene of a frame load() chose (one wall and model): scenes.swept's."""
-    found = scenes.swept(d.model.iloc[0])
-    if found.key == "paper":  # a sweep's remedy is its own option, not run's
-        found = dataclasses.replace(found, leaves_out=found.leaves_out.split(" (give ")[0]
-                                    + " (rockingwall sweep --building FILE: the walls in their building)")
-    return found
+    return scenes.swept(d.model.iloc[0])
 
 
 def _named(values, given):
