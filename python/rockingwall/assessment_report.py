@@ -1,6 +1,6 @@
 """What `rockingwall assess` prints: the study echoed (wall or building, K_d, Delta_u, limit
 states, scene, ensemble), the cases as a table (text or Markdown), the fragilities with their
-intervals to two significant figures ('unbounded' where the bootstrap cannot bound an end) and
+intervals to two significant figures, rounded outward ('unbounded' where the bootstrap cannot bound an end) and
 the resurrections."""
 import math
 
@@ -24,10 +24,18 @@ def table_rows(cases, states, column=KD_COLUMN):
     return rows
 
 
-def _end(x, zero_unbounded=False):
+def _end(x, up, zero_unbounded=False):
+    """An interval's end to two significant figures, rounded outward (down for the lower end, up
+    for the upper): rounded to nearest, the upper end of 0.514's interval printed 0.51, below the
+    median 0.514 printed beside it."""
     if not math.isfinite(x) or (zero_unbounded and x == 0):
         return "unbounded"
-    return f"{x:.2g}"
+    if x == 0:
+        return "0"
+    step = 10.0 ** (math.floor(math.log10(abs(x))) - 1)
+    units = x / step
+    units = round(units) if abs(units - round(units)) < 1e-9 * abs(units) else (math.ceil if up else math.floor)(units)
+    return f"{units * step:.2g}"
 
 
 def fragility_line(r, column):
@@ -39,8 +47,8 @@ def fragility_line(r, column):
     if np.isnan(r["median_5"]):
         interval = "", ""
     else:
-        interval = (f" [{_end(r['median_5'], True)}, {_end(r['median_95'], True)}]",
-                    f" [{_end(r['beta_5'])}, {_end(r['beta_95'])}]")
+        interval = (f" [{_end(r['median_5'], False, True)}, {_end(r['median_95'], True, True)}]",
+                    f" [{_end(r['beta_5'], False)}, {_end(r['beta_95'], True)}]")
     beta = "0 (not identified)" if r["beta"] == 0 else f"{r['beta']:.2g}{interval[1]}"
     line = f"{head}: median {r['median']:.3g}{interval[0]}, beta {beta}, {r['records']} records"
     return line + (f"\n    warning: {r['warnings']}" if r["warnings"] else "")

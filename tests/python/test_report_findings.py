@@ -144,6 +144,17 @@ def test_finding5_intervals_print_two_significant_figures_and_unbounded(tmp_path
     assert "median 0.387 [0.3, 0.5]" in line and "beta 0.76 [0.072, unbounded]" in line
 
 
+def test_an_interval_printed_to_two_figures_still_holds_its_median(tmp_path, capsys):
+    """assess printed 'median 0.514 [0.4, 0.51]': the bootstrap's upper end 0.514, rounded to the
+    nearest 0.01, fell below the median printed beside it. The ends are now rounded outward."""
+    from rockingwall import assessment_report
+    row = dict(Kd_kN_per_m_per_m=200.0, limit_state="collapsed", over="records and parameters", records=2,
+               median=0.51386, median_5=0.40472, median_95=0.51386, beta=0.26647, beta_5=0.16951, beta_95=0.26647,
+               warnings="")
+    line = assessment_report.fragility_line(row, "Kd_kN_per_m_per_m")
+    assert "median 0.514 [0.4, 0.52]" in line and "beta 0.27 [0.16, 0.27]" in line
+
+
 def test_finding5_every_json_the_package_writes_is_strict():
     """json.dump writes NaN, which is not JSON: every writer goes through rockingwall.strict_json
     (json.dumps stays only where the text is hashed, never written: the sweep's run key)."""
