@@ -55,7 +55,7 @@ def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
     ax.set_xlim(left=0)
     ax.set_xlabel("peak s1, mid-height [mm]  (x: collapse; bands: the ensemble's 16-84 %)")
     ax.set_ylabel(im_name)
-    ax.set_title("\n".join(textwrap.wrap(title, 90)), fontsize=7)
+    ax.set_title(_wrapped(title, 90), fontsize=7)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
@@ -63,7 +63,12 @@ def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
     plt.close(fig)
 
 
-def fragility_figure(frag, im_name, column=KD_COLUMN):
+def _wrapped(text, width):
+    """Each line of text wrapped to width characters."""
+    return "\n".join(part for line in text.splitlines() for part in textwrap.wrap(line, width))
+
+
+def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
     """One panel per limit state: the fitted curve of every group in its own colour (solid: over
     the records; dashed: over the records and the ensembles' parameters), its 90 % band of
     medians, and a legend entry for every group, those without an estimate or without an
@@ -98,11 +103,13 @@ def fragility_figure(frag, im_name, column=KD_COLUMN):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=6)
     axes[0][0].set_ylabel("P(reached)")
+    if title:
+        fig.suptitle(_wrapped(title, int(fig.get_figwidth() * 72 / (0.55 * 7))), fontsize=7)
     fig.tight_layout()
     return fig
 
 
-def fragility(frag, im_name, path, column=KD_COLUMN):
-    fig = fragility_figure(frag, im_name, column)
+def fragility(frag, im_name, path, column=KD_COLUMN, title=""):
+    fig = fragility_figure(frag, im_name, column, title)
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)

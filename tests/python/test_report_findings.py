@@ -119,7 +119,12 @@ def test_finding5_ida_title_names_no_unused_kd_and_fits_the_figure(tmp_path, fig
     assert assess(tmp_path, *WALL, "--kd-values", "20kN/m/m", "200kN/m/m", "--pga", "0.2", "0.3") == 0
     ida = next(f for f in figures if len(f.axes) == 1)
     title = ida.axes[0].title
-    assert "K_d" not in title.get_text()  # the wall's unused default (1000 kN/m per m) once stood there
+    assert "1000 kN/m" not in title.get_text()  # the wall's unused default K_d once stood there
+    # the scene it ran, as the report names it (the plots named none); K_d: the legend's
+    scene = "scene: the paper's: the top spring K_d (per legend) ends at a fixed point"
+    assert scene in title.get_text().replace("\n", " ")
+    fragility = next(f for f in figures if len(f.axes) > 1)
+    assert scene in fragility._suptitle.get_text().replace("\n", " ")
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     renderer = FigureCanvasAgg(ida).get_renderer()
     box, frame = title.get_window_extent(renderer), ida.bbox

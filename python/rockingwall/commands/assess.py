@@ -172,8 +172,10 @@ def write_files(out, cases, frag, recs, states, im_name, study):
     out.write("cases.csv", lambda tmp: csv.to_csv(tmp, index=False, float_format="%.6g"))
     out.write("fragility.csv", lambda tmp: frag.to_csv(tmp, index=False, float_format="%.6g"))
     from .. import assessment_plots  # matplotlib: imported when the plots are drawn
+    scene = study.scene_text.splitlines()[0].replace("(each above)", "(per legend)")  # each plot names it
     for rec in tqdm(recs, desc="plots", unit="plot", file=sys.stderr, delay=2):
         d = cases[cases.record == rec.name]
         out.write(f"{cc.file_stem(rec.name)}.png", lambda tmp, d=d, rec=rec: assessment_plots.ida(
-            d, f"{rec.name}: {study.title}", states, im_name, tmp, study.column))
-    out.write("fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp, study.column))
+            d, f"{rec.name}: {study.title}\n{scene}", states, im_name, tmp, study.column))
+    out.write("fragility.png", lambda tmp: assessment_plots.fragility(frag, im_name, tmp, study.column,
+                                                                      f"{study.title}\n{scene}"))
