@@ -10,7 +10,7 @@ import pandas as pd
 
 from . import bounds, fmi2sim, names, paths, robustness, scenes, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
-from .building import floor_acc, monolithic
+from .building import floor_acc, monolithic, reports
 from .building.description import TIE_DEFAULT
 from .records import G_STD
 from .wall import Wall
@@ -39,7 +39,8 @@ class TieForce:
 class Result:
     """Peaks [m] of the mid-height (s1) and top (s2) displacements, collapse, impacts, and the
     time history (DataFrame: time [s], ag [m/s^2], s1 [m], s2 [m], and under a diaphragm with mass
-    F_top_25Hz [N/m], the tie's force filtered as peak_F_top is) on the output grid."""
+    its displacement relative to its supports `diaphragm` [m] and F_top_25Hz [N/m], the tie's force
+    filtered as peak_F_top is) on the output grid; NaN for the wall after its collapse."""
     wall: Wall
     record: str
     engine: str
@@ -120,7 +121,10 @@ def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
                                    check_sensitivity=True, tie_forces=True)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.scene.s1[:, 0],
-                            "s2": h.scene.s2[:, 0], "F_top_25Hz": h.tie_force[:, 0]})
+                            "s2": h.scene.s2[:, 0], "diaphragm": h.scene.diaphragm[:, 0],
+                            "F_top_25Hz": h.tie_force[:, 0]})
+    if s.collapsed:  # as the exact engine's history: no wall after its collapse (the diaphragm moves on)
+        reports.blank_after_collapse(history, s.t_collapse_s, ["s1", "s2", "F_top_25Hz"])
     force, found = float("nan"), None
     if not s.collapsed:  # a toppled wall's connection force is no demand: it fell
         force = s.tie_force_N_per_m

@@ -33,6 +33,22 @@ def test_a_toppled_walls_tie_force_is_no_number(toppled):
     assert np.isnan(toppled.peak_F_top) and toppled.tie_force is None
 
 
+def test_a_toppled_walls_history_ends_at_its_collapse_and_the_diaphragms_goes_on(toppled):
+    """Under a diaphragm with mass the history held the toppled wall's last state to the record's
+    end (s1 = 230 mm, its thickness, from 4.41 s to 80 s) and a filtered tie force decaying to
+    -7.9e-323 N/m, where the paper's scene leaves the wall's cells empty after its collapse. Now the
+    wall's s1, s2 and tie force are NaN after it, as there; the diaphragm's own displacement,
+    which was not written at all, is written to the end (the roof still moves)."""
+    h = toppled.history
+    after = h.time > toppled.t_collapse
+    assert 0 < after.sum() < len(h) - 100
+    for name in ("s1", "s2", "F_top_25Hz"):
+        assert h.loc[after, name].isna().all() and h.loc[~after, name].notna().all()
+    assert h.diaphragm.notna().all() and h.loc[after, "diaphragm"].abs().max() > 1e-3
+    alone = rw.simulate(WALL, rw.read_record("elcentro").to_pga(0.3))
+    assert alone.collapsed and alone.history.s1[alone.history.time > alone.t_collapse].isna().all()  # as before
+
+
 @pytest.mark.parametrize("engine", ["exact", "cvode"])
 def test_the_tie_force_is_the_filtered_one_which_the_ties_stiffness_leaves_alone(engine):
     """Each impact makes a tie ring with a force of about the velocity's jump times sqrt(k_tie m):

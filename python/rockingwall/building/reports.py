@@ -110,10 +110,17 @@ def history_csv(histories, path, t_collapse=()):
     table = pd.DataFrame({"time": scene.t} | {f"{name}_{i + 1}": np.asarray(a[:, i], dtype=float)
                                               for i in range(n) for name, a in per_storey.items()})
     for i, t_c in enumerate(t_collapse):
-        if t_c is not None and np.isfinite(t_c):
-            gone = [f"{name}_{i + 1}" for name in per_storey if name in ("s1", "s2") or name.startswith("tie_force")]
-            table.loc[table["time"] > t_c, gone] = np.nan
+        blank_after_collapse(table, t_c, [f"{name}_{i + 1}" for name in per_storey
+                                          if name in ("s1", "s2") or name.startswith("tie_force")])
     table.to_csv(path, index=False, float_format="%.9g", na_rep="")
+
+
+def blank_after_collapse(table, t_collapse, columns):
+    """NaN in `columns` of the history `table` (its 'time' column) after t_collapse (None or NaN:
+    the wall stands): the run holds the state a wall collapsed at, which is no displacement, and a
+    collapsed wall pulls on no tie."""
+    if t_collapse is not None and np.isfinite(t_collapse):
+        table.loc[table["time"] > t_collapse, columns] = np.nan
 
 
 def draw_wall(ax, t, y, t_collapse, **style):
