@@ -64,6 +64,9 @@ def test_an_eccentric_overburden_reaches_the_wall_and_the_echo():
      "outside"),  # a sub-table's key on its own line
     (lambda t: t.replace('diaphragm = { stiffness = "20 kN/m/m", mass = "200 kg/m", damping = 0.05 }', ''), 10,
      "diaphragm is missing"),  # nothing to point at: the storey's header
+    # a damping ratio written as a percentage without its sign: the range ended in a unit '1'
+    (lambda t: t.replace('mass = "200 kg/m", damping = 0.05', 'mass = "200 kg/m", damping = 5'), 13,
+     'storey 2.diaphragm.damping = 5 is outside [0, 2] (a ratio: 5 % is 0.05 or "5 %")'),
 ])
 def test_a_bad_file_names_the_file_the_line_and_the_problem(edit, line, words):
     with pytest.raises(building_file.BuildingFileError) as err:

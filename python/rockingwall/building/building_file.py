@@ -99,7 +99,8 @@ def _quantity(table, key, unit, where, line, what, default=None):
         raise where.error(line, str(exc), _keys(what) + [key]) from None
     low, high = RANGES[key]
     if not low <= v <= high:
-        raise where.error(line, f"{what}.{key} = {table[key]!r} is outside [{low:g}, {high:g}] {unit or ''}".rstrip(),
+        shown = f"{unit}" if unit not in (None, "1") else "(a ratio: 5 % is 0.05 or \"5 %\")"
+        raise where.error(line, f"{what}.{key} = {table[key]!r} is outside [{low:g}, {high:g}] {shown}",
                           _keys(what) + [key])
     return v
 
