@@ -44,11 +44,26 @@ class Parameter:
     description: str
 
     def check(self, value):
-        """ValueError naming the parameter, the value and its closed range."""
+        """ValueError naming the parameter, the value and its closed range, and the unit slip that
+        would put it in range (3600 for a height: mm; 86 for a ratio: %)."""
         ok = math.isfinite(value) and self.lo <= value <= self.hi and (not self.is_integer or value == int(value))
         if not ok:
             kind = "an integer in" if self.is_integer else "in"
-            raise ValueError(f"{self.name} = {value!r} {self.unit}: must be {kind} [{self.lo:g}, {self.hi:g}]")
+            unit = f" {self.unit}" if self.unit not in ("", "1") else ""
+            ratio = " (a ratio)" if self.unit == "1" else ""
+            raise ValueError(f"{self.name} = {value:g}{unit}: must be {kind} [{self.lo:g}, {self.hi:g}]{ratio}"
+                             f"{self._slip(value)}")
+
+    def _slip(self, value):
+        factor, written = UNIT_SLIPS.get(self.unit, (None, None))
+        if factor is None or not math.isfinite(value) or not self.lo <= value * factor <= self.hi:
+            return ""
+        return f"; did you mean {value:g} {written} (write '{value:g}{written}')?"
+
+
+# a number given in a unit the parameter's SI unit is not, which lands in range once converted:
+# {SI unit: (factor to it, the unit the number was likely meant in)}
+UNIT_SLIPS = {"m": (1e-3, "mm"), "N/m": (1e3, "kN/m"), "1": (1e-2, "%")}
 
 
 @functools.cache

@@ -203,3 +203,16 @@ def test_an_implausible_number_is_warned_with_its_line_and_refused_with_strict(t
     assert capsys.readouterr().err.count(f"rockingwall: warning: {path}:") == 2
     with pytest.warns(rw.PlausibilityWarning, match="the tie 100 N/m per m"):
         building_file.parse(CONTRACT.replace('tie = "1e6 N/m/m"', 'tie = "100 N/m/m"', 1), "house.toml")
+
+
+@pytest.mark.parametrize("option, value, said", [
+    ("--diaphragm-damping", "5", "--diaphragm-damping 5: must be in [0, 2] (a ratio: 5 % is 0.05 or 5%)"),
+    ("--tie", "0.5", "--tie 0.5 N/m per m: must be in [1, 1e12] N/m per m"),
+    ("--diaphragm-mass", "2e8kg/m", "--diaphragm-mass 2e+08 kg/m: must be in (0, 1e7) kg/m"),
+])
+def test_a_diaphragm_option_out_of_range_is_named_alone(option, value, said, capsys):
+    """One of --diaphragm-mass, --diaphragm-damping and --tie out of range was refused with all three
+    ranges in one sentence, naming neither the option nor the value."""
+    args = ["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-mass", "200kg/m", "gaussian"]
+    assert cli.main(args + [option, value]) == 2
+    assert capsys.readouterr().err.strip() == f"rockingwall: error: {said}"

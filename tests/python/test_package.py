@@ -66,6 +66,19 @@ def test_unit_slips_are_warned_and_wrong_units_refused():
         rw.Wall.make(W=1)
 
 
+@pytest.mark.parametrize("given, said", [
+    # a height in mm and a ratio in % were refused with their range alone, the ratio's unit a bare '1'
+    (dict(h=3600), "h = 3600 m: must be in [0.3, 30]; did you mean 3600 mm (write '3600mm')?"),
+    (dict(b=230), "b = 230 m: must be in [0.02, 3]; did you mean 230 mm (write '230mm')?"),
+    (dict(er=86), "er = 86: must be in [0, 1] (a ratio); did you mean 86 % (write '86%')?"),
+    (dict(psi=-1), "psi = -1: must be in [0, 20] (a ratio)"),  # no unit lands it in range: no guess
+])
+def test_an_out_of_range_parameter_names_the_unit_slip_that_explains_it(given, said):
+    with pytest.raises(ValueError) as err:
+        rw.Wall.make(**dict(ENGINEER, **given), warn=False)
+    assert str(err.value) == said
+
+
 def test_cli_warns_of_a_unit_slip_and_creates_the_output_folder(pulse_at2, tmp_path):
     out = tmp_path / "not" / "yet"
     proc = cli("run", "--wall", "paper1", "--Kd", "30", pulse_at2, "--out", out)

@@ -112,9 +112,12 @@ def diaphragm_from_args(args, wall):
     if int(wall.params["support"]) != SUPPORTS["flexibleTop"]:
         raise ValueError("--diaphragm-mass: a diaphragm holds the wall's top (support flexibleTop)")
     mass = units.parse(args.diaphragm_mass, "kg/m", "--diaphragm-mass")
-    if not 0 < mass < 1e7 or not 0 <= damping <= 2 or not 1 <= tie <= 1e12:
-        raise ValueError("--diaphragm-mass must be in (0, 1e7) kg/m, --diaphragm-damping in [0, 2], --tie in "
-                         "[1, 1e12] N/m per m")
+    for ok, what in ((0 < mass < 1e7, f"--diaphragm-mass {mass:g} kg/m: must be in (0, 1e7) kg/m"),
+                     (0 <= damping <= 2, f"--diaphragm-damping {damping:g}: must be in [0, 2] (a ratio: 5 % is "
+                                         "0.05 or 5%)"),
+                     (1 <= tie <= 1e12, f"--tie {tie:g} N/m per m: must be in [1, 1e12] N/m per m")):
+        if not ok:
+            raise ValueError(what)
     return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=damping), tie
 
 
