@@ -2,6 +2,8 @@
 diaphragm springs of the paper's Table 5.4 (K_d = 500, 50, 5 kN/m per metre of wall), the default
 hinge law (dohertyHinge): the runs, their table beside the paper's peaks, the time histories and
 their plot (the logic of `rockingwall demo`)."""
+import textwrap
+
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -31,18 +33,23 @@ def run(scale=0.5, engine="exact"):
     return runs
 
 
+SCENE = ("scene: the paper's (the top spring K_d ends at a fixed point; the 1DOF: a pinned top); left out: "
+         "the diaphragm's mass and damping, the floor's motion")
+
+
 def table(runs, scale):
-    """The lines of the peaks beside the paper's (the paper's only at scale 0.5)."""
+    """The lines of the peaks beside the paper's (the paper's only at scale 0.5); a collapsed case's
+    peaks are no displacements ('-'): its collapse is a time."""
     lines = [f"Wall 1 (b = 0.15 m, h = 2.5 m, W = 6.622 kN/m), El Centro 1940 x {scale}, e_r = 0.86, "
-             "hinge law dohertyHinge",
-             "scene: the paper's (the top spring K_d ends at a fixed point; the 1DOF: a pinned top); left out: "
-             "the diaphragm's mass and damping, the floor's motion",
-             f"{'case':<24}{'peak s1 [m]':>12}{'paper':>8}{'peak s2 [m]':>13}{'paper':>8}{'impacts':>9}  collapsed"]
+             "hinge law dohertyHinge", SCENE,
+             f"{'case':<24}{'peak s1 [m]':>12}{'paper':>8}{'peak s2 [m]':>13}{'paper':>8}{'impacts':>9}  collapse"]
     for label, _, _, paper_s1, paper_s2 in CASES:
         run = runs[label]
         p1 = f"{paper_s1:.3f}" if scale == 0.5 else "-"
         p2 = f"{paper_s2:.3f}" if (paper_s2 is not None and scale == 0.5) else "-"
-        lines.append(f"{label:<24}{run.peak_s1:>12.4f}{p1:>8}{run.peak_s2:>13.4f}{p2:>8}{run.impacts:>9}  {run.collapsed}")
+        s1, s2 = ("-", "-") if run.collapsed else (f"{run.peak_s1:.4f}", f"{run.peak_s2:.4f}")
+        collapse = f"collapsed at {run.t_collapse:.2f} s" if run.collapsed else "no"
+        lines.append(f"{label:<24}{s1:>12}{p1:>8}{s2:>13}{p2:>8}{run.impacts:>9}  {collapse}")
     return lines
 
 
@@ -58,16 +65,24 @@ def histories(runs):
 
 
 def figure(runs, scale, engine):
-    """The time histories, one panel per case."""
+    """The time histories, one panel per case; a collapsed wall's lines end at its collapse, marked
+    with an x and named in the panel's legend."""
+    from .building.reports import draw_wall
     fig, axes = plt.subplots(len(runs), 1, figsize=(9, 2.2 * len(runs)), sharex=True)
     for ax, (label, run) in zip(axes, runs.items()):
-        ax.plot(run.history.time, run.history.s1, lw=0.8, label="s1 (mid-height)")
-        ax.plot(run.history.time, run.history.s2, lw=0.8, label="s2 (top)")
+        t_collapse = run.t_collapse if run.collapsed else None
+        mark = draw_wall(ax, run.history.time, run.history.s1, t_collapse, lw=0.8, color="C0", label="s1 (mid-height)")
+        draw_wall(ax, run.history.time, run.history.s2, t_collapse, lw=0.8, color="C1", label="s2 (top)")
+        if mark is not None:  # the collapse named last in the panel's legend
+            mark.set_label(f"collapsed at {run.t_collapse:.2f} s")
+            handles = [h for h in ax.get_legend_handles_labels()[0] if h is not mark] + [mark]
+            ax.legend(handles=handles, loc="upper right", fontsize=8)
         ax.set_ylabel("m")
         ax.set_title(label, fontsize=9, loc="left")
         ax.grid(alpha=0.3)
     axes[0].legend(loc="upper right", fontsize=8)
     axes[-1].set_xlabel("time [s]")
-    fig.suptitle(f"Wall 1, El Centro 1940 x {scale} ({engine} engine)")
+    fig.suptitle("\n".join([f"Wall 1, El Centro 1940 x {scale} ({engine} engine)", *textwrap.wrap(SCENE, 120)]),
+                 fontsize=9)
     fig.tight_layout()
     return fig
