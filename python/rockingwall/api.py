@@ -68,9 +68,13 @@ class Result:
         return self.peak_s1 / self.wall.delta_u
 
     def peaks(self):
-        """The numbers users print: a dict with units in the keys."""
-        return {"peak_s1_m": self.peak_s1, "peak_s2_m": self.peak_s2, "peak_F_top_N_per_m": self.peak_F_top,
-                "s1_over_Delta_u": self.s1_over_delta_u,
+        """The numbers users print: a dict with units in the keys; a collapsed wall's peaks, s1/Delta_u
+        and tie force None, as the table's '-' (the run stops at its instability point: they are no
+        displacements; its collapse is t_collapse_s)."""
+        fallen = self.collapsed
+        return {"peak_s1_m": None if fallen else self.peak_s1, "peak_s2_m": None if fallen else self.peak_s2,
+                "peak_F_top_N_per_m": None if fallen else self.peak_F_top,
+                "s1_over_Delta_u": None if fallen else self.s1_over_delta_u,
                 "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
 
     def summary(self, fmt="md"):

@@ -112,10 +112,17 @@ def test_the_json_contract(house, capsys):
 
 
 def test_a_collapse_is_a_time_in_the_table_and_in_json(house, capsys):
+    """A collapsed wall's peaks were numbers in the JSON (the state it collapsed at: 0.23 m, its
+    thickness, for the upper wall), where the table prints '-'; a program reading peak_s1_m took
+    them as displacements. They are null now, as its s1/Delta_u, and the notes say why."""
     assert cli.main(["building", str(house), "gaussian:0.3,1", "--scale", "1", "--json"]) == 0
-    storeys = _strict(capsys.readouterr().out)["runs"][0]["storeys"]
+    data = _strict(capsys.readouterr().out)
+    storeys = data["runs"][0]["storeys"]
     fallen = [s for s in storeys if s["collapsed"]]
     assert fallen and all(isinstance(s["t_collapse_s"], float) and s["t_collapse_s"] > 0 for s in fallen)
+    assert all(s[k] is None for s in fallen for k in ("peak_s1_m", "peak_s2_m", "s1_over_Delta_u"))
+    assert all(isinstance(s["peak_s1_m"], float) for s in storeys if not s["collapsed"])
+    assert "null for a collapsed wall" in data["notes"]["peak_s1_m"]
     assert cli.main(["building", str(house), "gaussian:0.3,1", "--scale", "1"]) == 0
     out = capsys.readouterr().out
     assert "collapsed at" in out and "scene: walls in a 2-storey building" in out and "left out:" in out

@@ -183,6 +183,9 @@ def test_finding5_run_json_of_a_collapse_parses_strictly(capsys):
     data = json.loads(text, parse_constant=refuse)
     run = data["runs"][0]
     assert run["collapsed"] and run["ensemble"]["s1_p84_m"] is None  # inf: a collapsed percentile
+    # a collapsed wall's peaks were numbers (its state at the instability point), where the table
+    # prints '-': null now, as its s1/Delta_u and tie force
+    assert [run[k] for k in ("peak_s1_m", "peak_s2_m", "s1_over_Delta_u", "peak_F_top_N_per_m")] == [None] * 4
 
 
 def test_finding7_a_report_table_in_markdown_and_result_summary(tmp_path, capsys):

@@ -52,8 +52,12 @@ class StoreyResult:
         return self.peak_s1_m / self.delta_u_m
 
     def to_dict(self):
+        """For JSON: a collapsed wall's peaks and s1/Delta_u are None, as the table's '-' (the run
+        stops at its instability point: they are no displacements; its collapse is t_collapse_s)."""
         d = dataclasses.asdict(self)
         d["s1_over_Delta_u"] = self.s1_over_delta_u
+        if self.collapsed:
+            d.update(peak_s1_m=None, peak_s2_m=None, s1_over_Delta_u=None)
         return d
 
 

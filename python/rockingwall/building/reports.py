@@ -13,6 +13,8 @@ def _collapse(s):
 
 
 # what the floor's peak accelerations are, said wherever they are printed
+COLLAPSED_PEAKS_NOTE = ("peak_s1_m, peak_s2_m, s1_over_Delta_u: null for a collapsed wall (the run stops at its "
+                        "instability point: no displacement; its collapse is t_collapse_s)")
 FLOOR_ACC_NOTE = (f"base_peak_acc_m_s2: the peak absolute acceleration of the floor the wall stands on, low-pass "
                   f"filtered at {CUTOFF_HZ:g} Hz (4th-order Butterworth, zero phase): the floor's motion walls, parts "
                   f"and contents feel, independent of the tie's stiffness; for the ground storey the record's "
@@ -87,7 +89,7 @@ def to_json(building, results):
     null for a collapsed wall), tie_force_raw_N_per_m, delta_u_m, s1_over_Delta_u, impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
-                   "notes": {"base_peak_acc_m_s2": FLOOR_ACC_NOTE, "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
+                   "notes": {"peak_s1_m": COLLAPSED_PEAKS_NOTE, "base_peak_acc_m_s2": FLOOR_ACC_NOTE, "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
                              "tie_force_N_per_m": TIE_FORCE_NOTE, "tie_force_raw_N_per_m": TIE_FORCE_RAW_NOTE,
                              "peak_sensitivity": SENSITIVITY_NOTE},
                    "runs": [r.to_dict() for r in results]})
