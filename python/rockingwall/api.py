@@ -4,6 +4,7 @@ that has mass (`diaphragm=`), the wall under it by the scene solver. Every resul
 (rockingwall.scenes) and what that scene leaves out."""
 import dataclasses
 import os
+import types
 
 import numpy as np
 import pandas as pd
@@ -54,7 +55,7 @@ class Result:
     scene: scenes.Scene = None
     pga_g: float = float("nan")   # the record's PGA as run [g]
     ensemble: object = None       # an ensemble.Summary where simulate(..., ensemble=...) ran one
-    peak_sensitivity: float = None  # under a diaphragm with mass: the sensitivity check's (monolithic.peak_sensitivity)
+    peak_sensitivity: float = None  # the sensitivity check's (monolithic.peak_sensitivity); None: not made (fmi2sim, fmpy)
     tie_force: object = None        # under a diaphragm with mass: how peak_F_top was found (TieForce)
 
     @property
@@ -115,8 +116,23 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
     run = {"exact": _exact, "fmi2sim": _fmi2sim, "fmpy": _fmpy, PARAPET_ON_CVODE: _fmi2sim}[engine]
     peak_s1, peak_s2, collapsed, t_collapse, impacts, s1, s2 = run(wall, record, t_end, grid, rtol, output_interval)
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": s1, "s2": s2})
+    sensitivity = _sensitivity(wall, record, t_end, peak_s1, peak_s2, collapsed) if engine == "exact" else None
     return Result(wall, record.name, engine, peak_s1, peak_s2, engine_module.peak_F_top(wall.params, peak_s2),
-                  collapsed, t_collapse, impacts, history, scenes.paper(wall.params))
+                  collapsed, t_collapse, impacts, history, scenes.paper(wall.params), peak_sensitivity=sensitivity)
+
+
+def _sensitivity(wall, record, t_end, peak_s1, peak_s2, collapsed):
+    """The sensitivity check of the building's runs on the exact engine (two more runs of about a
+    millisecond): the largest relative change of peak s1 or s2 under the record scaled by 1 -/+
+    monolithic.SENSITIVITY_PERTURBATION, 1.0 where the collapse changes."""
+    def peaks(s1, s2, fell):
+        return types.SimpleNamespace(peak_s1=np.array([s1]), peak_s2=np.array([s2]), collapsed=np.array([fell]))
+    scaled = []
+    for sign in (-1.0, 1.0):
+        r = engine_module.run(record.t, record.ag * (1.0 + sign * monolithic.SENSITIVITY_PERTURBATION), t_end=t_end,
+                              **wall.params)
+        scaled.append(peaks(r.peak_s1, r.peak_s2, r.collapsed))
+    return monolithic.peak_sensitivity(peaks(peak_s1, peak_s2, collapsed), scaled)
 
 
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):

@@ -46,9 +46,16 @@ def sensitivity_lines(results):
     """A line for each result whose peaks the sensitivity check found sensitive (results with
     `record`, `peak_sensitivity` and `sensitive`: a BuildingResult, or api.Result of a scene)."""
     return [f"sensitive: {r.record}: a change of {SENSITIVITY_PERTURBATION:g} in the record's scale moves a peak by "
-            f"{r.peak_sensitivity:.1%}; these peaks are one sample of a spread, not digits to trust (a softer tie "
-            f"or more records give the spread: docs/your-building.md, \"Tie\")"
+            f"{r.peak_sensitivity:.1%}{' or flips a collapse' if r.peak_sensitivity >= 1.0 else ''}; these peaks are "
+            f"one sample of a spread, not digits to trust ({_spread(r)})"
             for r in results if r.sensitive]
+
+
+def _spread(result):
+    """Where the spread of a sensitive result comes from: the tie of a scene with one, else an ensemble."""
+    if getattr(result, "scene", None) is not None and result.scene.key == "paper":
+        return "an ensemble (--ensemble 100) or more records give the spread: docs/robustness.md"
+    return "a softer tie or more records give the spread: docs/your-building.md, \"Tie\""
 
 
 def _floor(s):
