@@ -148,10 +148,12 @@ def fragilities(cases, states, column=KD_COLUMN, outcomes=None):
                                                                        what=what)))
         for over, est in fits:
             f = est.fit
+            gap = f.gap if f and f.gap else (np.nan, np.nan)  # the data do not overlap: the median is in it
             out.append({column: value, "limit_state": name, "over": over, "records": est.n_records,
                         "median": f.theta if f else np.nan, "median_5": est.theta_90[0],
                         "median_95": est.theta_90[1], "beta": f.beta if f else np.nan, "beta_5": est.beta_90[0],
-                        "beta_95": est.beta_90[1], "warnings": " | ".join(est.warnings)})
+                        "beta_95": est.beta_90[1], "gap_lo": gap[0], "gap_hi": gap[1],
+                        "warnings": " | ".join(est.warnings)})
     return pd.DataFrame(out)
 
 

@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from . import report_table
+from .sweep import fragility
 from .assessment import KD_COLUMN, group_label, resurrection_lines
 
 
@@ -50,7 +51,10 @@ def fragility_line(r, column):
         interval = (f" [{_end(r['median_5'], False, True)}, {_end(r['median_95'], True, True)}]",
                     f" [{_end(r['beta_5'], False)}, {_end(r['beta_95'], True)}]")
     beta = "0 (not identified)" if r["beta"] == 0 else f"{r['beta']:.2g}{interval[1]}"
-    line = f"{head}: median {r['median']:.3g}{interval[0]}, beta {beta}, {r['records']} records"
+    median = f"{r['median']:.3g}{interval[0]}"
+    if np.isfinite(r.get("gap_lo", np.nan)):  # the data do not overlap: no estimate inside the gap is better
+        median = fragility.gap_median((r["gap_lo"], r["gap_hi"]))
+    line = f"{head}: median {median}, beta {beta}, {r['records']} record{'s' if r['records'] != 1 else ''}"
     return line + (f"\n    warning: {r['warnings']}" if r["warnings"] else "")
 
 

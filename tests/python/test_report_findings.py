@@ -55,6 +55,29 @@ def test_a_fit_without_dispersion_says_so_in_the_legend(tmp_path, figures):
         "K_d = 20 kN/m per m: beta not identified", "K_d = 200 kN/m per m"]
 
 
+
+def test_a_median_the_data_cannot_place_is_printed_as_its_gap(tmp_path, figures):
+    """Where every run below 0.1 g stands and every run above 0.3 g collapses, assess printed
+    'median 0.173 [0.17, 0.18]' (the gap's geometric mean, and a bootstrap interval as tight as
+    the one record's resamples are alike) beside a warning that the median is anywhere in [0.1,
+    0.3]. The line now gives the gap as the median's place, fragility.csv has it (gap_lo, gap_hi),
+    and the plot shades it and says it in the legend; one record is 'record'."""
+    from rockingwall import assessment, assessment_report
+    from rockingwall.limits import parse_all
+    wall = rw.Wall.make("paper1", Kd=20e3, warn=False)
+    cases = pd.DataFrame([dict(Kd_kN_per_m_per_m=20.0, record="r1", im=pga, collapsed=pga > 0.2,
+                               **{"0.6 Delta_u": pga > 0.2, "Delta_u": pga > 0.2}) for pga in (0.1, 0.3)])
+    frag = assessment.fragilities(cases, parse_all(None, wall))
+    row = frag[frag.limit_state == "collapsed"].iloc[0]
+    assert (row.gap_lo, row.gap_hi) == pytest.approx((0.1, 0.3))
+    line = assessment_report.fragility_line(row.to_dict(), "Kd_kN_per_m_per_m")
+    assert "median anywhere in [0.1, 0.3], beta 0 (not identified), 1 record" in line and "0.173" not in line
+    assessment_plots.fragility(frag, "PGA [g]", tmp_path / "fragility.png")
+    (fig,) = figures
+    legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert legend == ["K_d = 20 kN/m per m: beta not identified\n  median anywhere in [0.1, 0.3]"]
+    assert any(p.get_x() == pytest.approx(0.1) and p.get_width() == pytest.approx(0.2) for p in fig.axes[0].patches)
+
 def write_csv(path, record, factor):
     np.savetxt(path, np.column_stack([record.t, record.ag * factor]), delimiter=",", header="time,acc", comments="")
 

@@ -131,7 +131,7 @@ def fit_tables(levels, n, z, n_boot=200, seed=1, what="collapse"):
     n_records = n.shape[0]
     notes = []
     if n_records < MIN_RECORDS:
-        notes.append(f"only {n_records} records (fewer than {MIN_RECORDS}): the median and above all the "
+        notes.append(f"only {n_records} record{'s' if n_records != 1 else ''} (fewer than {MIN_RECORDS}): the median and above all the "
                      "dispersion beta are poorly constrained; read the intervals, not the digits")
     weights = np.vstack([np.ones(n_records), bootstrap_weights(n_records, n_boot, seed)])
     fits = probit.fit(np.log(levels), weights @ n, weights @ z)

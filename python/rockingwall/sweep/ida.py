@@ -114,7 +114,7 @@ def fragility_table(fits, n_records):
     lines += [f"  warning: K_d = {kd:g} kN/m per m: {fragility.gap_message(f.gap, 'collapse')} g"
               for kd, f in fits.items() if f.gap]
     if n_records < fragility.MIN_RECORDS:
-        lines.append(f"  warning: only {n_records} records (fewer than {fragility.MIN_RECORDS}): the median and above all "
+        lines.append(f"  warning: only {n_records} record{'s' if n_records != 1 else ''} (fewer than {fragility.MIN_RECORDS}): the median and above all "
                      "the dispersion beta are poorly constrained")
     return lines
 
