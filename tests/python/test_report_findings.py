@@ -227,3 +227,26 @@ def test_finding7_a_report_table_in_markdown_and_result_summary(tmp_path, capsys
     table = result.summary()
     assert "| record | PGA [g] |" in table and f"{result.peak_s1 * 1e3:.1f}" in table
     assert f"{result.peak_s1 / (0.6 * wall.delta_u):.2f}" in table and "scene: the paper's" in table
+
+
+def test_only_a_plausibility_warning_is_a_strict_error():
+    """The commands' plausibility filter caught every warning raised while a wall, a building file
+    or a sweep's plan was read, shown 'always' and, with --strict, made an error of: a library's
+    deprecation warning there would have refused the user's input. Only a PlausibilityWarning is
+    now routed so; any other warning goes on as it came."""
+    import argparse
+    import warnings
+    from rockingwall.commands import common
+    from rockingwall.wall import PlausibilityWarning
+
+    def make(*kinds):
+        def run():
+            for kind in kinds:
+                warnings.warn(f"a {kind.__name__}", kind)
+            return 42
+        return run
+    strict = argparse.Namespace(strict=True)
+    with pytest.warns(DeprecationWarning, match="a DeprecationWarning"):
+        assert common.plausible(make(DeprecationWarning), strict) == 42
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="a PlausibilityWarning .--strict"):
+        common.plausible(make(DeprecationWarning, PlausibilityWarning), strict)

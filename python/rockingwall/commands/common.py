@@ -7,7 +7,7 @@ import warnings
 from .. import bounds, intensity, outputs, records, units
 from ..building.description import DAMPING_DEFAULT, TIE_DEFAULT, Diaphragm
 from ..names import SUPPORTS
-from ..wall import Wall
+from ..wall import PlausibilityWarning, Wall
 
 WALL_FLAGS = {  # flag -> parameter; values may carry units ('30kN/m/m', '230mm')
     "--b": "b", "--h": "h", "--W": "W", "--psi": "psi", "--Kd": "Kd", "--er": "er",
@@ -71,12 +71,17 @@ def warn(message, args):
 
 
 def plausible(make, args):
-    """make()'s result, its warnings passed to warn() (errors with --strict)."""
+    """make()'s result, its plausibility warnings passed to warn() (errors with --strict); any other
+    warning (a library's deprecation, say) goes on as it came, under the filters in force, and is
+    never a plausibility error."""
     with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
+        warnings.simplefilter("always", PlausibilityWarning)
         value = make()
     for w in caught:
-        warn(str(w.message), args)
+        if issubclass(w.category, PlausibilityWarning):
+            warn(str(w.message), args)
+        else:
+            warnings.warn_explicit(w.message, w.category, w.filename, w.lineno, source=w.source)
     return value
 
 
