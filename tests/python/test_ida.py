@@ -126,7 +126,7 @@ def test_ida_names_the_wall_and_the_scene_its_runs_ran_in(tmp_path, capsys):
     assert ida_command.main([str(path), "--wall", "3", "--out", str(tmp_path / "house")]) == 2
     assert "no successful runs with --wall 3" in capsys.readouterr().err
     fig, _ = ida.fragility_figure(ida.load(path, "2"))
-    assert "house: storey 2; scene: the wall in its building" in fig._suptitle.get_text().replace("\n", " ")
+    assert "wall: house: storey 2; scene: the wall in its building" in fig._suptitle.get_text().replace("\n", " ")
 
 
 def test_a_gap_of_one_level_is_a_median_at_it(tmp_path):

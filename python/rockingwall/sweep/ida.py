@@ -102,7 +102,7 @@ def _name_scene(fig, d, head="", fontsize=8):
     """The figure's title: `head` (a line) over the wall and the scene its runs ran in, wrapped to
     the figure's width (about 0.55 fontsize points a character)."""
     width = max(40, int(fig.get_figwidth() * 72 / (0.55 * fontsize)))
-    lines = ([head] if head else []) + textwrap.wrap(f"{d.wall.iloc[0]}; scene: {scene(d).title}", width)
+    lines = ([head] if head else []) + textwrap.wrap(f"wall: {d.wall.iloc[0]}; scene: {scene(d).title}", width)
     fig.suptitle("\n".join(lines), fontsize=fontsize)
 
 
