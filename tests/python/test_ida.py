@@ -142,3 +142,20 @@ def test_a_gap_of_one_level_is_a_median_at_it(tmp_path):
     assert fits[5.0].gap == (0.3, 0.3)
     assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
         "K_d = 5 kN/m per m: median at 0.3 g, beta not identified"]
+
+
+def test_a_record_standing_at_one_level_only_is_drawn(tmp_path, figures):
+    """The IDA curves were lines without markers: a record standing at one intensity and collapsing
+    at the next (wall 1 on 500 kN/m per m at 0.2 and 0.5 g) was a line of one point, which draws
+    nothing, and so was a median finite at one level only. Each level is a dot now."""
+    path = synthetic_results(tmp_path)  # r1 collapses above 0.3 g, r2 above 0.35 g: 0.4 g collapses both
+    d = pd.read_csv(path)
+    d = d[(d.kd_kN == 5.0) & d.pga_g.isin([0.3, 0.4])]
+    d.to_csv(path, index=False, lineterminator="\n")
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    curves = next(f for f in figures if f._suptitle.get_text().startswith("IDA curves"))
+    ax = curves.axes[0]
+    standing = [line for line in ax.get_lines() if line.get_color() == "tab:blue"]
+    assert len(standing) == 2 and all(len(line.get_xdata()) == 1 and line.get_marker() == "o" for line in standing)
+    (median,) = [line for line in ax.get_lines() if line.get_label() == "median"]
+    assert len(median.get_xdata()) == 1 and median.get_marker() == "o"

@@ -79,11 +79,13 @@ def ida_curves(d, path):
                 r = r.sort_values("pga_g")
                 first = r.collapsed.values.argmax() if r.collapsed.any() else len(r)
                 alive = r.iloc[:first]  # the curve up to the first collapse
-                ax.plot(1000 * alive[q], alive.pga_g, lw=0.6, alpha=0.5, color="tab:blue")
+                # a dot at each level: a record standing at one level only is a single point
+                ax.plot(1000 * alive[q], alive.pga_g, "o-", lw=0.6, ms=2, alpha=0.5, color="tab:blue")
                 if first < len(r):
                     ax.plot(1000 * r[q].iloc[first], r.pga_g.iloc[first], "x", ms=3, color="tab:red", alpha=0.6)
             med = dk.assign(v=np.where(dk.collapsed, np.inf, dk[q])).groupby("pga_g").v.median()
-            ax.plot(1000 * med[np.isfinite(med)], med.index[np.isfinite(med)], color="k", lw=2, label="median")
+            ax.plot(1000 * med[np.isfinite(med)], med.index[np.isfinite(med)], "o-", color="k", lw=2, ms=3,
+                    label="median")
             ax.set_xscale("log")
             ax.grid(True, which="both", alpha=0.3)
             if i == 0:
