@@ -1,6 +1,5 @@
 """The plots of `rockingwall assess`: an IDA plot per record and the fragility curves. Every group
 (a K_d, or a building's storey) has one colour in every panel, whichever groups have a fit."""
-import textwrap
 
 import matplotlib
 matplotlib.use("Agg")
@@ -8,6 +7,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from scipy import special
 
+from . import figure_titles
 from .assessment import KD_COLUMN, group_label
 from .sweep.fragility import gap_median
 
@@ -56,17 +56,12 @@ def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
     ax.set_xlim(left=0)
     ax.set_xlabel("peak s1, mid-height [mm]  (x: collapse; bands: the ensemble's 16-84 %)")
     ax.set_ylabel(im_name)
-    ax.set_title(_wrapped(title, 90), fontsize=7)
+    ax.set_title(figure_titles.wrapped(title, 90), fontsize=7)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower right")
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
-
-
-def _wrapped(text, width):
-    """Each line of text wrapped to width characters."""
-    return "\n".join(part for line in text.splitlines() for part in textwrap.wrap(line, width))
 
 
 def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
@@ -109,7 +104,7 @@ def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
         ax.legend(fontsize=6)
     axes[0][0].set_ylabel("P(reached)")
     if title:
-        fig.suptitle(_wrapped(title, int(fig.get_figwidth() * 72 / (0.55 * 7))), fontsize=7)
+        figure_titles.suptitle(fig, title, 7)
     fig.tight_layout()
     return fig
 

@@ -67,16 +67,14 @@ def histories(runs):
 def figure(runs, scale, engine):
     """The time histories, one panel per case; a collapsed wall's lines end at its collapse, marked
     with an x and named in the panel's legend."""
-    from .building.reports import draw_wall
+    from .building.reports import draw_wall, legend_collapse_last
     fig, axes = plt.subplots(len(runs), 1, figsize=(9, 2.2 * len(runs)), sharex=True)
     for ax, (label, run) in zip(axes, runs.items()):
         t_collapse = run.t_collapse if run.collapsed else None
         mark = draw_wall(ax, run.history.time, run.history.s1, t_collapse, lw=0.8, color="C0", label="s1 (mid-height)")
         draw_wall(ax, run.history.time, run.history.s2, t_collapse, lw=0.8, color="C1", label="s2 (top)")
-        if mark is not None:  # the collapse named last in the panel's legend
-            mark.set_label(f"collapsed at {run.t_collapse:.2f} s")
-            handles = [h for h in ax.get_legend_handles_labels()[0] if h is not mark] + [mark]
-            ax.legend(handles=handles, loc="upper right", fontsize=8)
+        if mark is not None:
+            legend_collapse_last(ax, mark, run.t_collapse, loc="upper right", fontsize=8)
         ax.set_ylabel("m")
         ax.set_title(label, fontsize=9, loc="left")
         ax.grid(alpha=0.3)

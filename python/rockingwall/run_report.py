@@ -41,16 +41,15 @@ def plot(result, path):
     t_collapse = result.t_collapse if result.collapsed else None
     mark = reports.draw_wall(ax_s, h["time"], h["s1"] * 1e3, t_collapse, lw=0.8, color="C0", label="s1, mid-height [mm]")
     reports.draw_wall(ax_s, h["time"], h["s2"] * 1e3, t_collapse, lw=0.8, color="C1", label="s2, top [mm]")
-    if mark is not None:
-        mark.set_label(f"collapsed at {t_collapse:.2f} s")
     du = result.wall.delta_u * 1e3
     ax_s.axhline(du, color="r", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
     ax_s.axhline(-du, color="r", lw=0.6, ls="--")
     ax_s.set_ylabel("displacement [mm]")
     ax_s.set_xlabel("time [s]")
-    handles, labels = ax_s.get_legend_handles_labels()
-    last = sorted(range(len(labels)), key=lambda k: labels[k].startswith("collapsed"))  # the collapse last
-    ax_s.legend([handles[k] for k in last], [labels[k] for k in last], fontsize=8, loc="upper right")
+    if mark is not None:
+        reports.legend_collapse_last(ax_s, mark, t_collapse, fontsize=8, loc="upper right")
+    else:
+        ax_s.legend(fontsize=8, loc="upper right")
     for ax in (ax_ag, ax_s):
         ax.grid(alpha=0.3)
     fig.suptitle(f"{result.record}: {result.wall.describe()}\nscene: {result.scene.title}", fontsize=8)

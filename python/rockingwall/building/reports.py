@@ -96,7 +96,8 @@ def to_json(building, results):
     null for a collapsed wall), tie_force_raw_N_per_m, delta_u_m, s1_over_Delta_u, impacts."""
     return strict_json.clean({"scene": scenes.building(building).to_dict(),
                    "building": {"name": building.name, "file": building.source, "description": building.describe()},
-                   "notes": {"peak_s1_m": COLLAPSED_PEAKS_NOTE, "base_peak_acc_m_s2": FLOOR_ACC_NOTE, "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
+                   "notes": {"peak_s1_m": COLLAPSED_PEAKS_NOTE, "base_peak_acc_m_s2": FLOOR_ACC_NOTE,
+                             "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
                              "tie_force_N_per_m": TIE_FORCE_NOTE, "tie_force_raw_N_per_m": TIE_FORCE_RAW_NOTE,
                              "peak_sensitivity": SENSITIVITY_NOTE},
                    "runs": [r.to_dict() for r in results]})
@@ -144,6 +145,13 @@ def draw_wall(ax, t, y, t_collapse, **style):
     ax.plot(t, y, **style)
     (mark,) = ax.plot(t[-1:], y[-1:], "x", color=style.get("color"), ms=7, mew=1.5)
     return mark
+
+
+def legend_collapse_last(ax, mark, t_collapse, **style):
+    """The panel's legend with draw_wall's x (`mark`) named 'collapsed at ... s', last."""
+    mark.set_label(f"collapsed at {t_collapse:.2f} s")
+    handles = [h for h in ax.get_legend_handles_labels()[0] if h is not mark] + [mark]
+    ax.legend(handles=handles, **style)
 
 
 def plot(building, result, histories, path):

@@ -4,14 +4,13 @@ plots of `rockingwall ida`. A run that collapsed has no meaningful peak (the run
 instability point): the IDA curves end there with a cross, and the medians count it as larger
 than any peak."""
 import sys
-import textwrap
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import numpy as np
 
-from .. import outputs, scenes
+from .. import figure_titles, outputs, scenes
 from . import fragility, store
 from .rows import ERROR, OK, RETRIED
 
@@ -102,10 +101,9 @@ def ida_curves(d, path):
 
 def _name_scene(fig, d, head="", fontsize=8):
     """The figure's title: `head` (a line) over the wall and the scene its runs ran in, wrapped to
-    the figure's width (about 0.55 fontsize points a character)."""
-    width = max(40, int(fig.get_figwidth() * 72 / (0.55 * fontsize)))
-    lines = ([head] if head else []) + textwrap.wrap(f"wall: {d.wall.iloc[0]}; scene: {scene(d).title}", width)
-    fig.suptitle("\n".join(lines), fontsize=fontsize)
+    the figure's width."""
+    named = f"wall: {d.wall.iloc[0]}; scene: {scene(d).title}"
+    figure_titles.suptitle(fig, f"{head}\n{named}" if head else named, fontsize)
 
 
 def fragility_table(fits, n_records):
@@ -116,8 +114,8 @@ def fragility_table(fits, n_records):
     lines += [f"  warning: K_d = {kd:g} kN/m per m: {fragility.gap_message(f.gap, 'collapse')} g"
               for kd, f in fits.items() if f.gap]
     if n_records < fragility.MIN_RECORDS:
-        lines.append(f"  warning: only {n_records} record{'s' if n_records != 1 else ''} (fewer than {fragility.MIN_RECORDS}): the median and above all "
-                     "the dispersion beta are poorly constrained")
+        lines.append(f"  warning: only {n_records} record{'s' if n_records != 1 else ''} (fewer than "
+                     f"{fragility.MIN_RECORDS}): the median and above all the dispersion beta are poorly constrained")
     return lines
 
 
