@@ -127,12 +127,10 @@ def _sensitivity(wall, record, t_end, peak_s1, peak_s2, collapsed):
     monolithic.SENSITIVITY_PERTURBATION, 1.0 where the collapse changes."""
     def peaks(s1, s2, fell):
         return types.SimpleNamespace(peak_s1=np.array([s1]), peak_s2=np.array([s2]), collapsed=np.array([fell]))
-    scaled = []
-    for sign in (-1.0, 1.0):
-        r = engine_module.run(record.t, record.ag * (1.0 + sign * monolithic.SENSITIVITY_PERTURBATION), t_end=t_end,
-                              **wall.params)
-        scaled.append(peaks(r.peak_s1, r.peak_s2, r.collapsed))
-    return monolithic.peak_sensitivity(peaks(peak_s1, peak_s2, collapsed), scaled)
+    scaled = [engine_module.run(record.t, record.ag * scale, t_end=t_end, **wall.params)
+              for scale in monolithic.SENSITIVITY_SCALES]
+    return monolithic.peak_sensitivity(peaks(peak_s1, peak_s2, collapsed),
+                                       [peaks(r.peak_s1, r.peak_s2, r.collapsed) for r in scaled])
 
 
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):

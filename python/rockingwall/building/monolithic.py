@@ -18,6 +18,8 @@ SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucW
 # such a change moves the peaks by several %, the same change of CVODES's tolerance does, and no
 # solver's digits then say more than the spread (docs/your-building.md, "Tie").
 SENSITIVITY_PERTURBATION = 1e-9
+# the record's scales of the check's two runs
+SENSITIVITY_SCALES = (1.0 - SENSITIVITY_PERTURBATION, 1.0 + SENSITIVITY_PERTURBATION)
 # A peak that moves by more than this share under the perturbation is reported as sensitive.
 SENSITIVITY_SHARE = 0.01
 
@@ -213,8 +215,8 @@ def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, s
                        histories=SCENE_HISTORIES)
     dense = pool.submit(sampled, spec, record, t_end, rtol, solver, filter_floor, tie_forces) \
         if filter_floor or tie_forces else None
-    scaled = [pool.submit(scaled_run, spec, record, 1.0 + sign * SENSITIVITY_PERTURBATION, t_end, rtol, solver)
-              for sign in ((-1.0, 1.0) if check_sensitivity else ())]
+    scaled = [pool.submit(scaled_run, spec, record, scale, t_end, rtol, solver)
+              for scale in (SENSITIVITY_SCALES if check_sensitivity else ())]
     r = main.result()
     share = check_energy(r, record.name)
     floor, ties = dense.result() if dense else (None, None)
