@@ -46,10 +46,7 @@ def cluster(tmp_path):
                                "--scheduler-file", str(info)], cwd=work, env=_clean_env(),
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)]
     try:
-        deadline = time.monotonic() + 60
-        while not info.exists() and time.monotonic() < deadline:
-            time.sleep(0.2)
-        address = json.loads(info.read_text())["address"]
+        address = _scheduler_address(info, time.monotonic() + 60)
         for i in range(2):
             procs.append(subprocess.Popen([str(DASK), "worker", address, "--nthreads", "1", "--no-dashboard",
                                            "--local-directory", str(work / f"w{i}")], cwd=work, env=_clean_env(),
@@ -64,6 +61,18 @@ def cluster(tmp_path):
             except subprocess.TimeoutExpired:
                 p.kill()
                 p.wait()
+
+
+def _scheduler_address(info, deadline):
+    """The address in the scheduler's file, once it is there whole: the scheduler creates the file
+    before it writes it, and a read in between found it empty (JSONDecodeError in one CI run)."""
+    while True:
+        try:
+            return json.loads(info.read_text())["address"]
+        except (OSError, ValueError, KeyError):
+            if time.monotonic() > deadline:
+                raise
+            time.sleep(0.2)
 
 
 def _wait_for_workers(address, n):
