@@ -22,8 +22,9 @@ DELEGATED = {
 
 def build_parser():
     from .commands import assess, building, info, run
+    width = max(map(len, DELEGATED)) + 2  # the text two spaces after the longest name
     p = argparse.ArgumentParser(prog="rockingwall", description=__doc__ + "\n\n" + "\n".join(
-        f"  {name:<9}{text}" for name, (_, text) in DELEGATED.items()),
+        f"  {name:<{width}}{text}" for name, (_, text) in DELEGATED.items()),
         formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--version", action="version", version=f"rockingwall {__version__}")
     # cc.Parser: a subcommand's description keeps its lines (its examples one command a line)

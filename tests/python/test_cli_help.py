@@ -24,3 +24,17 @@ def test_help_keeps_the_descriptions_lines(command, capsys):
     shown = {line.rstrip() for line in capsys.readouterr().out.splitlines()}
     missing = [line for line in described if line not in shown]
     assert not missing, missing
+
+
+def test_top_help_lists_every_command_apart_from_its_text(capsys):
+    """`rockingwall --help` printed 'couple-buildingwalls in a Building FMU, ...': the delegated
+    commands' list was padded to nine characters, and couple-building has fifteen. Each delegated
+    command now stands on its own line with its text at least two spaces after it."""
+    with pytest.raises(SystemExit) as exit_:
+        main(["--help"])
+    assert exit_.value.code == 0
+    lines = capsys.readouterr().out.splitlines()
+    for name, (_, text) in DELEGATED.items():
+        rows = [line.split() for line in lines if line.strip().startswith(name + " ")]
+        assert [row[0] for row in rows] == [name], (name, lines)
+        assert any(line.rstrip().endswith(text) and f"{name}  " in line for line in lines), name
