@@ -70,7 +70,11 @@ def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
     medians, and a legend entry for every group, those without an estimate or without an
     identified dispersion (beta 0: the data do not overlap) said so."""
     names = list(dict.fromkeys(frag.limit_state))
-    fig, axes = plt.subplots(1, len(names), figsize=(3.4 * len(names), 3.6), squeeze=False, sharey=True)
+    # the legends stand below their panels (over them they hid the curves' rise): room for their
+    # lines, a second one where a median is only a gap
+    lines = max(len(rows) + int((rows.beta == 0).sum()) for _, rows in frag.groupby("limit_state"))
+    fig, axes = plt.subplots(1, len(names), figsize=(3.4 * len(names), 3.9 + 0.14 * lines), squeeze=False,
+                             sharey=True)
     palette = colours(frag[column]) if column in frag else {np.nan: "C0"}
     fits = frag.dropna(subset=["median"])
     ends = fits.median_95[np.isfinite(fits.median_95)]
@@ -101,7 +105,7 @@ def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
         ax.set_title(name, fontsize=8)
         ax.set_xlabel(im_name)
         ax.grid(alpha=0.3)
-        ax.legend(fontsize=6)
+        ax.legend(fontsize=6, loc="upper center", bbox_to_anchor=(0.5, -0.2), frameon=False)
     axes[0][0].set_ylabel("P(reached)")
     if title:
         figure_titles.suptitle(fig, title, 7)

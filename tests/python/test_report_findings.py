@@ -78,6 +78,27 @@ def test_a_median_the_data_cannot_place_is_printed_as_its_gap(tmp_path, figures)
     assert legend == ["K_d = 20 kN/m per m: beta not identified\n  median anywhere in [0.1, 0.3]"]
     assert any(p.get_x() == pytest.approx(0.1) and p.get_width() == pytest.approx(0.2) for p in fig.axes[0].patches)
 
+def test_fragility_legends_stand_below_their_panels_not_over_the_curves(tmp_path, figures):
+    """In assess's fragility.png of the assessor's house under one record, each panel's legend (four
+    entries, two of two lines) sat over the middle of the panel and hid the dashed curve's rise
+    from 0.25 to 0.4 g. The legends now stand below their panels, inside the figure."""
+    rows = [dict(storey=storey, limit_state=state, records=1, median=median, median_5=median, median_95=median,
+                 beta=beta, beta_5=np.nan, beta_95=np.nan, gap_lo=lo, gap_hi=hi, warnings="", over=over)
+            for state in ("0.6 Delta_u", "collapsed")
+            for storey, median, beta, lo, hi, over in ((1.0, 0.35, 0.0, 0.3, 0.4, "records"),
+                                                       (1.0, 0.341, 0.15, np.nan, np.nan, "records and parameters"),
+                                                       (2.0, 0.14, 0.0, 0.1, 0.2, "records"))]
+    assessment_plots.fragility(pd.DataFrame(rows), "PGA [g]", tmp_path / "fragility.png", column="storey")
+    (fig,) = figures
+    fig.canvas.draw()
+    whole = fig.bbox
+    for ax in fig.axes:
+        legend, panel = ax.get_legend().get_window_extent(), ax.get_window_extent()
+        assert len(ax.get_legend().get_texts()) == 3
+        assert legend.y1 <= panel.y0, (ax.get_title(), legend, panel)  # below the panel, not over it
+        assert legend.y0 >= whole.y0 and legend.x0 >= whole.x0 and legend.x1 <= whole.x1  # inside the figure
+
+
 def write_csv(path, record, factor):
     np.savetxt(path, np.column_stack([record.t, record.ag * factor]), delimiter=",", header="time,acc", comments="")
 
