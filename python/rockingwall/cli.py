@@ -40,6 +40,9 @@ def build_parser():
 def dispatch(argv):
     if argv and argv[0] in DELEGATED:
         return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+    if argv and argv[0] == "assess":
+        from .commands import assess
+        argv = cc.records_before_lists(argv, assess.NUMBER_LISTS)
     args = build_parser().parse_args(argv)
     if not hasattr(args, "command"):
         build_parser().print_help()

@@ -38,3 +38,33 @@ def test_top_help_lists_every_command_apart_from_its_text(capsys):
         rows = [line.split() for line in lines if line.strip().startswith(name + " ")]
         assert [row[0] for row in rows] == [name], (name, lines)
         assert any(line.rstrip().endswith(text) and f"{name}  " in line for line in lines), name
+
+
+def test_assess_takes_the_records_after_its_intensities(tmp_path):
+    """`rockingwall assess --help`'s first example ends '--pga 0.1 0.2 0.35 0.5 fema --out ...', and
+    it failed: 'argument --pga: intensity 'fema': not a number' (argparse gave every token after
+    --pga to it). Records after a list of numbers are records now, with the same cases as the
+    records written first; a token that starts like a number and is none is still refused."""
+    import pandas as pd
+    wall = ["--b", "230mm", "--h", "3.2", "--W", "14.08kN/m", "--psi", "0.2", "--ensemble", "0"]
+    pulse = "gaussian:0.04,1"
+    first, after = tmp_path / "first", tmp_path / "after"
+    assert main(["assess", pulse, *wall, "--kd-values", "30kN/m/m", "--pga", "0.1", "0.2", "--out", str(first)]) == 0
+    assert main(["assess", *wall, "--kd-values", "30kN/m/m", "--pga", "0.1", "0.2", pulse, "--out", str(after)]) == 0
+    assert main(["assess", *wall, "--pga", "0.1", "--kd-values", "30kN/m/m", pulse, "--out", str(after)]) == 0
+    pd.testing.assert_frame_equal(pd.read_csv(first / "cases.csv").iloc[:1], pd.read_csv(after / "cases.csv"))
+    with pytest.raises(SystemExit) as exit_:
+        main(["assess", pulse, *wall, "--pga", "0.1", "0.2x", "--out", str(tmp_path / "bad")])
+    assert exit_.value.code == 2
+
+
+def test_records_before_lists_moves_only_what_follows_a_number_list():
+    from rockingwall.commands.common import records_before_lists
+    lists = ("--pga", "--kd-values")
+    assert records_before_lists(["assess", "--pga", "0.1", "0.2", "fema", "--out", "x"], lists) == [
+        "assess", "fema", "--pga", "0.1", "0.2", "--out", "x"]
+    assert records_before_lists(["assess", "--kd-values", "30kN/m/m", "-5", "a.AT2", "b.csv", "--pga", "0.1"],
+                                lists) == ["assess", "a.AT2", "b.csv", "--kd-values", "30kN/m/m", "-5", "--pga", "0.1"]
+    unchanged = ["assess", "elcentro", "--out", "results", "--pga", "0.3", "--table", "md", "--", "odd"]
+    assert records_before_lists(unchanged, lists) == unchanged
+    assert records_before_lists(["assess", "--pga=0.1", "fema"], lists) == ["assess", "--pga=0.1", "fema"]

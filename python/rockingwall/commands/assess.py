@@ -32,6 +32,10 @@ from . import common as cc
 from .code_options import add_code_arguments, code_checks
 
 
+# the options that take a list of numbers: the records may follow them (cc.records_before_lists)
+NUMBER_LISTS = ("--pga", "--sa", "--scale", "--kd-values")
+
+
 def parser(sub):
     p = sub.add_parser("assess", help="a wall's assessment: records x intensities x K_d, limit states, fragility",
                        description=__doc__, formatter_class=cc.Parser().formatter_class)

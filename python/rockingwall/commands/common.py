@@ -1,6 +1,7 @@
 """What every command shares: a wall from the command line, a record, errors as one line."""
 import argparse
 import pathlib
+import re
 import sys
 import warnings
 
@@ -152,6 +153,32 @@ def intensity_g(text):
         return bounds.intensity_g(text, "intensity")
     except ValueError as exc:
         raise argparse.ArgumentTypeError(str(exc)) from None
+
+
+def records_before_lists(argv, list_options):
+    """argv with the records a user wrote after a list of numbers moved in front of the options:
+    `assess --pga 0.2 0.35 fema` means the record fema, but argparse gives every token after
+    --pga to it ('intensity 'fema': not a number'). A list of `list_options` ends at the first
+    token that is no number (it does not start with a digit or a point; '30kN/m/m' is a number),
+    and what follows it up to the next option is positional. A token that starts like a number and
+    is none ('0.2x') stays in the list and is refused there, as before."""
+    argv = list(argv)
+    moved, k, in_list = [], 1, False
+    while k < len(argv):
+        token = argv[k]
+        if token == "--":
+            break
+        if token.startswith("-") and not _starts_like_number(token):
+            in_list = token.split("=", 1)[0] in list_options and "=" not in token
+        elif in_list and not _starts_like_number(token):
+            moved.append(argv.pop(k))
+            continue
+        k += 1
+    return argv[:1] + moved + argv[1:]
+
+
+def _starts_like_number(token):
+    return bool(re.match(r"[-+]?(\d|\.\d)", token))
 
 
 def load_record(spec, units="g"):
