@@ -21,6 +21,7 @@ from .building import monolithic
 from .building.trusted_run import BuildingError
 
 FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
+DIAPHRAGM_FIELDS = ("diaphragm_mass", "diaphragm_damping", "tie")  # scenes (b) and (c) only
 TRUNCATE = 3.0
 FLIP_SHARE = 0.05   # a case is flagged when this share of the ensemble or more disagrees with its nominal run
 
@@ -63,8 +64,8 @@ class Spreads:
             if not 0.0 <= value <= 2.0:
                 raise ValueError(f"spread of {name} = {value!r}: must be in [0, 2]")
 
-    def describe(self):
-        return ", ".join(f"{n} {getattr(self, n):g}" for n in FIELDS)
+    def describe(self, fields=FIELDS):
+        return ", ".join(f"{n} {getattr(self, n):g}" for n in fields)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -89,8 +90,10 @@ class Ensemble:
             out[name] = s * z[:, :, i] if name == "er" else np.exp(s * z[:, :, i])
         return out
 
-    def describe(self):
-        return f"{self.size} members, seed {self.seed}; spreads: {self.spreads.describe()}"
+    def describe(self, fields=FIELDS):
+        """the ensemble and the spreads of `fields` (those the scene has: a paper scene has no
+        diaphragm mass, damping or tie to perturb)"""
+        return f"{self.size} members, seed {self.seed}; spreads: {self.spreads.describe(fields)}"
 
 
 @dataclasses.dataclass

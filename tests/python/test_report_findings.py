@@ -271,3 +271,17 @@ def test_only_a_plausibility_warning_is_a_strict_error():
         assert common.plausible(make(DeprecationWarning), strict) == 42
     with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match="a PlausibilityWarning .--strict"):
         common.plausible(make(DeprecationWarning, PlausibilityWarning), strict)
+
+
+@pytest.mark.parametrize("scene, extra, varied", [
+    ("paper", ["--Kd", "20kN/m/m"], "psi 0.1, W 0.05, b 0.03, er 0.05, Kd 0.3, scale 0.05;"),
+    ("simply supported", ["--support", "simplySupported"], "psi 0.1, W 0.05, b 0.03, er 0.05, scale 0.05;"),
+    ("under a diaphragm with mass", ["--Kd", "20kN/m/m", "--diaphragm-mass", "200kg/m"],
+     "psi 0.1, W 0.05, b 0.03, er 0.05, Kd 0.3, scale 0.05, diaphragm_mass 0.2, diaphragm_damping 0.3, tie 1;")])
+def test_the_ensemble_names_only_the_spreads_its_scene_has(tmp_path, capsys, scene, extra, varied):
+    """assess of a wall in the paper's scene printed 'spreads: ... diaphragm_mass 0.2,
+    diaphragm_damping 0.3, tie 1': the scene has no diaphragm mass, damping or tie, and nothing
+    perturbed them. The head now lists the inputs the scene's members vary."""
+    assert assess(tmp_path, *WALL, *extra, "--pga", "0.2", "--ensemble", "4") == 0
+    (line,) = [l for l in capsys.readouterr().out.splitlines() if l.startswith("ensemble:")]
+    assert f"spreads: {varied}" in line, (scene, line)

@@ -26,6 +26,7 @@ from tqdm import tqdm
 from .. import (assessment, assessment_building, assessment_codes, assessment_codes_building, assessment_report,
                engine, intensity, limits, records, scenes, strict_json, units)
 from ..api import ENGINES, PARAPET_ON_CVODE
+from ..ensemble import DIAPHRAGM_FIELDS, FIELDS as SPREAD_FIELDS
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
@@ -71,7 +72,8 @@ def parser(sub):
 class Study:
     """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
     storey for a building), the report's head lines, the scene, the plots' title, the group column,
-    the wall (None for a building), the building (None for a wall)."""
+    the wall (None for a building), the building (None for a wall), the inputs an ensemble
+    perturbs in this scene."""
     run: object
     states: list
     head: list
@@ -80,6 +82,7 @@ class Study:
     column: str
     wall: object = None
     building: object = None
+    spread_fields: tuple = SPREAD_FIELDS
 
 
 def output_names(recs, codes):
@@ -92,7 +95,7 @@ def main(args):
         raise ValueError("--sa needs --sa-period")
     ensemble = cc.ensemble_from_args(args)
     study = building_study(args) if args.building else wall_study(args)
-    study.head.append(f"ensemble: {ensemble.describe()}; FLIPS: the nominal outcome differs in at least 5 % of it"
+    study.head.append(f"ensemble: {ensemble.describe(study.spread_fields)}; FLIPS: the nominal outcome differs in at least 5 % of it"
                       if ensemble else "ensemble: none (--ensemble 0)")
     recs = assessment.load_records(args.records, args.csv_units)
     lvs = assessment.levels(recs, args)
@@ -150,7 +153,10 @@ def wall_study(args):
 
     def run(lvs, ensemble):
         return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
-    return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall)
+    varied = tuple(f for f in SPREAD_FIELDS  # a massless or absent spring has no diaphragm to perturb
+                   if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd"))
+    return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall,
+                 spread_fields=varied)
 
 
 def building_study(args):
