@@ -7,14 +7,16 @@ def table(wall, results):
     """The wall, the scene, and a row per record: its PGA as run, the peaks (a collapsed wall's
     shown as its collapse, never as a displacement), and the ensemble's columns if one ran."""
     ensemble = any(r.ensemble is not None for r in results)
+    width = reports.record_width(results)
     lines = [f"wall: {wall.describe()}", results[0].scene.text(), f"Delta_u = {wall.delta_u * 1e3:.1f} mm",
-             f"{'record':<28}{'PGA [g]':>8}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}"
+             f"{'record':<{width}}{'PGA [g]':>8}{'peak s1 [mm]':>13}{'peak s2 [mm]':>13}{'s1/Delta_u':>11}{'impacts':>9}"
              f"  {'collapse':<22}" + ("  P(collapse)  s1 16/50/84 % [mm]" if ensemble else "")]
+    lines[-1] = lines[-1].rstrip()
     for r in results:
         collapse = f"collapsed at {r.t_collapse:.2f} s" if r.collapsed else "no"
         s1, s2, ratio = ("-", "-", "-") if r.collapsed else (f"{r.peak_s1 * 1e3:.1f}", f"{r.peak_s2 * 1e3:.1f}",
                                                              f"{r.s1_over_delta_u:.2f}")
-        line = f"{r.record[:27]:<28}{r.pga_g:>8.3g}{s1:>13}{s2:>13}{ratio:>11}{r.impacts:>9}  {collapse:<22}"
+        line = f"{r.record:<{width}}{r.pga_g:>8.3g}{s1:>13}{s2:>13}{ratio:>11}{r.impacts:>9}  {collapse:<22}"
         if r.ensemble is not None:
             e = r.ensemble
             spread = " / ".join("collapse" if v == float("inf") else f"{v * 1e3:.0f}" for v in e.s1_percentiles)

@@ -285,3 +285,29 @@ def test_the_ensemble_names_only_the_spreads_its_scene_has(tmp_path, capsys, sce
     assert assess(tmp_path, *WALL, *extra, "--pga", "0.2", "--ensemble", "4") == 0
     (line,) = [l for l in capsys.readouterr().out.splitlines() if l.startswith("ensemble:")]
     assert f"spreads: {varied}" in line, (scene, line)
+
+
+NEAR_TWINS = ["gaussian:0.04,1", "gaussian:0.04,1.5"]  # 'Gaussian D=0.04 m T=1 s at 0.1 g', 'T=1.5 s'
+
+
+def test_run_prints_every_records_whole_name(capsys):
+    """run's table cut the record's name at 27 characters: 'Gaussian D=0.04 m T=1 s at' lost
+    the intensity, and two records named alike for 27 characters would be two rows no reader can
+    tell apart. The column is now as wide as the longest name."""
+    assert main(["run", *WALL, "--Kd", "20kN/m/m", "--pga", "0.1", *NEAR_TWINS]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    header = next(k for k, line in enumerate(lines) if line.startswith("record"))
+    rows = lines[header + 1:header + 3]
+    assert [row.split("  ")[0] for row in rows] == ["Gaussian D=0.04 m T=1 s at 0.1 g", "Gaussian D=0.04 m T=1.5 s at 0.1 g"]
+    pga_end = lines[header].index("PGA [g]") + len("PGA [g]")
+    assert [row[pga_end - 3:pga_end] for row in rows] == ["0.1", "0.1"]  # the PGA column lines up
+    assert lines[header] == lines[header].rstrip()
+
+
+def test_building_prints_every_records_whole_name(capsys):
+    """building's table cut the record's name at 25 characters ('Gaussian D=0.04 m T=1 s a')."""
+    house = pathlib.Path(__file__).resolve().parents[2] / "examples" / "two-storey-brick.toml"
+    assert main(["building", str(house), *NEAR_TWINS, "--pga", "0.1"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    names = {line.split("  ")[0] for line in lines if line.startswith("Gaussian")}
+    assert names == {"Gaussian D=0.04 m T=1 s at 0.1 g", "Gaussian D=0.04 m T=1.5 s at 0.1 g"}

@@ -66,17 +66,24 @@ def _tie(s):
     return "-" if s.tie_force_N_per_m is None else f"{s.tie_force_N_per_m / 1e3:.2f}"
 
 
+def record_width(results):
+    """The record column's width: the longest record's name and two spaces (a name cut short could
+    not be told from another record's at another intensity)."""
+    return max(len("record"), *(len(r.record) for r in results)) + 2
+
+
 def table(building, results):
     """The building echoed with units, the scene, then one row per storey and record."""
+    width = record_width(results)
     lines = [building.describe(), scenes.building(building).text(), "",
-             f"{'record':<26}{'storey':>7}{'peak s1 [mm]':>14}{'peak s2 [mm]':>14}{'s1/Delta_u':>12}"
+             f"{'record':<{width}}{'storey':>7}{'peak s1 [mm]':>14}{'peak s2 [mm]':>14}{'s1/Delta_u':>12}"
              f"{'diaphragm [mm]':>16}{'floor acc [g]':>15}{'tie [kN/m]':>12}  collapse"]
     for r in results:
         for s in r.storeys:
             s1 = "-" if s.collapsed else f"{s.peak_s1_m * 1e3:.1f}"
             s2 = "-" if s.collapsed else f"{s.peak_s2_m * 1e3:.1f}"
             ratio = "-" if s.collapsed else f"{s.s1_over_delta_u:.2f}"
-            lines.append(f"{r.record[:25]:<26}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
+            lines.append(f"{r.record:<{width}}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
                          f"{s.diaphragm_peak_m * 1e3:>16.1f}{_floor(s):>15}{_tie(s):>12}  {_collapse(s)}")
     lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
                  f"floor acc: the floor the wall stands on, absolute, and tie: the tie's force on the diaphragm "
