@@ -192,3 +192,18 @@ def test_step_map_of_a_held_exchange_by_hand():
     b = step_map.LinearSlave("b", np.zeros((0, 0)), np.zeros((0, 1)), np.zeros((1, 0)), np.array([[-8.0]]), ["in"], ["out"])
     S = step_map.jacobi_step_map([a, b], [("a", "out", "b", "in"), ("b", "out", "a", "in")], 1e-3, 1)
     assert max(abs(np.linalg.eigvals(S))) == pytest.approx(2.0)
+
+
+def test_limits_command_writes_its_plot_where_it_is_told(tmp_path, capsys):
+    """`rockingwall couple-building --limits` wrote its plot into the package's source tree
+    (docs/img/building_coupling_limits.png, two folders above the package): a user's command
+    changed the documentation, and an installed package has no such folder. It writes into
+    --out (default results/) now; the document's figure is the one written with --out docs/img."""
+    import pathlib
+    from rockingwall.commands import couple_building
+    docs_png = pathlib.Path(couple_building.__file__).resolve().parents[3] / "docs" / "img" / "building_coupling_limits.png"
+    before = docs_png.stat().st_mtime_ns if docs_png.exists() else None
+    assert couple_building.main(["--limits", "--out", str(tmp_path / "out")]) == 0
+    assert (tmp_path / "out" / "building_coupling_limits.png").stat().st_size > 10000
+    assert str(tmp_path / "out" / "building_coupling_limits.png") in capsys.readouterr().out
+    assert (docs_png.stat().st_mtime_ns if docs_png.exists() else None) == before

@@ -5,9 +5,10 @@ same PGA. Each wall's peaks against the paper's scene (the same wall on the grou
 K_d equal to the diaphragm's stiffness, fixed at its far end), and the floor spectra that reach
 each wall (5 %-damped Sa of the ground and of diaphragm 1's absolute acceleration).
 
-    rockingwall couple-building --example
+    rockingwall couple-building --example [--out DIR]
 
-writes docs/img/building_coupling.png and prints the table of the document.
+writes DIR/building_coupling.png (DIR: results/; the document's figure is the one written with
+--out docs/img) and prints the table of the document.
 """
 import pathlib
 
@@ -22,7 +23,7 @@ FEMA_NAMES = ("ff01a", "ff02a")
 TIE_KD = 1e7          # N/m per m: the wall-to-diaphragm tie, stiff next to the diaphragm
 H = 5e-4              # s, macro step
 PERIODS = np.geomspace(0.05, 2.0, 40)
-PNG = pathlib.Path(__file__).resolve().parents[3] / "docs" / "img" / "building_coupling.png"
+PNG = "building_coupling.png"
 
 
 def example_records(cache_dir):
@@ -94,12 +95,12 @@ def plot(results, path):
     plt.close(fig)
 
 
-def main(cache_dir):
+def main(cache_dir, out_dir="results"):
     kd = building_scene().building_real.get("kd_1", 7e5)
     results = {}
     for rec in example_records(cache_dir):
         results[rec.name] = run_one(rec, kd)
-    plot(results, PNG)
+    plot(results, pathlib.Path(out_dir) / PNG)
     print("| record | storey | peak s1 [mm] | peak s2 [mm] | paper's scene s1 [mm] | s2 [mm] |")
     print("|---|---|---|---|---|---|")
     for name, (rows, _) in results.items():

@@ -4,9 +4,10 @@ Jacobi exchange of a wall standing on a diaphragm, measured on the scheme's exac
 with held and ramped inputs, confirmed by real runs of the master whose growth rates are
 measured; the step each tie allows; the table and the plot.
 
-    rockingwall couple-building --limits
+    rockingwall couple-building --limits [--out DIR]
 
-prints the tables of the document and writes docs/img/building_coupling_limits.png.
+prints the tables of the document and writes DIR/building_coupling_limits.png (DIR: results/; the
+document's figure is the one written with --out docs/img).
 """
 import dataclasses
 import math
@@ -14,7 +15,7 @@ import pathlib
 
 import numpy as np
 
-from .. import records
+from .. import outputs, records
 from ..coupling import linear_models, rules
 from . import scene as bs
 
@@ -27,7 +28,7 @@ STEPS_MS = (0.1, 0.25, 0.5, 1.0, 2.0, 4.0)
 # real runs: (order, H [s], m_b/m_d) on either side of the limits
 RUNS = ((2, 1e-3, 0.13), (2, 1e-3, 0.18), (1, 2.5e-4, 0.8), (1, 2.5e-4, 1.25))
 RUN_SECONDS = 1.0
-PNG = pathlib.Path(__file__).resolve().parents[3] / "docs" / "img" / "building_coupling_limits.png"
+PNG = "building_coupling_limits.png"
 CURVES = (  # (order, damping counted, label, colour)
     (1, True, "held inputs (order 1), 5 % diaphragm damping", "tab:blue"),
     (1, False, "held inputs (order 1), no damping counted", "tab:cyan"),
@@ -131,7 +132,8 @@ def plot(table, runs, path, assessor=None):
     ax.grid(True, which="both", alpha=0.3)
     fig.tight_layout()
     if path:
-        fig.savefig(path, dpi=110)
+        pathlib.Path(path).parent.mkdir(parents=True, exist_ok=True)
+        outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"))  # whole, never through a link
     return fig
 
 
@@ -161,7 +163,8 @@ def markdown(table, runs, ties):
     return "\n".join(lines)
 
 
-def main(png=PNG):
+def main(out_dir="results"):
+    png = pathlib.Path(out_dir) / PNG
     table = limit_table()
     runs = [measure_run(*r) for r in RUNS]
     ties = tie_table()

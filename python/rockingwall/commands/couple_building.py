@@ -72,6 +72,8 @@ def parse_args(argv):
                     help="measure the stability limit of docs/building-coupling.md (tables and plot)")
     ap.add_argument("--example", action="store_true",
                     help="generate the worked example of docs/building-coupling.md (plot and table)")
+    ap.add_argument("--out", default="results", metavar="DIR",
+                    help="folder for --limits' and --example's plot (default results/; docs/img: the document's)")
     ap.add_argument("--records-cache", help="folder of the converted FEMA P695 far-field records "
                                             "(default: the one `rockingwall sweep` uses)")
     return ap.parse_args(argv)
@@ -93,7 +95,7 @@ def main(argv=None):
     try:
         if a.example:
             from ..building import example  # scipy and the engine: only the example needs them
-            return example.main(a.records_cache or suites.fema_cache())
+            return example.main(a.records_cache or suites.fema_cache(), a.out)
         outputs.protect(a.from_ssp, "the --from-ssp file")
         outputs.protect(a.building, "the building file")
         outputs.protect(records.split_spec(a.record)[0], "the record")
@@ -101,7 +103,7 @@ def main(argv=None):
             outputs.check_target(a.ssp, "--ssp")
         if a.limits:
             from ..building import limits
-            return limits.main()
+            return limits.main(a.out)
         if a.building and a.from_ssp:
             raise ValueError("give --building or --from-ssp, not both")
         if a.building:
