@@ -37,13 +37,19 @@ def build_parser():
     return p
 
 
-def dispatch(argv):
-    if argv and argv[0] in DELEGATED:
-        return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+def parse(argv):
+    """The arguments of a built-in command (run, assess, building, info). assess's records may
+    follow its lists of numbers, as its examples write them (cc.records_before_lists)."""
     if argv and argv[0] == "assess":
         from .commands import assess
         argv = cc.records_before_lists(argv, assess.NUMBER_LISTS)
-    args = build_parser().parse_args(argv)
+    return build_parser().parse_args(argv)
+
+
+def dispatch(argv):
+    if argv and argv[0] in DELEGATED:
+        return importlib.import_module(DELEGATED[argv[0]][0]).main(argv[1:]) or 0
+    args = parse(argv)
     if not hasattr(args, "command"):
         build_parser().print_help()
         return 2
