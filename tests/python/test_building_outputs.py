@@ -37,6 +37,19 @@ def test_the_written_histories_are_the_filtered_ones_the_table_reads(written):
     assert upper["base_peak_acc_raw_m_s2"] > 3 * upper["base_peak_acc_m_s2"]  # what the raw grid would have shown
 
 
+def test_the_plot_names_the_scene_it_shows(written, tmp_path):
+    """building's plot was titled 'El Centro 1940 at 0.1 g: <the building's name>' only: pasted
+    into a report it did not say which scene ran (rigid or flexible in-plane walls, diaphragms with
+    mass), where every other plot does. Its title now has the scene's line, as run's plot has."""
+    from rockingwall import scenes
+    from rockingwall.building import building_file
+    _, _, fig = written
+    scene = scenes.building(building_file.read(tmp_path / "house.toml")).title
+    title = " ".join(fig._suptitle.get_text().split())
+    assert title.startswith("El Centro 1940 at 0.1 g: ") and "rigid in-plane walls" in scene
+    assert f"scene: {' '.join(scene.split())}" in title
+
+
 def test_each_storeys_panel_draws_its_wall_and_the_diaphragm_it_is_tied_to(written):
     """One panel per storey, the top storey first: its wall's s1 in blue and the diaphragm on top of
     that storey (the one its wall is tied to) in orange, both as the CSV has them, the same colours

@@ -3,7 +3,7 @@ strict JSON (null, never NaN), the time histories as CSV and a plot per record."
 import numpy as np
 import pandas as pd
 
-from .. import scenes, strict_json
+from .. import figure_titles, scenes, strict_json
 from .floor_acc import CUTOFF_HZ
 from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
@@ -182,7 +182,7 @@ def plot(building, result, histories, path):
         panel.legend(fontsize=7, loc="upper right")
         panel.grid(alpha=0.3)
     axes[-1, 0].set_xlabel("time [s]")
-    fig.suptitle(f"{result.record}: {building.name}", fontsize=9)
+    figure_titles.suptitle(fig, f"{result.record}: {building.name}\nscene: {scenes.building(building).title}", 9)
     fig.tight_layout()
     fig.savefig(path, dpi=110, format="png")
     plt.close(fig)
