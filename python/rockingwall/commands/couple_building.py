@@ -1,36 +1,19 @@
-"""Out-of-plane walls in a building: Building.fmu plus one RockingWall.fmu per storey, coupled
-through FMI 2.0 Co-Simulation by a fixed-step Jacobi master over fmpy (FMU2Slave, in-process).
+"""rockingwall couple-building: the walls of a building as FMI 2.0 co-simulation, as an FMI tool
+runs them: Building.fmu and a RockingWall.fmu per storey, exchanged by a fixed-step Jacobi master
+(second-order: inputs ramped over each macro step; --order 1 holds them); the scene also as an
+SSP 1.0 file (--ssp). The wall of storey i stands on floor i-1 and is tied to diaphragm i; the
+building comes from a building file (--building) or from --storeys, --walls, --wall and --Kd.
 
-The wall of storey i stands on floor i-1 (the ground for i = 1) and is tied to floor i:
-
-    wall_i.ag     <- building.a_diaph_{i-1}  (ag of the record for i = 1)   [m/s2, absolute, +x]
-    wall_i.u_top  <- building.u_top_i  = y_i - y_{i-1}                      [m, rel. to its base]
-    building.F_wall_i  <- wall_i.F_top                                      [N/m, on diaphragm i, +x]
-    building.F_above_i <- wall_{i+1}.F_base                                 [N/m, on diaphragm i, +x]
-    building.ag   <- ag of the record
-
-Signs (docs/model.md, docs/building.md): F_top = Kd (s2 - u_top) is the force of the wall's spring
-on the diaphragm it is tied to, F_base the force the wall puts on its base, both +x; F_wall_i is
-the force of the wall below on diaphragm i and F_above_i that of the wall above, +x; the Building
-adds them. The F_base of the wall of storey 1 goes into the ground. Each input takes one output,
-so the scene is also an SSP 1.0 system (rockingwall.ssp).
-
-Second-order coupling (`order=2`): every coupled input gets, besides its value at the
-communication point t_k, a first derivative through fmi2SetRealInputDerivatives, so the slave
-ramps it linearly over the step (both FMUs declare canInterpolateInputs; the shared FMI layer
-passes the slope to the wall's exact engine and to the Building's CVODE stepper). The derivative
-is extrapolated by the master from the last two exchanges, (v_k - v_{k-1})/H (the FMUs give no
-output derivatives: maxOutputDerivativeOrder = 0); the record's ag gets its exact secant slope
-over the step. `order=1` holds every input over the step (the scheme of `rockingwall couple`).
-
-A run whose energy residual passes half of the input work (coupling.rules.ENERGY_STOP_SHARE) has
-gone unstable: it ends with an error naming the likely cause (the mass ratio of a wall to the
-diaphragm it stands on, a tie's macro step) and the remedy, exit status 1, and nothing of it is
-printed as a result (docs/building-coupling.md, "The limit").
+Co-simulation has a stability limit: a brick wall standing on a timber floor is past it with
+ramped inputs at every macro step, and with held inputs its stiff tie needs a step of microseconds.
+A run whose energy residual passes half of the input work ends with an error naming the likely
+cause and the remedy, exit status 1, and nothing of it is printed as a result.
+`rockingwall building FILE.toml` solves the same building in one integration, stable at any mass
+ratio (docs/building-coupling.md says where the limit lies and how the coupling is made).
 
     rockingwall couple-building --storeys 2 --record elcentro --scale 0.5
     rockingwall couple-building --building examples/two-storey-brick.toml --record elcentro --pga 0.3
-    rockingwall couple-building --limits        # the stability limit's tables and plot
+    rockingwall couple-building --limits --out results   # the stability limit's tables and plot
 """
 import argparse
 import sys
