@@ -13,7 +13,9 @@ with the inputs set at t; after the step the outputs at t+H become the inputs of
 fmpy (FMU2Slave) and libcosim (libcosimpy). The command line runs each master in a child process
 (this script with --json), so an FMU that crashes or a libcosim abort ends in a message naming
 the master and the signal, not a dead interpreter; every file the child unpacks goes into a
-temporary folder removed afterwards. The ground motion is held over each step in both.
+temporary folder removed afterwards. The ground motion is held over each step in both. For the
+wall's answer rather than the coupling's, `rockingwall run --diaphragm-mass M` solves the same
+scene in one integration (no macro step, no stability limit).
 
     rockingwall couple                                  # wall 1, El Centro x 0.5, fmpy master
     rockingwall couple --master both                    # fmpy and libcosim, and their difference
