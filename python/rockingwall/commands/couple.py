@@ -14,8 +14,9 @@ fmpy (FMU2Slave) and libcosim (libcosimpy). The command line runs each master in
 (this script with --json), so an FMU that crashes or a libcosim abort ends in a message naming
 the master and the signal, not a dead interpreter; every file the child unpacks goes into a
 temporary folder removed afterwards. The ground motion is held over each step in both. For the
-wall's answer rather than the coupling's, `rockingwall run --diaphragm-mass M` solves the same
-scene in one integration (no macro step, no stability limit).
+wall's answer rather than the coupling's, `rockingwall run --Kd k --diaphragm-mass m
+--diaphragm-damping zeta --tie Kd` solves the same scene in one integration (the diaphragm's k, m
+and zeta as its stiffness, mass and damping, couple's K_d as the tie; no macro step, no limit).
 
     rockingwall couple                                  # wall 1, El Centro x 0.5, fmpy master
     rockingwall couple --master both                    # fmpy and libcosim, and their difference
