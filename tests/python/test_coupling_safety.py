@@ -179,3 +179,17 @@ def test_energy_check_share():
     assert coupling_rules.energy_check(np.array([0.0, 2.1]), np.array([0.0, 200.0]))[1] is False
     share, ok = coupling_rules.energy_check(np.array([0.0, 1.0]), np.array([0.0, 0.0]))
     assert math.isinf(share) and not ok
+
+
+def test_the_plot_names_its_record_and_scene(fmus, tmp_path, capsys, figures):
+    """couple's plot was titled 'Wall 1 + diaphragm (m = 2000 kg/m, k = 700 kN/m per m, zeta = 0.05),
+    K_d = 100 kN/m per m, monolithic': no record, no intensity, and not the scene's words that
+    `couple` prints. Its title now names the record as run and the scene."""
+    out = tmp_path / "c.csv"
+    assert couple_command.main([f"--wall-fmu={fmus[0]}", f"--diaphragm-fmu={fmus[1]}", f"--out={out}",
+                                f"--plot={tmp_path / 'c.png'}", "--monolithic", "--t-end", "2"]) == 0
+    scene = json.loads(out.with_suffix(".json").read_text())["scene"]["description"]
+    (fig,) = figures
+    title = " ".join(fig._suptitle.get_text().split())
+    assert title.startswith("El Centro 1940 x0.5, wall 1, monolithic"), title
+    assert f"scene: {scene}" in title and scene in capsys.readouterr().out

@@ -49,7 +49,6 @@ from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, R
                                        check_options, macro_step, parse_settings, unstable_message,
                                        wall_start_values)
 from ..names import HINGE_LAWS as LAWS
-from ..units import format_kd
 from .common import scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
@@ -185,8 +184,9 @@ def main(argv=None):
     print(scene.text())
     pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
     output.save_csv(r, a.out)
-    title = (f"Wall {a.wall} + diaphragm (m = {a.m:g} kg/m, k = {format_kd(a.k)}, zeta = {a.zeta:g}), "
-             f"K_d = {format_kd(a.Kd)}, " + ("monolithic" if a.monolithic else f"H = {a.macro_step:g} s"))
+    record = records.load(a.record).scaled(a.scale).name  # the children ran it: here only its name
+    title = (f"{record}, wall {a.wall}, " + ("monolithic (one CVODE)" if a.monolithic else
+                                             f"co-simulation, H = {a.macro_step:g} s") + f"\nscene: {scene.title}")
     output.plot(r, a.plot, title, results.get("libcosim") if len(masters) == 2 else None)
     for m in masters:
         report(m, results[m], a)

@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 
-from .. import outputs
+from .. import figure_titles, outputs
 from . import rules
 
 
@@ -40,7 +40,7 @@ def plot(r, path, title, other=None):
     ax[2].set_ylabel("energy [J/m]")
     ax[2].set_xlabel("time [s]")
     ax[2].legend(loc="upper left", fontsize=8)
-    fig.suptitle(title)
+    figure_titles.suptitle(fig, title, 10)
     fig.tight_layout()
     outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--plot")
     plt.close(fig)
