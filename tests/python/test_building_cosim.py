@@ -125,3 +125,17 @@ def test_the_coupled_commands_name_their_scene(build_dir, tmp_path, capsys):
                               "in storeys 1, 2): each wall stands on the floor below and is tied to the diaphragm "
                               "above; pinched Bouc-Wen diaphragms with mass and damping\nleft out: ")
     assert "solved by co-simulation: Building.fmu and a RockingWall.fmu per wall, Jacobi, H = 0.001 s" in printed
+
+
+def test_a_collapsed_wall_is_printed_as_its_collapse_not_as_peaks(capsys):
+    """couple-building printed 'wall in storey 1: peak s1 0.14255 m, s2 0.02015 m' and, lines
+    later, that the wall collapsed at 10.335 s: the 'peak' was the state it fell from (wall 1 is
+    0.15 m thick), which a reader takes for a displacement. A collapsed wall's line is now its
+    collapse; a standing wall's line keeps its peaks."""
+    assert couple_building.main(["--storeys", "2", "--record", "elcentro", "--scale", "0.5"]) == 0
+    lines = [l for l in capsys.readouterr().out.splitlines() if l.startswith("wall in storey")]
+    assert [l.split(" and ")[0] for l in lines] == ["wall in storey 1: collapsed at t = 10.335 s",
+                                                    "wall in storey 2: collapsed at t = 10.668 s"]
+    assert couple_building.main(["--storeys", "2", "--record", "elcentro", "--scale", "0.1", "--t-end", "5"]) == 0
+    lines = [l for l in capsys.readouterr().out.splitlines() if l.startswith("wall in storey")]
+    assert len(lines) == 2 and all(" peak s1 " in l and "collapsed" not in l for l in lines)
