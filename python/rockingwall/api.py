@@ -91,8 +91,9 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
     stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
     process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode).
     diaphragm: a building.description.Diaphragm (its stiffness, mass, damping): the wall tied to it
-    by `tie` [N/m per m] (the scene solver; engine is then ignored); None: the paper's scene, the
-    wall's top spring K_d ending at a fixed point.
+    by `tie` [N/m per m] (the scene solver; engine is then ignored). The wall's own K_d is then not
+    used: the diaphragm's stiffness and the tie take its place, and the result's scene names both.
+    None: the paper's scene, the wall's top spring K_d ending at a fixed point.
     ensemble: an ensemble.Ensemble (or its size): the run's robustness, the same case for walls
     perturbed within the inputs' uncertainty (on the exact engine or the scene solver, whatever
     `engine`), summarised in the result's `ensemble` (rockingwall.ensemble)."""
