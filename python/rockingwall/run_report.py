@@ -23,6 +23,10 @@ def table(wall, results):
             line += f"  {e.collapse_probability:>11.2f}  {spread}" + ("  FLIPS" if e.flips else "")
         lines.append(line.rstrip())
     lines += reports.sensitivity_lines(results)
+    lines += reports.near_collapse_lines([(r.record, r.s1_over_delta_u) for r in results
+                                          if not r.collapsed and r.ensemble is None],
+                                         "--ensemble 100 runs 100 walls within the inputs' uncertainty and gives "
+                                         "the probability of collapse (docs/robustness.md)")
     engines = sorted({r.engine for r in results if r.engine != "exact"})
     lines += [f"solved by {name}" for name in engines]
     if ensemble:

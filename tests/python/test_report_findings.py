@@ -311,3 +311,41 @@ def test_building_prints_every_records_whole_name(capsys):
     lines = capsys.readouterr().out.splitlines()
     names = {line.split("  ")[0] for line in lines if line.startswith("Gaussian")}
     assert names == {"Gaussian D=0.04 m T=1 s at 0.1 g", "Gaussian D=0.04 m T=1.5 s at 0.1 g"}
+
+
+def fema_record(name):
+    """The path of a FEMA P695 far-field component (converted once into the records' cache)."""
+    from rockingwall.sweep import suites
+    return next(r.path for r in suites.fema_farfield(suites.fema_cache()) if r.name == name)
+
+
+def test_a_standing_wall_near_collapse_is_said_to_be_one_sample(capsys):
+    """The assessor's upper wall under its retrofitted roof (200 kN/m per m, 200 kg/m) and ff07a at
+    0.5 g stands with s1 = 171 mm, 0.78 Delta_u, and `run` printed that one number, no more: an
+    ensemble of 100 such walls collapses in 30 % of its members. A standing wall past 0.6 Delta_u
+    (C8's usable displacement) now gets a line that it is near collapse and how to get the spread;
+    with --ensemble the spread is in the table and the line is not printed, and a wall well short
+    of it gets none."""
+    from rockingwall.building import reports
+    args = ["run", *WALL, "--Kd", "200kN/m/m", "--diaphragm-mass", "200kg/m", str(fema_record("ff07a"))]
+    assert main([*args, "--pga", "0.5"]) == 0
+    near = [l for l in capsys.readouterr().out.splitlines() if l.startswith("near collapse:")]
+    assert len(near) == 1 and "ff07a at 0.5 g (s1 = 0.78 Delta_u)" in near[0] and "--ensemble 100" in near[0]
+    assert main([*args, "--pga", "0.2"]) == 0
+    assert "near collapse" not in capsys.readouterr().out
+    assert reports.near_collapse_lines([("a", 0.59), ("b", 0.6)], "x") == [
+        "near collapse: b (s1 = 0.60 Delta_u): standing past 0.6 Delta_u, where rocking is chaotic and a small change "
+        "of the inputs can turn standing into collapse; one run is one sample of that spread: x"]
+
+
+def test_the_building_names_its_storeys_near_collapse(tmp_path, capsys):
+    """building printed the retrofitted house's upper wall standing at 0.91 Delta_u under ff07a at
+    0.5 g with nothing said; the line names the storey and points to assess --building."""
+    ff07a = fema_record("ff07a")
+    house = pathlib.Path(__file__).resolve().parents[2] / "examples" / "two-storey-brick.toml"
+    retrofit = tmp_path / "retrofit.toml"
+    retrofit.write_text(house.read_text().replace('stiffness = "20 kN/m/m"', 'stiffness = "200 kN/m/m"'))
+    assert main(["building", str(retrofit), str(ff07a), "--pga", "0.5"]) == 0
+    near = [l for l in capsys.readouterr().out.splitlines() if l.startswith("near collapse:")]
+    assert len(near) == 1 and near[0].startswith("near collapse: ff07a at 0.5 g, storey 2 (s1 = 0.91 Delta_u)")
+    assert "assess --building" in near[0]

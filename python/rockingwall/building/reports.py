@@ -51,6 +51,22 @@ def sensitivity_lines(results):
             for r in results if r.sensitive]
 
 
+# s1/Delta_u of a standing wall from which its one run is a sample of a chaotic response: NZSEE
+# C8's usable displacement (0.6 Delta_u), past which a small change of the inputs can topple it
+NEAR_COLLAPSE = 0.6
+
+
+def near_collapse_lines(cases, remedy):
+    """A line naming the standing walls past NEAR_COLLAPSE x Delta_u (cases: (label, s1/Delta_u)
+    of standing walls), with where their spread comes from (`remedy`); none if there are none."""
+    near = [f"{label} (s1 = {ratio:.2f} Delta_u)" for label, ratio in cases if ratio >= NEAR_COLLAPSE]
+    if not near:
+        return []
+    return [f"near collapse: {'; '.join(near)}: standing past {NEAR_COLLAPSE:g} Delta_u, where rocking is chaotic "
+            f"and a small change of the inputs can turn standing into collapse; one run is one sample of that "
+            f"spread: {remedy}"]
+
+
 def _spread(result):
     """Where the spread of a sensitive result comes from: the tie of a scene with one, else an ensemble."""
     if getattr(result, "scene", None) is not None and result.scene.key == "paper":
@@ -93,7 +109,11 @@ def table(building, results):
         lines.append(f"warning: {FLOOR_ACC_UNRESOLVED}")
     if any(r.tie_resolved is False for r in results):
         lines.append(f"warning: {TIE_FORCE_UNRESOLVED}")
-    return "\n".join(lines + sensitivity_lines(results))
+    near = near_collapse_lines([(f"{r.record}, storey {s.storey}", s.s1_over_delta_u) for r in results
+                                for s in r.storeys if not s.collapsed],
+                               "rockingwall assess --building FILE RECORDS --pga ... runs an ensemble of buildings "
+                               "and gives each storey's probability of collapse (docs/robustness.md)")
+    return "\n".join(lines + sensitivity_lines(results) + near)
 
 
 def to_json(building, results):
