@@ -4,6 +4,8 @@ probability and 16/50/84 % peaks; a collapsed wall shown as 'collapsed at T s', 
 displacement. As Markdown or as aligned text (`rockingwall assess --table`, Result.summary())."""
 import math
 
+from .building.reports import near_collapse_lines
+
 COLUMNS = ("record", "PGA [g]", "Sa [g]", "case", "peak s1 [mm]", "peak s2 [mm]", "s1/0.6Δu",
            "limit states reached", "P(collapse)", "s1 16/50/84 % [mm]", "flag")
 # the code checks' columns (assess --code), each shown when its code was checked
@@ -118,6 +120,9 @@ def result_summary(result, fmt="md"):
         notes.append(f"P(collapse) and the s1 spread: an ensemble of {e.size} runs within the inputs' uncertainty"
                      + (f" ({e.failed} failed)" if e.failed else "") + (
                          "; FLIPS: the nominal outcome differs in at least 5 % of it" if e.flips else ""))
+    if result.ensemble is None and not result.collapsed:
+        notes += near_collapse_lines([(result.record, result.s1_over_delta_u)],
+                                     "simulate(..., ensemble=100) gives the probability of collapse")
     if fmt == "md":
         return markdown([row], result.scene.text(), notes=notes)
     return "\n".join([text([row]), result.scene.text(), *notes])

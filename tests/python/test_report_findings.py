@@ -333,6 +333,10 @@ def test_a_standing_wall_near_collapse_is_said_to_be_one_sample(capsys):
     assert len(near) == 1 and "ff07a at 0.5 g (s1 = 0.78 Delta_u)" in near[0] and "--ensemble 100" in near[0]
     assert main([*args, "--pga", "0.2"]) == 0
     assert "near collapse" not in capsys.readouterr().out
+    wall = rw.Wall.make(b=0.23, h=3.6, W=14904.0, psi=0.2013, Kd=200e3, warn=False)
+    from rockingwall.building.description import Diaphragm
+    result = rw.simulate(wall, rw.read_at2(fema_record("ff07a")).to_pga(0.5), diaphragm=Diaphragm(200e3, 200.0))
+    assert "near collapse: ff07a at 0.5 g (s1 = 0.78 Delta_u)" in result.summary()  # the API's report table too
     assert reports.near_collapse_lines([("a", 0.59), ("b", 0.6)], "x") == [
         "near collapse: b (s1 = 0.60 Delta_u): standing past 0.6 Delta_u, where rocking is chaotic and a small change "
         "of the inputs can turn standing into collapse; one run is one sample of that spread: x"]
