@@ -52,9 +52,33 @@ def test_a_resumed_building_sweep_reuses_rows_until_the_file_changes(building, t
     assert sweep(building, out) == 0
     assert "nothing to do" in capsys.readouterr().out
     building.write_text(building.read_text().replace('stiffness = "20 kN/m/m"', 'stiffness = "200 kN/m/m"'))
+    capsys.readouterr()
     assert sweep(building, out) == 0
     rows = pd.read_csv(out)
     assert (rows.kd_kN == 200.0).sum() == 4  # the upper storey's runs again, with the new roof
+    # the edited file's runs replace the old ones (set aside, named): the file holds one study. Its
+    # runs were named by the file's content and kept beside the new ones, and ida drew the two
+    # buildings as one ('2 runs' of one record and intensity)
+    assert len(rows) == 8 and rows.run_id.is_unique
+    assert capsys.readouterr().err.count("computed from other inputs (settings differ") == 8
+    (aside,) = tmp_path.glob("sweep.csv.set-aside-*")
+    assert (pd.read_csv(aside).kd_kN == 20.0).sum() == 4
+
+
+def test_ida_refuses_a_file_with_two_versions_of_a_building(building, tmp_path):
+    """A results file with runs of one building name from two versions of its file (an earlier
+    sweep's rows, or two files joined) is refused by ida, not drawn as one building."""
+    from rockingwall.sweep import ida
+    out, other = tmp_path / "sweep.csv", tmp_path / "other.csv"
+    assert sweep(building, out) == 0
+    building.write_text(building.read_text().replace('mass = "600 kg/m"', 'mass = "650 kg/m"'))
+    assert sweep(building, other) == 0
+    joined = tmp_path / "joined.csv"
+    joined.write_text(out.read_text() + "".join(other.read_text().splitlines(keepends=True)[1:]).replace(
+        "|storey", "|copy|storey"))  # distinct run_ids, as files of earlier versions had
+    with pytest.raises(ValueError, match="in the file twice, computed from different inputs"):
+        ida.load(joined, "storey 2")
+    assert len(ida.load(out, "storey 2")) == 4
 
 
 def test_rows_of_the_earlier_format_are_computed_again(building, tmp_path, monkeypatch, capsys):
@@ -67,7 +91,7 @@ def test_rows_of_the_earlier_format_are_computed_again(building, tmp_path, monke
     capsys.readouterr()
     assert sweep(building, out) == 0
     said = capsys.readouterr()
-    assert said.err.count("computed from other inputs (settings differ): run again") == 8
+    assert said.err.count("computed from other inputs (settings differ") == 8
     assert "8 runs (0 errors, 0 killed or timed out, 0 already done)" in said.out
     rows = pd.read_csv(out)
     assert len(rows) == 8 and rows.peak_F_top.isna().all()

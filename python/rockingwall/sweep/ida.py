@@ -50,8 +50,21 @@ def load(path, wall=None, model=None, hinge_law=None):
         if given not in values:
             raise ValueError(f"{path}: no successful runs with {option} {given} (here: {', '.join(values)})")
         d = d[d[column] == given]
+    _check_one_study(d, path)
     return d
 
+
+def _check_one_study(d, path):
+    """Refuses runs of one case (K_d, record, intensity) computed from different inputs: a building
+    file edited under the same name, a wall's values changed between two sweeps into one file, or
+    two files joined. Their peaks would be mixed into one curve and one fragility."""
+    keys = d.groupby(["kd_kN", "record", "pga_g"], dropna=False)["key"].nunique()
+    twice = keys[keys > 1]
+    if len(twice):
+        kd, record, pga = twice.index[0]
+        raise ValueError(f"{path}: {len(twice)} runs of {d.wall.iloc[0]} are in the file twice, computed from "
+                         f"different inputs (e.g. {record} at PGA {pga:.3g} g, K_d {kd:g} kN/m per m): one results "
+                         "file holds one study; sweep the inputs you mean into a new --out file")
 
 def scene(d):
     """The scene of a frame load() chose (one wall and model): scenes.swept's."""

@@ -78,4 +78,4 @@ def why_stale(old, new):
     for col, label in PARTS:
         if old.get(col, "") != new.get(col, ""):
             return f"{label} differs"
-    return "settings differ"
+    return "settings differ (the wall's or building file's values, the scale, the stop time)"
