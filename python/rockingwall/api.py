@@ -9,7 +9,7 @@ import types
 import numpy as np
 import pandas as pd
 
-from . import bounds, fmi2sim, names, paths, robustness, scenes, scratch
+from . import bounds, fmi2sim, limits, names, paths, robustness, scenes, scratch
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .building import floor_acc, monolithic, reports
 from .building.description import TIE_DEFAULT
@@ -71,12 +71,13 @@ class Result:
     def peaks(self):
         """The numbers users print: a dict with units in the keys; a collapsed wall's peaks, s1/Delta_u
         and tie force None, as the table's '-' (the run stops at its instability point: they are no
-        displacements; its collapse is t_collapse_s)."""
+        displacements; its collapse is t_collapse_s); near_collapse (limits.NEAR_COLLAPSE_NOTE)."""
         fallen = self.collapsed
         return {"peak_s1_m": None if fallen else self.peak_s1, "peak_s2_m": None if fallen else self.peak_s2,
                 "peak_F_top_N_per_m": None if fallen else self.peak_F_top,
                 "s1_over_Delta_u": None if fallen else self.s1_over_delta_u,
-                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts}
+                "collapsed": self.collapsed, "t_collapse_s": self.t_collapse, "impacts": self.impacts,
+                "near_collapse": limits.near_collapse(self.s1_over_delta_u, fallen)}
 
     def summary(self, fmt="md"):
         """The report table of this run (fmt 'md' or 'text'): PGA, peaks, s1/0.6 Delta_u, limit

@@ -20,6 +20,17 @@ QUANTITIES = {"s1": ("m", "peak_s1"), "s2": ("m", "peak_s2"), "F_top": ("N/m", "
 # The largest force threshold [N/m]: 100 MN per metre of wall is beyond any wall-to-floor tie (a
 # 10 m masonry wall weighs about 200 kN/m). Displacements are bounded by the wall's height.
 MAX_FORCE = 1e8
+# NZSEE C8's usable displacement as a share of Delta_u (its Delta_m): a standing wall past it is
+# near collapse, where rocking is chaotic and one run is one sample of a spread
+USABLE_SHARE = 0.6
+NEAR_COLLAPSE_NOTE = (f"near_collapse: the wall stands with s1 at {USABLE_SHARE:g} Delta_u or more (NZSEE C8's usable "
+                      "displacement), where rocking is chaotic and a small change of the inputs can turn standing "
+                      "into collapse: its peaks are one sample of a spread that an ensemble gives (docs/robustness.md)")
+
+
+def near_collapse(s1_over_delta_u, collapsed):
+    """A standing wall at or past the usable displacement (USABLE_SHARE x Delta_u)."""
+    return not collapsed and s1_over_delta_u >= USABLE_SHARE
 DEFAULTS = ("0.6 Delta_u: s1 >= 0.6*Delta_u", "Delta_u: s1 >= 1.0*Delta_u")
 _FORM = re.compile(r"^\s*(?:(?P<name>[^:]+):)?\s*(?P<q>s1|s2|F_top)\s*>=\s*(?P<value>.+?)\s*$")
 _MULTIPLE = re.compile(r"^(?P<k>[0-9.eE+-]+)\s*\*\s*(?P<ref>Delta_u|b)$")

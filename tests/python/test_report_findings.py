@@ -353,3 +353,17 @@ def test_the_building_names_its_storeys_near_collapse(tmp_path, capsys):
     near = [l for l in capsys.readouterr().out.splitlines() if l.startswith("near collapse:")]
     assert len(near) == 1 and near[0].startswith("near collapse: ff07a at 0.5 g, storey 2 (s1 = 0.91 Delta_u)")
     assert "assess --building" in near[0]
+    # --json says it too, per storey, with its note (programs read no table)
+    assert main(["building", str(retrofit), str(ff07a), "--pga", "0.5", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert [s["near_collapse"] for s in out["runs"][0]["storeys"]] == [False, True]
+    assert out["notes"]["near_collapse"].startswith("near_collapse: the wall stands with s1 at 0.6 Delta_u")
+
+
+def test_run_json_marks_a_wall_near_collapse(capsys):
+    args = ["run", *WALL, "--Kd", "200kN/m/m", "--diaphragm-mass", "200kg/m", str(fema_record("ff07a")), "--json"]
+    assert main([*args, "--pga", "0.5"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["runs"][0]["near_collapse"] is True and "near_collapse" in out["notes"]
+    assert main([*args, "--pga", "0.2"]) == 0
+    assert json.loads(capsys.readouterr().out)["runs"][0]["near_collapse"] is False

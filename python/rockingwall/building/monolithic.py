@@ -6,7 +6,7 @@ import math
 
 import numpy as np
 
-from .. import engine, scene_engine
+from .. import engine, limits, scene_engine
 from . import floor_acc, tie_force
 from .concurrent_runs import InOrder
 from .trusted_run import check_energy
@@ -58,6 +58,7 @@ class StoreyResult:
         stops at its instability point: they are no displacements; its collapse is t_collapse_s)."""
         d = dataclasses.asdict(self)
         d["s1_over_Delta_u"] = self.s1_over_delta_u
+        d["near_collapse"] = limits.near_collapse(self.s1_over_delta_u, self.collapsed)
         if self.collapsed:
             d.update(peak_s1_m=None, peak_s2_m=None, s1_over_Delta_u=None)
         return d

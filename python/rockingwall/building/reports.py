@@ -3,7 +3,7 @@ strict JSON (null, never NaN), the time histories as CSV and a plot per record."
 import numpy as np
 import pandas as pd
 
-from .. import figure_titles, scenes, strict_json
+from .. import figure_titles, limits, scenes, strict_json
 from .floor_acc import CUTOFF_HZ
 from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
@@ -51,18 +51,13 @@ def sensitivity_lines(results):
             for r in results if r.sensitive]
 
 
-# s1/Delta_u of a standing wall from which its one run is a sample of a chaotic response: NZSEE
-# C8's usable displacement (0.6 Delta_u), past which a small change of the inputs can topple it
-NEAR_COLLAPSE = 0.6
-
-
 def near_collapse_lines(cases, remedy):
-    """A line naming the standing walls past NEAR_COLLAPSE x Delta_u (cases: (label, s1/Delta_u)
-    of standing walls), with where their spread comes from (`remedy`); none if there are none."""
-    near = [f"{label} (s1 = {ratio:.2f} Delta_u)" for label, ratio in cases if ratio >= NEAR_COLLAPSE]
+    """A line naming the standing walls near collapse (limits.near_collapse; cases: (label,
+    s1/Delta_u) of standing walls), with where their spread comes from (`remedy`); none if none."""
+    near = [f"{label} (s1 = {ratio:.2f} Delta_u)" for label, ratio in cases if limits.near_collapse(ratio, False)]
     if not near:
         return []
-    return [f"near collapse: {'; '.join(near)}: standing past {NEAR_COLLAPSE:g} Delta_u, where rocking is chaotic "
+    return [f"near collapse: {'; '.join(near)}: standing past {limits.USABLE_SHARE:g} Delta_u, where rocking is chaotic "
             f"and a small change of the inputs can turn standing into collapse; one run is one sample of that "
             f"spread: {remedy}"]
 
@@ -126,7 +121,7 @@ def to_json(building, results):
                    "notes": {"peak_s1_m": COLLAPSED_PEAKS_NOTE, "base_peak_acc_m_s2": FLOOR_ACC_NOTE,
                              "base_peak_acc_raw_m_s2": FLOOR_ACC_RAW_NOTE,
                              "tie_force_N_per_m": TIE_FORCE_NOTE, "tie_force_raw_N_per_m": TIE_FORCE_RAW_NOTE,
-                             "peak_sensitivity": SENSITIVITY_NOTE},
+                             "peak_sensitivity": SENSITIVITY_NOTE, "near_collapse": limits.NEAR_COLLAPSE_NOTE},
                    "runs": [r.to_dict() for r in results]})
 
 

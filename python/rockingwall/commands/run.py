@@ -4,7 +4,7 @@ import sys
 
 from tqdm import tqdm
 
-from .. import outputs, run_report, strict_json
+from .. import limits, outputs, run_report, strict_json
 from ..api import ENGINES, simulate
 from . import common as cc
 from .building import run_building
@@ -58,6 +58,7 @@ def main(args):
         print(f"wrote {csv_path} and {png_path}", file=sys.stderr)
     if args.json:
         strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
+                          "notes": {"near_collapse": limits.NEAR_COLLAPSE_NOTE},
                           "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
                                         **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}),
                                         **({"peak_sensitivity": r.peak_sensitivity, "sensitive": r.sensitive}
