@@ -45,6 +45,25 @@ def running(pid):
     return stat[stat.rindex(")") + 2] not in "ZX"
 
 
+def test_an_orphan_whose_pid_was_never_written_is_stopped(tmp_path):
+    """The killed-worker test failed in CI: the stand-in fmi2sim killed its worker before the worker
+    had written the run's pid file, and the sweep, which stopped only the pids written there, left
+    the run going. Orphans are now found by their command line, which names their run's folder."""
+    from rockingwall.sweep import execute, fmi2sim_task
+    run_dir = tmp_path / f"{fmi2sim_task.RUN_PREFIX}x"
+    run_dir.mkdir()
+    orphan = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)", str(run_dir / "summary.json")])
+    other = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(60)", str(tmp_path / "elsewhere")])
+    try:
+        execute.stop_orphans(tmp_path)
+        assert orphan.wait(timeout=10) == -9
+        assert other.poll() is None  # a process that names no run folder of this sweep is left alone
+    finally:
+        for p in (orphan, other):
+            p.kill()
+            p.wait()
+
+
 def test_finding09_killed_dask_worker_leaves_no_temporary_files(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path,
                                                                private_tmp, capsys):
     """A Dask worker killed in the middle of a run (OOM): the runs become 'killed' rows, run again

@@ -174,20 +174,17 @@ class ClusterError(RockingWallError):
 
 def stop_orphans(tmp_root):
     """SIGKILL the fmi2sim processes of this sweep still running after its workers are gone (a
-    worker killed in the middle of a run leaves its fmi2sim behind). Only pids recorded in this
-    sweep's own folder, and only while their command line still names that folder (a pid can be
-    reused by an unrelated process)."""
-    for pid_file in pathlib.Path(tmp_root).glob(f"*/{fmi2sim_task.PID_FILE}"):
+    worker killed in the middle of a run leaves its fmi2sim behind): every process whose command
+    line names one of this sweep's run folders (fmi2sim_task.command puts its summary file there).
+    Found in /proc rather than from a pid the worker wrote down: a worker killed just after it
+    started a run had not always written it (the orphan then ran on)."""
+    mark = os.path.join(str(tmp_root), fmi2sim_task.RUN_PREFIX).encode()
+    for cmdline in pathlib.Path("/proc").glob("[0-9]*/cmdline"):
         try:
-            pid = int(pid_file.read_text())
-            cmdline = pathlib.Path(f"/proc/{pid}/cmdline").read_bytes()
+            if mark in cmdline.read_bytes():
+                os.kill(int(cmdline.parent.name), signal.SIGKILL)
         except (OSError, ValueError):
-            continue  # finished already
-        if str(pid_file.parent).encode() in cmdline:
-            try:
-                os.kill(pid, signal.SIGKILL)
-            except OSError:
-                pass
+            continue  # finished meanwhile
 
 
 def _rm_tree(path):

@@ -31,24 +31,22 @@ def _error_line(stderr):
     return (errors or lines or ["no message"])[-1]
 
 
+RUN_PREFIX = "run_"  # a run's folder in the sweep's: fmi2sim's command line names it (its summary file)
+
+
 def _run_dir(tmp_root):
     """A private folder for one run, inside the sweep's folder when this machine has it (a
-    LocalCluster), so whatever a killed run leaves is removed with the sweep's folder."""
+    LocalCluster), so whatever a killed run leaves is removed with the sweep's folder, and an
+    fmi2sim its killed worker left running is found by its command line (execute.stop_orphans)."""
     root = tmp_root if tmp_root and os.path.isdir(tmp_root) else None
-    return tempfile.mkdtemp(prefix="run_", dir=root) if root else scratch.make("rw_sweep_run_")
+    return tempfile.mkdtemp(prefix=RUN_PREFIX, dir=root) if root else scratch.make("rw_sweep_run_")
 
 
-PID_FILE = "fmi2sim.pid"
-
-
-def _run_recorded(cmd, env, tmp, timeout):
-    """subprocess.run, with the child's pid written into its run folder: if this worker is killed
-    (its fmi2sim then runs on as an orphan), the sweep finds it there and stops it
-    (execute.stop_orphans)."""
+def _run_child(cmd, env, timeout):
+    """subprocess.run that never leaves its child running when the wait ends early (a timeout,
+    Ctrl-C, SIGTERM)."""
     with subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, errors="replace",
                           env=env) as proc:
-        with open(os.path.join(tmp, PID_FILE), "w") as f:
-            f.write(str(proc.pid))
         try:
             out, err = proc.communicate(timeout=timeout)
         except BaseException:  # a timeout, Ctrl-C, SIGTERM: never leave the child running
@@ -63,7 +61,7 @@ def _simulate(spec, fmi2sim, fmu, rtol, tmp, timeout, t0):
     # TMPDIR: fmi2sim unpacks the FMU into this run's folder, so a run killed before it could
     # clean up leaves nothing behind once the folder is removed
     env = dict(os.environ, TMPDIR=tmp)
-    proc = _run_recorded(command(spec, fmi2sim, fmu, rtol, summary), env, tmp, timeout)
+    proc = _run_child(command(spec, fmi2sim, fmu, rtol, summary), env, timeout)
     if proc.returncode < 0:  # a signal: the OOM killer, a timeout of the caller, ...
         return make_row(spec, KILLED, f"fmi2sim killed by signal {-proc.returncode}: {_error_line(proc.stderr)}",
                     elapsed_s=time.perf_counter() - t0)
