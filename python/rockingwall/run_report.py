@@ -28,12 +28,20 @@ def table(wall, results):
                                          "--ensemble 100 runs 100 walls within the inputs' uncertainty and gives "
                                          "the probability of collapse (docs/robustness.md)")
     engines = sorted({r.engine for r in results if r.engine != "exact"})
-    lines += [f"solved by {name}" for name in engines]
+    lines += [f"solved by {_solver_words(name)}" for name in engines]
     if ensemble:
         e = next(r.ensemble for r in results if r.ensemble is not None)
         lines.append(f"ensemble: {e.size} runs per record within the inputs' uncertainty; FLIPS: the nominal "
                      "outcome (collapse, a limit state) differs in at least 5 % of them")
     return "\n".join(lines)
+
+
+def _solver_words(engine):
+    """An engine's name as a reader takes it: 'scene (exact)' is the scene solver, which runs the
+    wall, its tie and the diaphragm in one integration."""
+    if engine.startswith("scene (") and engine.endswith(")"):
+        return f"the scene solver ({engine[7:-1]}): the wall, its tie and the diaphragm in one integration"
+    return engine
 
 
 def plot(result, path):

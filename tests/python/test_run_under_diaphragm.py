@@ -129,3 +129,11 @@ def test_the_written_history_has_the_tie_force_the_table_reads(tmp_path, capsys)
     (csv,) = tmp_path.glob("*.csv")
     written = np.max(np.abs(np.genfromtxt(csv, delimiter=",", names=True)["F_top_25Hz"]))
     assert 0.95 * run["peak_F_top_N_per_m"] <= written <= run["peak_F_top_N_per_m"] * (1 + 1e-9)
+
+
+def test_the_solver_line_says_what_ran(capsys):
+    """run under a diaphragm with mass ended with 'solved by scene (exact)', the engine's internal
+    name; it now says the scene solver ran the wall, its tie and the diaphragm in one integration."""
+    assert main(["run", *WALL_ARGS, "--diaphragm-mass", "200kg/m", "--pga", "0.1", "elcentro"]) == 0
+    assert capsys.readouterr().out.splitlines()[-1] == (
+        "solved by the scene solver (exact): the wall, its tie and the diaphragm in one integration")
