@@ -3,7 +3,8 @@ integration. The building file (TOML) gives each storey's wall, diaphragm and ti
 (docs/your-building.md); prints per storey and record the peaks of s1 and s2 relative to the
 wall's own base, s1/Delta_u, collapse and its time, the diaphragm's peak relative to its supports,
 the peak absolute acceleration of the floor the wall stands on and the tie's force on the
-diaphragm (both filtered at 25 Hz).
+diaphragm (both filtered at 25 Hz). A wall standing at 0.6 Delta_u or more is named as near
+collapse: one run is one sample there, and `rockingwall assess --building` gives the spread.
 
 With --code nzsee ntc asce41, each storey's wall is also checked by the codes where it stands in
 the building (docs/codes.md), with a line where a code passes a wall that the run collapses or
