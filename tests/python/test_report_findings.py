@@ -367,3 +367,15 @@ def test_run_json_marks_a_wall_near_collapse(capsys):
     assert out["runs"][0]["near_collapse"] is True and "near_collapse" in out["notes"]
     assert main([*args, "--pga", "0.2"]) == 0
     assert json.loads(capsys.readouterr().out)["runs"][0]["near_collapse"] is False
+
+
+def test_a_gap_of_one_level_says_that_level_is_mixed():
+    """assess on the house printed 'no run below 0.1 reaches 0.6 Delta_u and every run above 0.1
+    does' for an ensemble where 5 % of the members at 0.1 g reached it: true, but silent on the one
+    level that decided the fit. It now says that at 0.1 some runs do."""
+    from rockingwall.sweep import fragility
+    said = fragility.gap_message((0.1, 0.1), "0.6 Delta_u")
+    assert said.startswith("no run below 0.1 reaches 0.6 Delta_u, every run above it does and at 0.1 some do")
+    assert said.endswith("the median is at 0.1")
+    assert fragility.gap_message((0.1, 0.2), "collapse").startswith(
+        "no run below 0.1 reaches collapse and every run above 0.2 does")
