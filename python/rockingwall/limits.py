@@ -26,14 +26,14 @@ USABLE_SHARE = 0.6
 NEAR_COLLAPSE_NOTE = (f"near_collapse: the wall stands with s1 at {USABLE_SHARE:g} Delta_u or more (NZSEE C8's usable "
                       "displacement), where rocking is chaotic and a small change of the inputs can turn standing "
                       "into collapse: its peaks are one sample of a spread that an ensemble gives (docs/robustness.md)")
+DEFAULTS = ("0.6 Delta_u: s1 >= 0.6*Delta_u", "Delta_u: s1 >= 1.0*Delta_u")
+_FORM = re.compile(r"^\s*(?:(?P<name>[^:]+):)?\s*(?P<q>s1|s2|F_top)\s*>=\s*(?P<value>.+?)\s*$")
+_MULTIPLE = re.compile(r"^(?P<k>[0-9.eE+-]+)\s*\*\s*(?P<ref>Delta_u|b)$")
 
 
 def near_collapse(s1_over_delta_u, collapsed):
     """A standing wall at or past the usable displacement (USABLE_SHARE x Delta_u)."""
     return not collapsed and s1_over_delta_u >= USABLE_SHARE
-DEFAULTS = ("0.6 Delta_u: s1 >= 0.6*Delta_u", "Delta_u: s1 >= 1.0*Delta_u")
-_FORM = re.compile(r"^\s*(?:(?P<name>[^:]+):)?\s*(?P<q>s1|s2|F_top)\s*>=\s*(?P<value>.+?)\s*$")
-_MULTIPLE = re.compile(r"^(?P<k>[0-9.eE+-]+)\s*\*\s*(?P<ref>Delta_u|b)$")
 
 
 @dataclasses.dataclass(frozen=True)

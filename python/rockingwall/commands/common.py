@@ -169,7 +169,7 @@ def records_before_lists(argv, list_options):
         if token == "--":
             break
         if token.startswith("-") and not _starts_like_number(token):
-            in_list = token.split("=", 1)[0] in list_options and "=" not in token
+            in_list = token in list_options  # '--pga=0.1' is a whole option: what follows is no list
         elif in_list and not _starts_like_number(token):
             moved.append(argv.pop(k))
             continue

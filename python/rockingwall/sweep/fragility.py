@@ -58,12 +58,10 @@ def gap_median(gap, digits=2):
 
 def gap_message(gap, what):
     """What a fit whose data do not overlap (Fragility.gap) can say, in words naming `what`."""
-    where = gap_median(gap)
-    if gap[0] == gap[1]:  # one level's runs are mixed: those below all short of it, those above all past it
-        return (f"no run below {gap[0]:.2g} reaches {what}, every run above it does and at {gap[0]:.2g} some do: the "
-                f"data do not overlap, so beta is not identified (0) and the median is {where}")
-    return (f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does: the data do not "
-            f"overlap, so beta is not identified (0) and the median is {where}")
+    lo, hi = gap
+    seen = (f"no run below {lo:.2g} reaches {what}, every run above it does and at {lo:.2g} some do" if lo == hi
+            else f"no run below {lo:.2g} reaches {what} and every run above {hi:.2g} does")  # lo == hi: that level mixed
+    return f"{seen}: the data do not overlap, so beta is not identified (0) and the median is {gap_median(gap)}"
 
 
 def fit(im, exceeded, what="collapse"):

@@ -66,6 +66,7 @@ def _check_one_study(d, path):
                          f"different inputs (e.g. {record} at PGA {pga:.3g} g, K_d {kd:g} kN/m per m): one results "
                          "file holds one study; sweep the inputs you mean into a new --out file")
 
+
 def scene(d):
     """The scene of a frame load() chose (one wall and model): scenes.swept's."""
     return scenes.swept(d.model.iloc[0])
