@@ -9,7 +9,7 @@ from scipy import special
 
 from . import figure_titles
 from .assessment import KD_COLUMN, group_label
-from .sweep.fragility import gap_median
+from .sweep.fragility import clipped, gap_median
 
 
 def colours(values):
@@ -98,7 +98,7 @@ def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):
                 gap = (r.get("gap_lo", np.nan), r.get("gap_hi", np.nan))
                 if np.isfinite(gap[0]):  # where the median may be: shaded, and said on a second line
                     label += f"\n  median {gap_median(gap, 3)}"
-                    ax.axvspan(*gap, color=colour, alpha=0.12, lw=0)
+                    ax.axvspan(*clipped(gap, top), color=colour, alpha=0.12, lw=0)
             ax.plot(x, p, color=colour, ls="-" if solid else "--", lw=1.2, label=label)
             if solid and r["beta"] != 0 and np.isfinite(r["median_5"]) and np.isfinite(r["median_95"]):
                 ax.axvspan(r["median_5"], r["median_95"], color=colour, alpha=0.12)

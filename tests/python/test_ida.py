@@ -1,7 +1,9 @@
 """The analysis of a sweep's results file (rockingwall ida): every good row kept past a damaged
 line, a run written twice counted once, garbage in an 'ok' row named with its line, a single K_d
 plotted, not a traceback. Each test named after a finding failed on the code before the fix."""
+import re
 import pandas as pd
+import pytest
 
 from rockingwall.commands import ida as ida_command
 from rockingwall.sweep import ida
@@ -80,7 +82,7 @@ def test_a_building_storey_needs_only_its_name(tmp_path, capsys):
     assert "runs of 2 walls (house: storey 1, house: storey 2): choose one with --wall" in capsys.readouterr().err
     assert ida_command.main([str(path), "--wall", "house: storey 2", "--out", str(tmp_path / "plots")]) == 0
     assert len(ida.load(path, "house: storey 2")) == 8 and (tmp_path / "plots" / "fragility.png").exists()
-    assert "K_d [kN/m per m]   median [g]" in capsys.readouterr().out  # a stiffness per metre of wall
+    assert re.search(r"K_d \[kN/m per m\] +median \[g\]", capsys.readouterr().out)  # a stiffness per metre of wall
     assert ida_command.main([str(path), "--wall", "house: storey 2", "--model", "flexibleTop",
                              "--out", str(tmp_path / "plots")]) == 2
     assert "no successful runs with --model flexibleTop (here: building)" in capsys.readouterr().err
@@ -142,6 +144,31 @@ def test_a_gap_of_one_level_is_a_median_at_it(tmp_path):
     assert fits[5.0].gap == (0.3, 0.3)
     assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
         "K_d = 5 kN/m per m: median at 0.3 g, beta not identified"]
+
+
+def test_a_median_above_every_intensity_run_is_said_to_be_above_it(tmp_path, capsys):
+    """Three records that all stand below 0.4 g, one of them collapsing at 0.4 g, the highest
+    intensity run: ida printed the median as 0.400 g, where half the runs would reach collapse,
+    and the warning 'every run above it does' of intensities never run. The data put the median
+    above 0.4 g; the table, the warning and the legend say so, and the shading stays on the plot."""
+    path = synthetic_results(tmp_path)
+    d = pd.read_csv(path)
+    d = d[d.kd_kN == 5.0]
+    d = pd.concat([d, d[d.record == "r1"].assign(record="r3", run_id=lambda r: r.run_id.str.replace("r1", "r3"))])
+    d["collapsed"] = (d.pga_g == 0.4) & (d.record == "r2")
+    d.to_csv(path, index=False, lineterminator="\n")
+    assert ida_command.main([str(path), "--out", str(tmp_path / "plots")]) == 0
+    out = capsys.readouterr().out
+    assert re.search(r"\n +5 +above 0.4 +0.00 +12  \(beta not identified\)", out)
+    assert ("warning: K_d = 5 kN/m per m: at 0.4, 1 of 3 runs reach collapse (fewer than half); no run below it "
+            "does; no intensity above it was run: the data do not overlap, so beta is not identified (0) and the "
+            "median is above 0.4 g") in out
+    fig, fits = ida.fragility_figure(ida.load(path))
+    assert fits[5.0].gap == (pytest.approx(0.4), float("inf"))
+    assert [t.get_text() for t in fig.axes[0].get_legend().get_texts()] == [
+        "K_d = 5 kN/m per m: median above 0.4 g, beta not identified"]
+    (span,) = fig.axes[0].patches
+    assert fig.axes[0].get_xlim()[1] < 1.0
 
 
 def test_a_record_standing_at_one_level_only_is_drawn(tmp_path, figures):

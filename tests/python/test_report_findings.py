@@ -372,10 +372,44 @@ def test_run_json_marks_a_wall_near_collapse(capsys):
 def test_a_gap_of_one_level_says_that_level_is_mixed():
     """assess on the house printed 'no run below 0.1 reaches 0.6 Delta_u and every run above 0.1
     does' for an ensemble where 5 % of the members at 0.1 g reached it: true, but silent on the one
-    level that decided the fit. It now says that at 0.1 some runs do."""
+    level that decided the fit. It says how many runs at that level reach it, and where that puts
+    the median: 2 of 40 at 0.1 and every run at 0.2 put it between them."""
     from rockingwall.sweep import fragility
-    said = fragility.gap_message((0.1, 0.1), "0.6 Delta_u")
-    assert said.startswith("no run below 0.1 reaches 0.6 Delta_u, every run above it does and at 0.1 some do")
-    assert said.endswith("the median is at 0.1")
+    est = fragility.fit_tables(np.array([0.1, 0.2]), np.full((2, 2), 20.0), np.array([[2.0, 20.0], [0.0, 20.0]]),
+                               what="0.6 Delta_u")
+    said = next(w for w in est.warnings if "overlap" in w)
+    assert said.startswith("at 0.1, 2 of 40 runs reach 0.6 Delta_u (fewer than half); no intensity below it was "
+                           "run; every run above it does")
+    assert said.endswith("the median is anywhere in [0.1, 0.2]")
     assert fragility.gap_message((0.1, 0.2), "collapse").startswith(
         "no run below 0.1 reaches collapse and every run above 0.2 does")
+
+
+def test_a_median_above_every_intensity_run_is_not_placed_at_the_highest():
+    """assess --building on the house at 0.1 and 0.3 g (ensembles of 20) printed for the ground
+    storey 'collapsed (over the records and parameters): median at 0.3, beta 0' where 1 of the 40
+    members at 0.3 g collapsed and no higher intensity was run: the data put the median above 0.3
+    g, not at it (a report would read a 50 % chance of collapse at 0.3 g where the runs give 2.5 %).
+    The line, the warning, fragility.csv and the plot's legend now say 'above 0.3'; where more than
+    half reach it at the lowest level run, 'below'; where half do, 'at'."""
+    from rockingwall import assessment, assessment_plots, assessment_report
+    from rockingwall.sweep import fragility
+    levels, n = np.array([0.1, 0.3]), np.full((2, 2), 20.0)
+    above = fragility.fit_tables(levels, n, np.array([[0.0, 1.0], [0.0, 0.0]]))
+    assert above.fit.gap == (pytest.approx(0.3), np.inf) and above.fit.theta == pytest.approx(0.3)
+    assert any(w.startswith("at 0.3, 1 of 40 runs reach collapse (fewer than half); no run below it does; no "
+                            "intensity above it was run") and w.endswith("the median is above 0.3")
+               for w in above.warnings)
+    below = fragility.fit_tables(levels, n, np.array([[19.0, 20.0], [20.0, 20.0]]))
+    assert below.fit.gap == (0.0, pytest.approx(0.1)) and fragility.gap_median(below.fit.gap) == "below 0.1"
+    half = fragility.fit_tables(levels, n, np.array([[0.0, 20.0], [0.0, 0.0]]))
+    assert half.fit.gap == pytest.approx((0.3, 0.3)) and fragility.gap_median(half.fit.gap) == "at 0.3"
+    frag = pd.DataFrame([dict(limit_state="collapsed", records=2, median=0.3, median_5=0.3, median_95=0.3, beta=0.0,
+                              beta_5=0.0, beta_95=0.0, gap_lo=0.3, gap_hi=np.inf, warnings="",
+                              over="records and parameters")])
+    line = assessment_report.fragility_line(dict(frag.iloc[0], **{assessment.KD_COLUMN: np.nan}), assessment.KD_COLUMN)
+    assert "median above 0.3, beta 0 (not identified)" in line
+    fig = assessment_plots.fragility_figure(frag, "PGA [g]")
+    assert "median above 0.3" in " ".join(t.get_text() for t in fig.axes[0].get_legend().get_texts())
+    (span,) = fig.axes[0].patches
+    assert np.isfinite(span.get_extents().x1)

@@ -19,13 +19,36 @@ class Fragility:
     theta: float   # median: the IM at which half the runs reach the limit state
     beta: float    # lognormal standard deviation; 0 where the data do not overlap (a step)
     n_runs: int
-    gap: tuple = None   # (lo, hi) of IM where the data do not overlap: theta is anywhere inside
+    gap: tuple = None   # where the data do not overlap, (lo, hi) of IM: the median may be anywhere inside
+    mixed: "MixedLevel" = None   # the one level of such a fit where some runs reach the limit state
 
     def __call__(self, im):
         x = np.log(np.asarray(im, dtype=float) / self.theta)
         if self.beta == 0:
             return np.where(x < 0, 0.0, np.where(x > 0, 1.0, 0.5))
         return special.ndtr(x / self.beta)
+
+
+@dataclasses.dataclass(frozen=True)
+class MixedLevel:
+    """The level of a fit whose data do not overlap at which some runs reach the limit state and
+    some do not, with the levels run next to it (None: none on that side)."""
+    level: float
+    reached: float
+    runs: float
+    lower: float = None
+    higher: float = None
+
+    @classmethod
+    def of(cls, levels, n, z):
+        """The mixed level of the counts (levels, n, z per level), or None where no level is mixed."""
+        mixed = np.flatnonzero((z > 0) & (n - z > 0) & (n > 0))
+        if mixed.size != 1:
+            return None
+        j, run = int(mixed[0]), np.flatnonzero(n > 0)
+        lower, higher = run[run < j], run[run > j]
+        return cls(float(levels[j]), float(z[j]), float(n[j]), float(levels[lower[-1]]) if lower.size else None,
+                   float(levels[higher[0]]) if higher.size else None)
 
 
 def counts(im, collapsed):
@@ -52,15 +75,31 @@ def no_estimate_message(status, what):
 
 def gap_median(gap, digits=2):
     """Where the median of a fit whose data do not overlap lies, in words: 'at x' where the gap is
-    one level (whose runs are mixed), else 'anywhere in [lo, hi]'."""
-    return f"at {gap[0]:.{digits}g}" if gap[0] == gap[1] else f"anywhere in [{gap[0]:.{digits}g}, {gap[1]:.{digits}g}]"
+    one level (whose runs are mixed, half reaching the limit state), 'above x' or 'below x' where no
+    level was run on that side, else 'anywhere in [lo, hi]'."""
+    lo, hi = (f"{end:.{digits}g}" for end in gap)
+    if gap[0] == gap[1]:
+        return f"at {lo}"
+    if np.isinf(gap[1]):
+        return f"above {lo}"
+    return f"below {hi}" if gap[0] == 0 else f"anywhere in [{lo}, {hi}]"
 
 
-def gap_message(gap, what):
-    """What a fit whose data do not overlap (Fragility.gap) can say, in words naming `what`."""
-    lo, hi = gap
-    seen = (f"no run below {lo:.2g} reaches {what}, every run above it does and at {lo:.2g} some do" if lo == hi
-            else f"no run below {lo:.2g} reaches {what} and every run above {hi:.2g} does")  # lo == hi: that level mixed
+def clipped(gap, top):
+    """The gap with an open upper end (no level run above it) drawn up to `top`."""
+    return gap[0], min(gap[1], max(top, gap[0]))
+
+
+def gap_message(gap, what, mixed=None):
+    """What a fit whose data do not overlap (Fragility.gap, .mixed) can say, in words naming `what`."""
+    if mixed is None:
+        seen = f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does"
+    else:
+        below = "no run below it does" if mixed.lower is not None else "no intensity below it was run"
+        above = "every run above it does" if mixed.higher is not None else "no intensity above it was run"
+        half = ("fewer than half" if 2 * mixed.reached < mixed.runs else
+                "more than half" if 2 * mixed.reached > mixed.runs else "half")
+        seen = f"at {mixed.level:.2g}, {mixed.reached:g} of {mixed.runs:g} runs reach {what} ({half}); {below}; {above}"
     return f"{seen}: the data do not overlap, so beta is not identified (0) and the median is {gap_median(gap)}"
 
 
@@ -68,14 +107,17 @@ def fit(im, exceeded, what="collapse"):
     """The MLE of (theta, beta). ValueError where there is none: no run or every run reaches the
     limit state, the share reaching it does not rise with the intensity, or one intensity only.
     Where no run overlaps (every run below some intensity stays short, every run above reaches it)
-    beta is 0 and theta anywhere in the gap: theta is then the gap's geometric mean."""
+    beta is 0 and theta anywhere in the gap: theta is then the gap's geometric mean, or the level
+    whose runs are mixed where there is one (the gap then says which side of it the median is on:
+    probit.fit)."""
     levels, n, z = counts(im, exceeded)
     fits = probit.fit(np.log(levels), n[None, :], z[None, :])
     status = int(fits.status[0])
     if status not in (probit.INTERIOR, probit.SEPARATED):
         raise ValueError(no_estimate_message(status, what))
-    gap = tuple(np.exp(fits.gap[0])) if status == probit.SEPARATED else None
-    return Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap)
+    gap = tuple(float(x) for x in np.exp(fits.gap[0])) if status == probit.SEPARATED else None
+    return Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap,
+                     MixedLevel.of(levels, n, z) if gap else None)
 
 
 MIN_RECORDS = 10  # below this the dispersion beta is poorly constrained (FEMA P695 uses 22 pairs)
@@ -140,9 +182,10 @@ def fit_tables(levels, n, z, n_boot=200, seed=1, what="collapse"):
     if status not in (probit.INTERIOR, probit.SEPARATED):
         return Estimate(None, n_records=n_records, warnings=tuple(notes + [no_estimate_message(status, what)]))
     gap = tuple(float(x) for x in np.exp(fits.gap[0])) if status == probit.SEPARATED else None
+    mixed = MixedLevel.of(levels, n.sum(axis=0), z.sum(axis=0)) if gap else None
     if gap:
-        notes.append(gap_message(gap, what))
-    best = Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap)
+        notes.append(gap_message(gap, what, mixed))
+    best = Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap, mixed)
     boot = fits.status[1:]
     used = (boot != probit.NONE) & (boot != probit.ALL) & (boot != probit.ONE_LEVEL)
     if used.sum() < 0.8 * n_boot or (boot[used] != probit.INTERIOR).sum() >= 0.05 * n_boot:

@@ -122,10 +122,14 @@ def _name_scene(fig, d, head="", fontsize=8):
 
 def fragility_table(fits, n_records):
     """The fits of fragility_plot as lines to print, with what the data cannot support."""
-    lines = ["K_d [kN/m per m]   median [g]   beta   runs"]
+    # a median the data do not place is where it may be ('above 0.3'), in a column as wide as that
+    medians = {kd: fragility.gap_median(f.gap, 3) if f.gap else f"{f.theta:.3f}" for kd, f in fits.items()}
+    width = max([len("median [g]"), *map(len, medians.values())])
+    lines = [f"K_d [kN/m per m] {'median [g]':>{width + 2}}   beta   runs"]
     for kd, f in fits.items():
-        lines.append(f"{kd:16g} {f.theta:12.3f} {f.beta:6.2f} {f.n_runs:6d}" + ("  (beta not identified)" if f.gap else ""))
-    lines += [f"  warning: K_d = {kd:g} kN/m per m: {fragility.gap_message(f.gap, 'collapse')} g"
+        lines.append(f"{kd:16g} {medians[kd]:>{width + 2}} {f.beta:6.2f} {f.n_runs:6d}"
+                     + ("  (beta not identified)" if f.gap else ""))
+    lines += [f"  warning: K_d = {kd:g} kN/m per m: {fragility.gap_message(f.gap, 'collapse', f.mixed)} g"
               for kd, f in fits.items() if f.gap]
     if n_records < fragility.MIN_RECORDS:
         lines.append(f"  warning: only {n_records} record{'s' if n_records != 1 else ''} (fewer than "
@@ -152,7 +156,7 @@ def fragility_figure(d):
         if f.gap is None:
             ax.plot(x, f(x), color=color, label=f"K_d = {kd:g} kN/m per m: median {f.theta:.3f} g, beta {f.beta:.2f}")
         else:
-            ax.axvspan(*f.gap, color=color, alpha=0.12, lw=0)
+            ax.axvspan(*fragility.clipped(f.gap, x[-1]), color=color, alpha=0.12, lw=0)
             ax.plot(x, f(x), "--", color=color, label=f"K_d = {kd:g} kN/m per m: median {fragility.gap_median(f.gap, 3)} g, "
                                                        "beta not identified")
     ax.set_xlabel("PGA [g]")

@@ -7,7 +7,12 @@ Where it does not exist the row says why (status):
     INTERIOR   the maximum exists with c > C_FLAT: theta = exp(-a/c), beta = 1/c;
     SEPARATED  every run below some level stays short and every run above it reaches the limit
                state (equal at one level at most): the likelihood grows as beta -> 0, theta is
-               anywhere in the gap (its log-midpoint is returned);
+               anywhere in the gap (its log-midpoint is returned). Where one level is mixed, the
+               median is on the side of it where half the runs would be: above it, up to the next
+               level run, where fewer than half reach the limit state there; below it, down to the
+               level run before, where more do (at it where half do), and an open side (no level
+               run there) leaves it unbounded that way (the gap returned); theta is the mixed
+               level, where the likelihood's supremum puts the step;
     FLAT       the share reaching it does not rise with the intensity: the supremum over c > 0
                is at c -> 0, beta -> inf, theta -> 0 or inf;
     NONE, ALL  no run or every run reaches it; ONE_LEVEL  every run at one level."""
@@ -47,6 +52,20 @@ def classify(x, n, z):
     status[~reach.any(axis=1)] = NONE
     status[~short.any(axis=1)] = ALL
     return status, np.column_stack([max_short, min_reach])
+
+
+def median_bounds(x, n, z, level):
+    """(rows x 2) where the median lies, in x, for rows separated at one mixed level (x = level):
+    toward the next level run on the side where half the runs would reach the limit state
+    (-inf or inf where no level was run on that side), the level itself where half do."""
+    at = x[None, :] == level[:, None]
+    share = (z * at).sum(axis=1) / (n * at).sum(axis=1)
+    run = n > 0
+    above = np.where(run & (x > level[:, None]), x, np.inf).min(axis=1)
+    below = np.where(run & (x < level[:, None]), x, -np.inf).max(axis=1)
+    lo = np.where(share > 0.5, below, level)
+    hi = np.where(share < 0.5, above, level)
+    return np.column_stack([lo, hi])
 
 
 def log_likelihood(a, c, x, n, z):
@@ -115,6 +134,8 @@ def fit(x, n, z):
         theta[ok], beta[ok] = np.exp(-a[~flat] / c[~flat]), 1.0 / c[~flat]
     sep = status == SEPARATED
     theta[sep], beta[sep] = np.exp(gap[sep].mean(axis=1)), 0.0
+    mixed = sep & (gap[:, 0] == gap[:, 1])  # theta at the mixed level, the gap where the median may be
+    gap[mixed] = median_bounds(x, n[mixed], z[mixed], gap[mixed, 0])
     flat = status == FLAT
     if flat.any():  # beta -> inf; theta -> inf if fewer than half reach the limit state, 0 if more
         share = z[flat].sum(axis=1) / n[flat].sum(axis=1)
