@@ -171,6 +171,20 @@ def test_a_median_above_every_intensity_run_is_said_to_be_above_it(tmp_path, cap
     assert fig.axes[0].get_xlim()[1] < 1.0
 
 
+def test_the_kd_maps_colour_scale_reads_in_millimetres(tmp_path):
+    """ida on a building sweep (one K_d, the upper storey standing at 0.1 g only) labelled the
+    colour scale of its median peaks '3.4 x 10^1' to '4.1 x 10^1': a log scale over less than a
+    decade. Its ticks are plain numbers now ('34' ... '41' mm), as on a wall sweep's maps."""
+    d = ida.load(synthetic_results(tmp_path))
+    d = d[d.kd_kN == 5.0].assign(peak_s1=lambda r: 0.0345 + 0.01 * r.pga_g)
+    fig = ida.kd_map_figure(d)
+    fig.canvas.draw()
+    bars = [ax for ax in fig.axes if ax.get_label() == "<colorbar>"]
+    labels = [t.get_text() for bar in bars for t in bar.get_yticklabels(which="both") if t.get_text()]
+    assert len(bars) == 2 and labels
+    assert all(re.fullmatch(r"\d+(\.\d+)?", t) for t in labels), labels
+
+
 def test_a_record_standing_at_one_level_only_is_drawn(tmp_path, figures):
     """The IDA curves were lines without markers: a record standing at one intensity and collapsing
     at the next (wall 1 on 500 kN/m per m at 0.2 and 0.5 g) was a line of one point, which draws

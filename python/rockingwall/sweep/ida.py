@@ -8,6 +8,7 @@ import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+import matplotlib.ticker
 import numpy as np
 
 from .. import figure_titles, outputs, scenes
@@ -179,6 +180,25 @@ def fragility_plot(d, path):
 
 
 def kd_map(d, path):
+    fig = kd_map_figure(d)
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
+    plt.close(fig)
+
+
+def plain_numbers(colorbar):
+    """A log colour scale's ticks as plain numbers: over less than a decade matplotlib labels them
+    '3.7 x 10^1', which no one reads as 37 mm at a glance (the minor ticks are labelled only then:
+    over decades they would crowd)."""
+    plain = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    colorbar.ax.yaxis.set_major_formatter(plain)
+    within_a_decade = colorbar.norm.vmax < 10 * colorbar.norm.vmin
+    colorbar.ax.yaxis.set_minor_formatter(plain if within_a_decade else matplotlib.ticker.NullFormatter())
+    colorbar.ax.tick_params(which="both", labelsize=7)
+
+
+def kd_map_figure(d):
+    """Median peaks s1 and s2 per K_d and PGA (cells), the median run's collapse grey, and the
+    16/50/84 % collapse contours."""
     kds = np.array(sorted(d.kd_kN.unique()))
     pgas = np.array(sorted(d.pga_g.unique()))
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.4), sharey=True)
@@ -202,9 +222,8 @@ def kd_map(d, path):
         ax.set_yticks(np.arange(len(pgas)), [f"{x:g}" for x in pgas], fontsize=7)
         ax.set_xlabel("K_d [kN/m per m]")
         ax.set_title(f"median peak {label} [mm]; grey: median run collapses", fontsize=9)
-        fig.colorbar(mesh, ax=ax)
+        plain_numbers(fig.colorbar(mesh, ax=ax))
     axes[0].set_ylabel("PGA [g]")
     _name_scene(fig, d)
     fig.tight_layout()
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
-    plt.close(fig)
+    return fig
