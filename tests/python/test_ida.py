@@ -91,12 +91,14 @@ def test_a_building_storey_needs_only_its_name(tmp_path, capsys):
 def test_a_fragility_the_data_cannot_shape_says_so(tmp_path, capsys):
     """Records that all stand below 0.3 g and all collapse above it leave beta unidentified and the
     median anywhere in the gap. ida printed 'median 0.346 g, beta 0.00' and drew a solid step, as
-    if both were known; it now says so in the table, the warnings and the legend (dashed, shaded)."""
+    if both were known; it now says so in the table, the warnings and the legend (dashed, shaded).
+    The warning said 'no run below 0.3 reaches collapse and every run above 0.4 does', of
+    intensities that were not run where 0.3 and 0.4 g are the gap's own levels: 'at or below'."""
     path = synthetic_results(tmp_path)  # both records stand at 0.3 g and collapse at 0.4 g for K_d = 5
     assert ida_command.main([str(path), "--ida-kd", "5", "--out", str(tmp_path / "plots")]) == 0
     out = capsys.readouterr().out
     assert "(beta not identified)" in out
-    assert "K_d = 5 kN/m per m: no run below 0.3 reaches collapse and every run above 0.4 does" in out
+    assert "K_d = 5 kN/m per m: no run at or below 0.3 reaches collapse and every run at or above 0.4 does" in out
     assert "only 2 records (fewer than 10)" in out
     fig, fits = ida.fragility_figure(ida.load(path).query("kd_kN == 5"))
     (line,) = fig.axes[0].get_lines()[1:]

@@ -382,7 +382,7 @@ def test_a_gap_of_one_level_says_that_level_is_mixed():
                            "run; every run above it does")
     assert said.endswith("the median is anywhere in [0.1, 0.2]")
     assert fragility.gap_message((0.1, 0.2), "collapse").startswith(
-        "no run below 0.1 reaches collapse and every run above 0.2 does")
+        "no run at or below 0.1 reaches collapse and every run at or above 0.2 does")
 
 
 def test_a_median_above_every_intensity_run_is_not_placed_at_the_highest():

@@ -93,7 +93,7 @@ def clipped(gap, top):
 def gap_message(gap, what, mixed=None):
     """What a fit whose data do not overlap (Fragility.gap, .mixed) can say, in words naming `what`."""
     if mixed is None:
-        seen = f"no run below {gap[0]:.2g} reaches {what} and every run above {gap[1]:.2g} does"
+        seen = f"no run at or below {gap[0]:.2g} reaches {what} and every run at or above {gap[1]:.2g} does"
     else:
         below = "no run below it does" if mixed.lower is not None else "no intensity below it was run"
         above = "every run above it does" if mixed.higher is not None else "no intensity above it was run"
