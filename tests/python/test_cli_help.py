@@ -97,3 +97,13 @@ def test_every_help_example_parses(command, argv):
         assert cli.parse(argv).command is not None
     else:
         importlib.import_module(DELEGATED[command][0]).parse_args(argv[1:])
+
+
+@pytest.mark.parametrize("command,default", [("run", "default 0: none)"), ("assess", "default 100; 0: none)")])
+def test_ensemble_help_says_its_default_once(command, default, capsys):
+    """`rockingwall run --help` said '--ensemble N  members per case (default 0: none; 0: none)'."""
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    text = " ".join(capsys.readouterr().out.split())
+    said = text[text.index("--ensemble N members"):][:60]
+    assert said.startswith(f"--ensemble N members per case ({default}"), said

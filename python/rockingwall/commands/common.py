@@ -236,7 +236,7 @@ def add_ensemble_arguments(parser, default):
     g = parser.add_argument_group(
         "robustness: the case run again for an ensemble of walls within the inputs' uncertainty (docs/robustness.md)")
     g.add_argument("--ensemble", type=int, default=default, metavar="N",
-                   help=f"members per case (default {default}{': none' if not default else ''}; 0: none)")
+                   help=f"members per case (default {default}{': none' if not default else '; 0: none'})")
     g.add_argument("--seed", type=int, default=1, help="the ensemble's seed (default 1): the same members every run")
     defaults = Spreads()
     g.add_argument("--spread", action="append", default=[], metavar="NAME=VALUE",
