@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib import animation
 from tqdm import tqdm
 
-from . import outputs
+from . import figure_titles, outputs, scenes
 from .api import simulate
 from .units import format_kd
 
@@ -44,6 +44,38 @@ def spring(x0, x1, y, coils=6, amp=0.04):
     return xs, ys
 
 
+def figure(wall, rec, t_end, exaggerate):
+    """The animation's figure before its first frame: the wall, its spring and the ground over the
+    record's first t_end seconds, titled with the record, the wall and its scene. Returns (figure,
+    (lower body, upper body, spring, label, record marker))."""
+    b, h = wall.params["b"], wall.params["h"]
+    t_acc, acc = rec.t, rec.ag / 9.81
+    fig, (ax, ax_ag) = plt.subplots(2, 1, figsize=(3.6, 4.8), gridspec_kw=dict(height_ratios=[4, 1]), dpi=72)
+    ax.set_aspect("equal")
+    ax.set_xlim(-0.6, 0.9)
+    ax.set_ylim(-0.3, h + 0.15)
+    ax.axis("off")
+    ax.plot([-0.6, 0.9], [0, 0], color="0.3", lw=2)
+    ax.plot([0.75, 0.75], [h - 0.15, h + 0.15], color="0.3", lw=3)  # the diaphragm
+    lower_patch = plt.Polygon(np.zeros((4, 2)), closed=True, fc="#c8734a", ec="k")
+    upper_patch = plt.Polygon(np.zeros((4, 2)), closed=True, fc="#d98c5f", ec="k")
+    ax.add_patch(lower_patch)
+    ax.add_patch(upper_patch)
+    (spring_line,) = ax.plot([], [], color="tab:blue", lw=1.2)
+    label = ax.text(-0.58, -0.08, "", fontsize=7, va="top")
+    # wrapped to the figure's width: a GIF 260 pixels wide cut the record's intensity off
+    figure_titles.suptitle(fig, f"{rec.name}: b = {b:g} m, h = {h:g} m, K_d = {format_kd(wall.params['Kd'])}\n"
+                                f"scene: {scenes.paper(wall.params).title}; rotations drawn x{exaggerate:g}", 7)
+    ax_ag.plot(t_acc[t_acc <= t_end], acc[t_acc <= t_end], color="0.4", lw=0.5)
+    (marker,) = ax_ag.plot([], [], "o", color="tab:red", ms=3)
+    ax_ag.set_xlim(0, t_end)
+    ax_ag.set_xlabel("t [s]", fontsize=7)
+    ax_ag.set_ylabel("ag [g]", fontsize=7)
+    ax_ag.tick_params(labelsize=6)
+    fig.tight_layout()
+    return fig, (lower_patch, upper_patch, spring_line, label, marker)
+
+
 def animate(wall, rec, out, t_end=20.0, speed=1.0, fps=12, exaggerate=5.0):
     """Write the GIF of `wall` under the record `rec` (its first t_end seconds) to `out` (its folder
     must exist): `speed` simulated seconds per second of GIF, `fps` frames per second, rotations
@@ -59,28 +91,7 @@ def animate(wall, rec, out, t_end=20.0, speed=1.0, fps=12, exaggerate=5.0):
     q1 = 2 * s1 / h
     q2 = 2 * s2 / h - q1
 
-    fig, (ax, ax_ag) = plt.subplots(2, 1, figsize=(3.6, 4.6), gridspec_kw=dict(height_ratios=[4, 1]), dpi=72)
-    ax.set_aspect("equal")
-    ax.set_xlim(-0.6, 0.9)
-    ax.set_ylim(-0.3, h + 0.15)
-    ax.axis("off")
-    ax.plot([-0.6, 0.9], [0, 0], color="0.3", lw=2)
-    ax.plot([0.75, 0.75], [h - 0.15, h + 0.15], color="0.3", lw=3)  # the diaphragm
-    lower_patch = plt.Polygon(np.zeros((4, 2)), closed=True, fc="#c8734a", ec="k")
-    upper_patch = plt.Polygon(np.zeros((4, 2)), closed=True, fc="#d98c5f", ec="k")
-    ax.add_patch(lower_patch)
-    ax.add_patch(upper_patch)
-    (spring_line,) = ax.plot([], [], color="tab:blue", lw=1.2)
-    label = ax.text(-0.58, -0.08, "", fontsize=7, va="top")
-    ax.set_title(f"b = {b:g} m, h = {h:g} m, K_d = {format_kd(wall.params['Kd'])}, {rec.name}\n"
-                 f"rotations drawn x{exaggerate:g}", fontsize=7)
-    ax_ag.plot(t_acc[t_acc <= t_end], acc[t_acc <= t_end], color="0.4", lw=0.5)
-    (marker,) = ax_ag.plot([], [], "o", color="tab:red", ms=3)
-    ax_ag.set_xlim(0, t_end)
-    ax_ag.set_xlabel("t [s]", fontsize=7)
-    ax_ag.set_ylabel("ag [g]", fontsize=7)
-    ax_ag.tick_params(labelsize=6)
-    fig.tight_layout()
+    fig, (lower_patch, upper_patch, spring_line, label, marker) = figure(wall, rec, t_end, exaggerate)
 
     def draw(i):
         lower, upper = wall_outline(exaggerate * q1[i], exaggerate * q2[i], b, h)
