@@ -147,3 +147,23 @@ def test_finding17_collapse_still_ends_a_run_under_both_masters(tmp_path):
     assert proc.returncode == 0, proc.stderr[-2000:]
     times = re.findall(r"wall collapsed at t = ([0-9.]+) s", proc.stdout)
     assert len(times) == 2 and times[0] == times[1], proc.stdout  # the same collapse under both masters
+
+
+def test_couple_out_is_a_folder_as_for_every_command(tmp_path):
+    """`rockingwall couple --out /tmp/p/c1` (a folder, as --out is for run, building and
+    couple-building) ran for 8 s, wrote its CSV as a file named c1, and then failed: 'results/
+    couple.png: cannot write into its folder', the plot's default ignoring --out. --out is a folder
+    (created) holding couple.csv, couple.png and couple.json, or a .csv file with the other two
+    beside it; a folder that cannot be made is refused before the run."""
+    proc = subprocess.run([sys.executable, "-m", "rockingwall", "couple", "--t-end", "0.05", "--out", "c1"],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 0, proc.stderr
+    assert sorted(p.name for p in (tmp_path / "c1").iterdir()) == ["couple.csv", "couple.json", "couple.png"]
+    assert not (tmp_path / "results").exists()
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    proc = subprocess.run([sys.executable, "-m", "rockingwall", "couple", "--t-end", "0.05", "--out",
+                           str(blocker / "c.csv")], cwd=tmp_path, capture_output=True, text=True, timeout=600)
+    assert proc.returncode == 2 and f"--out {blocker}: exists and is not a folder" in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert "scene:" not in proc.stdout  # refused before the run, which prints its scene first

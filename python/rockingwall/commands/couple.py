@@ -31,8 +31,8 @@ flagged: a warning on stderr, "energy_ok": false in the summary JSON, and exit s
 has gone unstable: it ends with an error naming the likely cause and the remedy, exit status 1,
 and nothing of it is written or printed as a result. --monolithic integrates both FMUs as Model Exchange under one CVODE (no macro step).
 
-Writes results/couple.csv (time, s1, s2, u, F_top and the energy terms), results/couple.png and
-results/couple.json (the summary: peaks, step, step limit, energy residual share and flags).
+Writes into --out (default results/) couple.csv (time, s1, s2, u, F_top and the energy terms),
+couple.png and couple.json (the summary: peaks, step, step limit, energy residual share and flags).
 """
 import argparse
 import math
@@ -49,7 +49,7 @@ from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, R
                                        check_options, macro_step, parse_settings, unstable_message,
                                        wall_start_values)
 from ..names import HINGE_LAWS as LAWS
-from .common import scale_factor
+from .common import output_dir, scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 
@@ -91,13 +91,15 @@ def parse_args(argv):
                     help="both FMUs as Model Exchange under one CVODE (fmpy.sundials): no macro step "
                          f"(--macro-step is then the output interval, default {MACRO_STEP_DEFAULT_MAX:g} s)")
     ap.add_argument("--summary", default=None,
-                    help="the summary JSON (default: --out with the suffix .json)")
+                    help="the summary JSON (default: beside the CSV, suffix .json)")
     ap.add_argument("--t-end", type=float, default=30.0, help=f"[s], in [{T_END_RANGE[0]:g}, {T_END_RANGE[1]:g}]")
     ap.add_argument("--rtol", type=float, default=1e-6, help=f"the slaves' tolerance, in [{RTOL_RANGE[0]:g}, {RTOL_RANGE[1]:g}]")
     ap.add_argument("--master", choices=["fmpy", "libcosim", "both", "monolithic"], default="fmpy",
                     help="fmpy or libcosim (Co-Simulation), both; monolithic is what --monolithic runs")
-    ap.add_argument("--out", default="results/couple.csv")
-    ap.add_argument("--plot", default="results/couple.png")
+    ap.add_argument("--out", default="results",
+                    help="a folder (created if missing) for couple.csv, couple.png and couple.json (default "
+                         "results), or the time histories' CSV file (FILE.csv: the plot and summary beside it)")
+    ap.add_argument("--plot", default=None, help="the plot (default: beside the CSV, suffix .png)")
     ap.add_argument("--json", help="run one master in this process and write its result arrays as JSON "
                                    "(how the command line runs each master in a child process)")
     a = ap.parse_args(argv)
@@ -137,17 +139,32 @@ def unstable_masters(results, a):
     return None
 
 
+def csv_file(a):
+    """The time histories' CSV: --out itself where it names a .csv file, else couple.csv in the
+    folder --out (as the other commands' --out DIR)."""
+    out = pathlib.Path(a.out)
+    return out if out.suffix.lower() == ".csv" else out / "couple.csv"
+
+
+def plot_file(a):
+    return pathlib.Path(a.plot or csv_file(a).with_suffix(".png"))
+
+
 def summary_file(a):
-    return pathlib.Path(a.summary or pathlib.Path(a.out).with_suffix(".json"))
+    return pathlib.Path(a.summary or csv_file(a).with_suffix(".json"))
 
 
 def check_files(a):
-    """Before the run: the FMUs and the record are inputs the outputs never replace, and the three
-    outputs are three files."""
+    """Before the run: the FMUs and the record are inputs the outputs never replace, the three
+    outputs are three files, and their folders exist (created: a folder that cannot be made
+    fails here, not after the run)."""
     outputs.protect(a.wall_fmu, "the wall FMU")
     outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
     outputs.protect(records.split_spec(a.record)[0], "the record")
-    outputs.check_targets([a.out, a.plot, summary_file(a)], "output")
+    targets = {"--out": csv_file(a), "--plot": plot_file(a), "--summary": summary_file(a)}
+    outputs.check_targets(list(targets.values()), "output")
+    for option, target in targets.items():
+        output_dir(target.parent, option)
 
 
 def main(argv=None):
@@ -182,12 +199,11 @@ def main(argv=None):
     r = results[masters[0]]
     scene = scenes.diaphragm(Diaphragm(stiffness=a.k, mass=a.m, damping=a.zeta), a.Kd)
     print(scene.text())
-    pathlib.Path(a.out).parent.mkdir(parents=True, exist_ok=True)
-    output.save_csv(r, a.out)
+    output.save_csv(r, csv_file(a))
     record = records.load(a.record).scaled(a.scale).name  # the children ran it: here only its name
     title = (f"{record}, wall {a.wall}, " + ("monolithic (one CVODE)" if a.monolithic else
                                              f"co-simulation, H = {a.macro_step:g} s") + f"\nscene: {scene.title}")
-    output.plot(r, a.plot, title, results.get("libcosim") if len(masters) == 2 else None)
+    output.plot(r, plot_file(a), title, results.get("libcosim") if len(masters) == 2 else None)
     for m in masters:
         report(m, results[m], a)
     info = dict(output.summary(r, masters[0], a.macro_step, a.energy_share, limit, step_warning), scene=scene.to_dict())
@@ -205,5 +221,5 @@ def main(argv=None):
         other = results["libcosim"]
         n = min(len(r["time"]), len(other["time"]))
         print(f"max |s1 fmpy - s1 libcosim| = {np.abs(r['wall_s1'][:n] - other['wall_s1'][:n]).max():.3g} m")
-    print(f"wrote {a.out}, {a.plot} and {summary_path}" + ("  [FLAGGED: see the warnings]" if info["flagged"] else ""))
+    print(f"wrote {csv_file(a)}, {plot_file(a)} and {summary_path}" + ("  [FLAGGED: see the warnings]" if info["flagged"] else ""))
     return EXIT_FLAGGED if (a.strict and info["flagged"]) else 0
