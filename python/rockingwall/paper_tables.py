@@ -74,11 +74,12 @@ def save_figure(fig, path, dpi):
 
 def print_table(title, rows):
     print(f"\n{title}")
-    print(f"{'wall':>4} {'input':>14} {'model':>6} {'Kd':>6} {'qty':>14} {'ours':>9} {'paper':>7}  diff")
+    model = max([len("model"), *(len(str(r[3])) for r in rows)])  # '2DOF semiRigidHinge' whole, K_d after it
+    print(f"{'wall':>4} {'input':>14} {'model':>{model}} {'Kd':>6} {'qty':>14} {'ours':>9} {'paper':>7}  diff")
     for r in rows:
         o, p = r[6], r[7]
         d = f"{(o - p) / p * 100:+6.1f} %" if isinstance(o, float) and isinstance(p, float) and p else ""
-        print(f"{r[1]:>4} {r[2]:>14} {r[3]:>6} {str(r[4]):>6} {r[5]:>14} {fmt(o) or 'missing':>9} {fmt(p):>7}  {d}")
+        print(f"{r[1]:>4} {r[2]:>14} {r[3]:>{model}} {str(r[4]):>6} {r[5]:>14} {fmt(o) or 'missing':>9} {fmt(p):>7}  {d}")
 
 
 def table_5_1_rows():
