@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from . import report_table
+from .building import reports
 from .sweep import fragility
 from .assessment import KD_COLUMN, group_label, resurrection_lines
 
@@ -72,6 +73,18 @@ def fragility_lines(frag, im_name, column=KD_COLUMN):
     return lines
 
 
+def near_collapse_without_ensemble(cases, column=KD_COLUMN):
+    """Without ensembles (--ensemble 0), the standing cases near collapse named, as `run` names
+    them: each is one sample there (with ensembles, P(collapse) and the s1 spread say it)."""
+    if "collapse_probability" in cases:
+        return []
+    labels = [(f"{r['record']} at {r['pga_g']:g} g" + (f", {group_label(column, r[column])}"
+                                                        if np.isfinite(r.get(column, np.nan)) else ""),
+               r["s1_over_Delta_u"]) for r in cases.to_dict("records") if not r["collapsed"]]
+    return reports.near_collapse_lines(labels, "--ensemble 100 (the default) gives each case's probability of "
+                                               "collapse and the spread of s1 (docs/robustness.md)")
+
+
 def report(head, states, cases, frag, im_name, table="text", sa_period=None, column=KD_COLUMN, scene_text=""):
     """The whole report: head (the study's lines), the cases' table, the fragilities."""
     rows = table_rows(cases, states, column)
@@ -81,6 +94,7 @@ def report(head, states, cases, frag, im_name, table="text", sa_period=None, col
             lines += ["", report_table.markdown(rows, scene_text, sa_period)]
         else:
             lines += ["", report_table.text(rows, sa_period)]
+    lines += near_collapse_without_ensemble(cases, column)
     lines += fragility_lines(frag, im_name, column)
     back = resurrection_lines(cases, column)
     if back:

@@ -413,3 +413,19 @@ def test_a_median_above_every_intensity_run_is_not_placed_at_the_highest():
     assert "median above 0.3" in " ".join(t.get_text() for t in fig.axes[0].get_legend().get_texts())
     (span,) = fig.axes[0].patches
     assert np.isfinite(span.get_extents().x1)
+
+
+def test_assess_without_ensembles_names_a_standing_wall_near_collapse():
+    """`assess ... --ensemble 0` printed the assessor's upper wall under its retrofitted roof (scene
+    (b), ff07a at 0.5 g) standing at 0.78 Delta_u with no word that one run is one sample there, as
+    `run` says of the same case. It names the case near collapse and where its spread comes from;
+    with ensembles the P(collapse) and s1 spread columns say it, and no line is added."""
+    from rockingwall import assessment, assessment_report
+    cases = pd.DataFrame([dict(record="ff07a", pga_g=pga, collapsed=collapsed, s1_over_Delta_u=ratio,
+                               **{assessment.KD_COLUMN: 200.0})
+                          for pga, collapsed, ratio in ((0.3, False, 0.55), (0.5, False, 0.778), (0.7, True, np.nan))])
+    (line,) = assessment_report.near_collapse_without_ensemble(cases)
+    assert line.startswith("near collapse: ff07a at 0.5 g, K_d = 200 kN/m per m (s1 = 0.78 Delta_u): standing past "
+                           "0.6 Delta_u")
+    assert "--ensemble 100 (the default)" in line
+    assert assessment_report.near_collapse_without_ensemble(cases.assign(collapse_probability=0.3)) == []
