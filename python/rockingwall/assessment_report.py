@@ -61,9 +61,10 @@ def fragility_line(r, column):
 
 def fragility_lines(frag, im_name, column=KD_COLUMN):
     """The fits, a warning that every fit has said once above them."""
-    lines = [f"\nfragility against {im_name} (lognormal MLE; 90 % bootstrap intervals over the records; "
-             "'over the records and parameters': every ensemble member's run):"]
     rows = frag.to_dict("records")
+    members = any(r.get("over") == "records and parameters" for r in rows)  # none without ensembles
+    lines = [f"\nfragility against {im_name} (lognormal MLE; 90 % bootstrap intervals over the records"
+             + ("; 'over the records and parameters': every ensemble member's run):" if members else "):")]
     split = [r["warnings"].split(" | ") if r["warnings"] else [] for r in rows]
     common = [w for w in (split[0] if split else []) if all(w in s for s in split)]
     lines += [f"  warning: {w}" for w in common]

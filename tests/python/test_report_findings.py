@@ -429,3 +429,15 @@ def test_assess_without_ensembles_names_a_standing_wall_near_collapse():
                            "0.6 Delta_u")
     assert "--ensemble 100 (the default)" in line
     assert assessment_report.near_collapse_without_ensemble(cases.assign(collapse_probability=0.3)) == []
+
+
+def test_fragility_head_explains_member_fits_only_where_there_are_some():
+    """With --ensemble 0 the fragility's head still explained "'over the records and parameters':
+    every ensemble member's run", of fits the report did not have."""
+    from rockingwall import assessment_report
+    row = dict(limit_state="collapsed", records=2, median=0.3, median_5=0.2, median_95=0.4, beta=0.3, beta_5=0.2,
+               beta_95=0.4, gap_lo=np.nan, gap_hi=np.nan, warnings="", storey=1.0)
+    head = assessment_report.fragility_lines(pd.DataFrame([dict(row, over="records")]), "PGA [g]", "storey")[0]
+    assert head.endswith("90 % bootstrap intervals over the records):")
+    both = pd.DataFrame([dict(row, over="records"), dict(row, over="records and parameters")])
+    assert "every ensemble member's run" in assessment_report.fragility_lines(both, "PGA [g]", "storey")[0]
