@@ -49,6 +49,23 @@ def test_an_eccentric_overburden_reaches_the_wall_and_the_echo():
     assert building_file.parse(CONTRACT).wall_parameters(0)["eTop"] == 0.0
 
 
+def test_the_echo_gives_a_hysteretic_diaphragms_yield_force_and_post_yield():
+    """`rockingwall building` echoed a Bouc-Wen diaphragm as '60 kN/m per m, 600 kg/m, 5 % damping
+    (boucWen; own period 0.628 s)': the yield force and post-yield ratio the file gave each storey
+    (3 and 1 kN/m here) were not in the echo, so the output did not say what ran. They are, with a
+    pinched law's pinching."""
+    hysteretic = CONTRACT.replace('damping = 0.05 }', 'damping = 0.05, law = "boucWen", yield_force = "3 kN/m", '
+                                  'post_yield = 0.1 }', 1)
+    hysteretic = hysteretic.replace('damping = 0.05 }', 'damping = 0.05, law = "boucWen", yield_force = "1 kN/m", '
+                                    'post_yield = 0.1 }')
+    said = building_file.parse(hysteretic).describe()
+    assert "5 % damping (boucWen, yield force 3 kN/m, post-yield 0.1; own period 0.628 s)" in said
+    assert "5 % damping (boucWen, yield force 1 kN/m, post-yield 0.1; own period 0.628 s)" in said
+    pinched = building_file.parse(hysteretic.replace('"boucWen"', '"boucWenPinched"')).describe()
+    assert "post-yield 0.1, pinching pinch_size 0.8, pinch_width 0.2, pinch_centre 0.1;" in pinched
+    assert "5 % damping (linear; own period 0.628 s)" in building_file.parse(CONTRACT).describe()
+
+
 @pytest.mark.parametrize("edit, line, words", [  # the line the problem is on (was its storey's header's)
     (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 7, "unknown key"),
     (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 7, "not a unit of"),

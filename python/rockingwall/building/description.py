@@ -72,6 +72,15 @@ class Diaphragm:
         names; FMU_HYSTERESIS_NAMES maps them to the FMUs')."""
         return dict(BOUC_WEN_SHAPE, **(self.pinching or NO_PINCHING))
 
+    def yielding(self):
+        """', yield force 1 kN/m, post-yield 0.1 (pinching ...)' of a hysteretic law, '' of a linear one:
+        what the echo of the building adds to the law's name."""
+        if self.law == "linear":
+            return ""
+        pinching = (f", pinching {', '.join(f'{k} {v:g}' for k, v in self.pinching.items())}"
+                    if self.pinching else "")
+        return f", yield force {self.yield_force / 1e3:.4g} kN/m, post-yield {self.post_yield:g}{pinching}"
+
     @property
     def dashpot(self):
         """c = 2 zeta sqrt(k m) [N s/m per m]."""
@@ -161,7 +170,7 @@ class Building:
                          + (f" + walls above {above / 1e3:.4g} kN/m (weight only)" if above else "")
                          + f", {w.hinge_law}, e_r = {w.e_r:g}")
             lines.append(f"  diaphragm: {d.stiffness / 1e3:.4g} kN/m per m, {d.mass:.4g} kg/m, "
-                         f"{100 * d.damping:.3g} % damping ({d.law}; own period {d.period:.3g} s); "
+                         f"{100 * d.damping:.3g} % damping ({d.law}{d.yielding()}; own period {d.period:.3g} s); "
                          f"tie {s.tie:.3g} N/m per m")
             if s.in_plane is not None:
                 p = s.in_plane
