@@ -11,6 +11,7 @@ import zipfile
 
 import pytest
 
+from child_signals import default_signals
 from fmi2sim_harness import MD, SO, assert_one_clear_error, hostile_fmu, leftovers, tmp_env
 from fmi2sim_harness import run_limited as run
 
@@ -129,14 +130,6 @@ def test_finding08_failed_run_keeps_the_existing_output(fmi2sim_exe, rockingwall
 
 
 # ---- 9: signals ---------------------------------------------------------------------------------
-
-def default_signals():
-    """In the child: the caught signals at their default disposition. fmi2sim keeps a signal its
-    parent ignores (nohup, or a background job of a non-interactive shell, which ignores SIGINT),
-    so a test run launched that way would otherwise wait for a signal that never acts."""
-    for name in ("SIGINT", "SIGTERM", "SIGHUP"):
-        signal.signal(getattr(signal, name), signal.SIG_DFL)
-
 
 @pytest.mark.parametrize("sig", ["SIGINT", "SIGTERM", "SIGHUP", "SIGPIPE"])
 def test_finding09_signals_remove_the_unpack_folder(fmi2sim_exe, rockingwall_fmu, tmp_path, sig):

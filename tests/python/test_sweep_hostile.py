@@ -13,6 +13,7 @@ import pytest
 
 from rockingwall.commands import sweep
 from rockingwall.sweep import suites
+from child_signals import default_signals
 from sweep_harness import fake_fmi2sim, rows, sweep_args
 
 
@@ -22,14 +23,16 @@ from sweep_harness import fake_fmi2sim, rows, sweep_args
 def test_finding09_interrupted_sweep_leaves_no_temporary_files(fmi2sim_exe, rockingwall_fmu, one_record, tmp_path,
                                                                private_tmp, sig):
     """Ctrl-C (SIGINT) or SIGTERM while a run is under way: the sweep removes its folders and
-    says how to resume."""
+    says how to resume. (The sweep starts with SIGINT at its default, as under a terminal: a test
+    run launched in the background of a non-interactive shell ignores SIGINT, which the sweep
+    then kept, and this test failed after the stand-in's 30 s.)"""
     exe = tmp_path / "fmi2sim_interrupt"
     # the sweep process is the stand-in's parent; the sleep stands for a long run
     fake_fmi2sim(exe, fmi2sim_exe, f'mkdir "$TMPDIR/fmi2sim_unpacked"; kill -{sig} $PPID; exec sleep 30')
     out = tmp_path / "res.csv"
     proc = subprocess.run([sys.executable, "-m", "rockingwall", "sweep",
                            *sweep_args(one_record, out, exe, rockingwall_fmu)],
-                          capture_output=True, text=True, timeout=120)
+                          capture_output=True, text=True, timeout=120, preexec_fn=default_signals)
     assert proc.returncode == 130, proc.stderr[-2000:]
     assert "run the same command again to resume" in proc.stderr
     assert list(private_tmp.iterdir()) == []
