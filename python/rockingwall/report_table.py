@@ -67,7 +67,7 @@ def _columns(rows, sa_period):
 
 
 def _title(column, sa_period):
-    return f"Sa({sa_period:g} s) [g]" if column == "Sa [g]" else column
+    return f"Sa({sa_period:g} s, 5 %) [g]" if column == "Sa [g]" else column
 
 
 def markdown(rows, scene_text, sa_period=None, notes=()):

@@ -239,7 +239,7 @@ def test_finding7_a_report_table_in_markdown_and_result_summary(tmp_path, capsys
     header = next(i for i, x in enumerate(out) if x.startswith("| record"))
     columns = [c.strip() for c in out[header].strip("|").split("|")]
     assert columns[:2] == ["record", "PGA [g]"] and {"peak s1 [mm]", "s1/0.6Δu", "limit states reached",
-                                                      "P(collapse)", "Sa(0.6 s) [g]"} <= set(columns)
+                                                      "P(collapse)", "Sa(0.6 s, 5 %) [g]"} <= set(columns)
     rows = [[c.strip() for c in x.strip("|").split("|")] for x in out[header + 2:header + 4]]
     assert rows[0][1] == "0.2" and rows[1][columns.index("peak s1 [mm]")].startswith("collapsed at")
     assert any(x.startswith("scene: the paper's") for x in out[header + 4:])

@@ -113,7 +113,7 @@ def main(args):
         cases = code_view.add_to_cases(cases, codes)
     states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
     frag = assessment.fragilities(cases, states, study.column, outcomes)
-    im_name = f"Sa({args.sa_period:g} s) [g]" if args.sa else "PGA [g]"
+    im_name = f"Sa({args.sa_period:g} s, 5 %) [g]" if args.sa else "PGA [g]"
     with out:  # the folder holds this run's files only, swapped in when all are written
         write_files(out, cases, frag, recs, [] if args.building else states, im_name, study)
         if codes is not None:
