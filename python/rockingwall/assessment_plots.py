@@ -27,9 +27,17 @@ def _colour(palette, value):
 
 
 def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
+    fig = ida_figure(cases, title, states, im_name, column, delta_u_mm)
+    fig.savefig(path, dpi=110, format="png")
+    plt.close(fig)
+
+
+def ida_figure(cases, title, states, im_name, column=KD_COLUMN, delta_u_mm=None):
     """Peak s1 against the intensity, one line per group; collapses as crosses in their own column
-    at the right (a collapsed wall's peak is no displacement), limit states on s1 drawn."""
-    fig, ax = plt.subplots(figsize=(6.5, 4.2))
+    at the right (a collapsed wall's peak is no displacement), limit states on s1 drawn; the legend
+    below the axes (inside them it hid the collapses' column and the ensembles' bands)."""
+    groups = cases[column].nunique() if column in cases else 1
+    fig, ax = plt.subplots(figsize=(6.5, 4.4 + 0.15 * ((groups + 2) // 3)))
     palette = colours(cases[column]) if column in cases else {np.nan: "C0"}
     standing_max = np.nanmax(cases.peak_s1_mm.to_numpy(dtype=float), initial=0.0)
     thresholds = [s.threshold * 1e3 for s in states if s.quantity == "s1"]
@@ -58,10 +66,9 @@ def ida(cases, title, states, im_name, path, column=KD_COLUMN, delta_u_mm=None):
     ax.set_ylabel(im_name)
     ax.set_title(figure_titles.wrapped(title, 90), fontsize=7)
     ax.grid(alpha=0.3)
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3, frameon=False)
     fig.tight_layout()
-    fig.savefig(path, dpi=110, format="png")
-    plt.close(fig)
+    return fig
 
 
 def fragility_figure(frag, im_name, column=KD_COLUMN, title=""):

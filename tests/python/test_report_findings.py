@@ -99,6 +99,26 @@ def test_fragility_legends_stand_below_their_panels_not_over_the_curves(tmp_path
         assert legend.y0 >= whole.y0 and legend.x0 >= whole.x0 and legend.x1 <= whole.x1  # inside the figure
 
 
+def test_the_ida_plots_legend_hides_no_collapse(tmp_path):
+    """assess's IDA plot of El Centro (scene (b), K_d 20 and 200 kN/m per m, 0.2 and 0.5 g) kept its
+    legend in the lower right, over the collapse column at the lowest intensity: the cross of the
+    K_d = 20 wall collapsing at 0.2 g and its ensemble's band were under the legend. It stands below
+    the axes, inside the figure."""
+    from rockingwall import assessment
+    cases = pd.DataFrame([dict(im=im, peak_s1_mm=peak, collapsed=collapsed, s1_p16_mm=lo, s1_p84_mm=hi,
+                               **{assessment.KD_COLUMN: kd})
+                          for kd, im, peak, collapsed, lo, hi in ((20.0, 0.2, np.nan, True, 136.0, np.inf),
+                                                                  (20.0, 0.5, np.nan, True, np.inf, np.inf),
+                                                                  (200.0, 0.2, 67.3, False, 49.0, 91.0),
+                                                                  (200.0, 0.5, np.nan, True, np.inf, np.inf))])
+    fig = assessment_plots.ida_figure(cases, "El Centro 1940", [], "PGA [g]", delta_u_mm=220.4)
+    fig.canvas.draw()
+    (ax,) = fig.axes
+    legend, panel, whole = ax.get_legend().get_window_extent(), ax.get_window_extent(), fig.bbox
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == ["K_d = 20 kN/m per m", "K_d = 200 kN/m per m"]
+    assert legend.y1 <= panel.y0 and legend.y0 >= whole.y0 and legend.x0 >= whole.x0 and legend.x1 <= whole.x1
+
+
 def write_csv(path, record, factor):
     np.savetxt(path, np.column_stack([record.t, record.ag * factor]), delimiter=",", header="time,acc", comments="")
 
