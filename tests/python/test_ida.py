@@ -173,6 +173,22 @@ def test_a_median_above_every_intensity_run_is_said_to_be_above_it(tmp_path, cap
     assert fig.axes[0].get_xlim()[1] < 1.0
 
 
+def test_a_collapse_is_drawn_right_of_every_standing_peak(tmp_path):
+    """ida's IDA curves drew a collapse's cross at the run's peaks, which end at the state the wall
+    fell from: on the s2 panel of a building sweep the upper storey's collapses at 0.5 g stood at
+    40 and 60 mm, left of standing peaks of 130 mm, as if the wall hardly moved. Collapses are now
+    in their own column right of every standing peak, as assess's IDA plot has them."""
+    d = ida.load(synthetic_results(tmp_path))
+    d.loc[d.collapsed, "peak_s2"] = 0.005  # a collapsed run's s2: whatever the state it fell from
+    fig = ida.ida_curves_figure(d)
+    for ax in fig.axes:
+        points = [line.get_xydata() for line in ax.get_lines()
+                  if line.get_marker() == "o" and line.get_label() != "median"]
+        crosses = [line.get_xydata() for line in ax.get_lines() if line.get_marker() == "x"]
+        standing = max(xy[:, 0].max() for xy in points if len(xy))
+        assert crosses and min(xy[:, 0].min() for xy in crosses) > standing
+
+
 def test_the_kd_maps_colour_scale_reads_in_millimetres(tmp_path):
     """ida on a building sweep (one K_d, the upper storey standing at 0.1 g only) labelled the
     colour scale of its median peaks '3.4 x 10^1' to '4.1 x 10^1': a log scale over less than a

@@ -82,13 +82,33 @@ def _named(values, given):
     return named[0] if len(named) == 1 else given
 
 
+def collapse_column(d, q):
+    """Where a panel of q (peak_s1 or peak_s2) draws collapses [mm]: right of every standing peak."""
+    standing = 1000 * d.loc[~d.collapsed.astype(bool), q].to_numpy(dtype=float)
+    return 1.3 * max(np.nanmax(standing, initial=0.0), 1.0)
+
+
+def save(fig, path):
+    """A figure into its PNG (through a temporary file), then closed."""
+    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
+    plt.close(fig)
+
+
 def ida_curves(d, path):
+    save(ida_curves_figure(d), path)
+
+
+def ida_curves_figure(d):
+    """Peak s1 and s2 against PGA per K_d, a line per record up to its first collapse, the median."""
     kds = sorted(d.kd_kN.unique())
     fig, axes = plt.subplots(2, len(kds), figsize=(3.2 * len(kds), 6.0), sharex=True, sharey="row", squeeze=False)
     for j, kd in enumerate(kds):
         dk = d[d.kd_kN == kd]
         for i, q in enumerate(["peak_s1", "peak_s2"]):
             ax = axes[i, j]
+            # a collapse in its own column at the right: a collapsed run's peaks end at the state it
+            # fell from (s2 anywhere, 40 mm at 0.5 g read as a small response), not a displacement
+            x_collapse = collapse_column(d, q)
             for _, r in dk.groupby("record"):
                 r = r.sort_values("pga_g")
                 first = r.collapsed.values.argmax() if r.collapsed.any() else len(r)
@@ -96,7 +116,8 @@ def ida_curves(d, path):
                 # a dot at each level: a record standing at one level only is a single point
                 ax.plot(1000 * alive[q], alive.pga_g, "o-", lw=0.6, ms=2, alpha=0.5, color="tab:blue")
                 if first < len(r):
-                    ax.plot(1000 * r[q].iloc[first], r.pga_g.iloc[first], "x", ms=3, color="tab:red", alpha=0.6)
+                    ax.plot(x_collapse, r.pga_g.iloc[first], "x", ms=3, color="tab:red", alpha=0.6)
+            ax.axvline(x_collapse, color="0.6", lw=0.5)
             med = dk.assign(v=np.where(dk.collapsed, np.inf, dk[q])).groupby("pga_g").v.median()
             ax.plot(1000 * med[np.isfinite(med)], med.index[np.isfinite(med)], "o-", color="k", lw=2, ms=3,
                     label="median")
@@ -108,10 +129,9 @@ def ida_curves(d, path):
             if j == 0:
                 ax.set_ylabel("PGA [g]")
     axes[0, 0].legend(loc="upper left", fontsize=8)
-    _name_scene(fig, d, "IDA curves: one line per record component, x = collapse")
+    _name_scene(fig, d, "IDA curves: one line per record component, x = collapse (in its own column at the right)")
     fig.tight_layout()
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
-    plt.close(fig)
+    return fig
 
 
 def _name_scene(fig, d, head="", fontsize=8):
@@ -174,15 +194,12 @@ def fragility_figure(d):
 def fragility_plot(d, path):
     """fragility_figure written to path (PNG): the fits."""
     fig, fits = fragility_figure(d)
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
-    plt.close(fig)
+    save(fig, path)
     return fits
 
 
 def kd_map(d, path):
-    fig = kd_map_figure(d)
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
-    plt.close(fig)
+    save(kd_map_figure(d), path)
 
 
 def plain_numbers(colorbar):
