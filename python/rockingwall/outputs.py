@@ -146,6 +146,11 @@ def write_atomic(path, write, label="output", inputs=()):
     return path
 
 
+def write_png(fig, path, label="output", dpi=110):
+    """A matplotlib figure as a PNG at path, through write_atomic (whole or not at all)."""
+    return write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=dpi, format="png"), label)
+
+
 class NamedStream:
     """A text stream whose write errors name it ('standard output: No space left on device'):
     an OSError of print() carries no file name of its own. A closed pipe stays BrokenPipeError."""

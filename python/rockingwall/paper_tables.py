@@ -67,11 +67,6 @@ def write_csv(path, rows):
     outputs.write_atomic(path, write, "--out")
 
 
-def save_figure(fig, path, dpi):
-    """A figure into its file (through a temporary file: never through a symlink, never cut)."""
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=dpi, format="png"), "--out")
-
-
 def print_table(title, rows):
     print(f"\n{title}")
     model = max([len("model"), *(len(str(r[3])) for r in rows)])  # '2DOF semiRigidHinge' whole, K_d after it
@@ -191,7 +186,7 @@ def figures(out, keep52, keep54):
     ax.set_title("Fig. 5.2 - wall 1, simply supported (1DOF)")
     ax.legend()
     fig.tight_layout()
-    save_figure(fig, out / "fig_5_2.png", 120)
+    outputs.write_png(fig, out / "fig_5_2.png", "--out", 120)
     plt.close(fig)
 
     def hist(keys, title, fname):
@@ -208,7 +203,7 @@ def figures(out, keep52, keep54):
         axs[-1].set_xlabel("t [s]")
         fig.suptitle(title, fontsize=10)
         fig.tight_layout()
-        save_figure(fig, out / fname, 110)
+        outputs.write_png(fig, out / fname, "--out")
         plt.close(fig)
 
     keep = keep52

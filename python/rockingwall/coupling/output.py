@@ -42,7 +42,7 @@ def plot(r, path, title, other=None):
     ax[2].legend(loc="upper left", fontsize=8)
     figure_titles.suptitle(fig, title, 10)
     fig.tight_layout()
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--plot")
+    outputs.write_png(fig, path, "--plot")
     plt.close(fig)
 
 

@@ -90,7 +90,7 @@ def collapse_column(d, q):
 
 def save(fig, path):
     """A figure into its PNG (through a temporary file), then closed."""
-    outputs.write_atomic(path, lambda tmp: fig.savefig(tmp, dpi=110, format="png"), "--out")
+    outputs.write_png(fig, path, "--out")
     plt.close(fig)
 
 
