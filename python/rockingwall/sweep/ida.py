@@ -102,13 +102,14 @@ def ida_curves_figure(d):
     """Peak s1 and s2 against PGA per K_d, a line per record up to its first collapse, the median."""
     kds = sorted(d.kd_kN.unique())
     fig, axes = plt.subplots(2, len(kds), figsize=(3.2 * len(kds), 6.0), sharex=True, sharey="row", squeeze=False)
+    # a collapse in its own column at the right, one per quantity for every K_d: a collapsed run's
+    # peaks end at the state it fell from (s2 anywhere, 40 mm at 0.5 g read as a small response)
+    columns = {q: collapse_column(d, q) for q in ("peak_s1", "peak_s2")}
     for j, kd in enumerate(kds):
         dk = d[d.kd_kN == kd]
         for i, q in enumerate(["peak_s1", "peak_s2"]):
             ax = axes[i, j]
-            # a collapse in its own column at the right: a collapsed run's peaks end at the state it
-            # fell from (s2 anywhere, 40 mm at 0.5 g read as a small response), not a displacement
-            x_collapse = collapse_column(d, q)
+            x_collapse = columns[q]
             for _, r in dk.groupby("record"):
                 r = r.sort_values("pga_g")
                 first = r.collapsed.values.argmax() if r.collapsed.any() else len(r)
