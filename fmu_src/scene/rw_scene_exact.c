@@ -15,9 +15,9 @@
 int rw_scene_exact_covers(const rw_scene_spec *spec, char *msg, size_t n)
 {
     int i;
-    if (spec->building.diaphragm_law != BD_ELASTIC)
-        return snprintf(msg, n, "the exact engine takes linear diaphragms only (diaphragm law %d is hysteretic)",
-                        spec->building.diaphragm_law), RW_SCENE_UNSUPPORTED;
+    if (spec->building.diaphragm_law != BD_ELASTIC && spec->building.diaphragm_law != BD_BILINEAR)
+        return snprintf(msg, n, "the exact engine takes linear and bilinear diaphragms only (diaphragm law %d is "
+                        "a smooth hysteresis, Bouc-Wen)", spec->building.diaphragm_law), RW_SCENE_UNSUPPORTED;
     if (!spec->rigid_in_plane && spec->building.storey_law != BD_ELASTIC)
         return snprintf(msg, n, "the exact engine takes linear in-plane walls only (storey law %d is hysteretic)",
                         spec->building.storey_law), RW_SCENE_UNSUPPORTED;
@@ -50,11 +50,13 @@ static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
 
 static double energy(sx_run *R, double t);
 
-/* the region's energy constant from the scene's own energy at the state it is entered at */
+/* the region's energy constant from the scene's own energy at the state it is entered at, and its
+ * bilinear diaphragms' indicators */
 static int entered(sx_run *R)
 {
     sx_region *r = current(R);
     r->e_const = energy(R, R->t) - sx_region_energy(r, R->x);
+    sx_bilinear_entered(R);
     return RW_SCENE_OK;
 }
 
@@ -110,6 +112,7 @@ int sx_handle_events(sx_run *R)
     }
     if (R->t != R->last_event_t) R->same_instant = 0;
     R->last_event_t = R->t;
+    sx_sync_hysteresis(R); /* the region left: its diaphragms' z and work */
     do {
         const double before = energy(R, R->t);
         flags = rw_scene_event_update(&R->sc, R->t, ag, R->x);
@@ -145,6 +148,7 @@ static void observe(sx_run *R, double t)
         double dx[RW_SCENE_NX];
         rw_scene_aux aux;
         int i;
+        sx_sync_hysteresis(R); /* the diaphragms' forces need their z */
         rw_scene_derivatives(&R->sc, sx_ground(R, t), R->x, dx, &aux);
         for (i = 0; i < R->sc.S.n_storeys; i++) {
             const size_t row = R->next_out * RW_SCENE_MAX_STOREYS + (size_t)i;
@@ -254,6 +258,7 @@ int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, co
         code = integrate(R);
     }
     sx_settle_doubts(R, -1);
+    sx_sync_hysteresis(R);
     collect(R);
     free_run(R);
     return code;

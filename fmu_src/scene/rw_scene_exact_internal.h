@@ -16,7 +16,7 @@
 #define SX_MAX_DOF (4 * RW_SCENE_MAX_STOREYS) /* per storey: a wall's q1, q2, the floor, the diaphragm */
 #define SX_MAX_N (2 * SX_MAX_DOF)
 #define SX_MAX_NA (SX_MAX_N + 3)
-#define SX_MAX_F (4 * RW_SCENE_MAX_STOREYS)     /* watched linear functionals of the state */
+#define SX_MAX_F (5 * RW_SCENE_MAX_STOREYS)     /* watched linear functionals of the state */
 #define SX_MAX_TERMS (4 * RW_SCENE_MAX_STOREYS) /* rank-one terms of the viscous dissipation */
 #define SX_LO 6          /* degree of the quiet test's polynomials */
 #define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
@@ -28,17 +28,21 @@
 #define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
 
-/* kinds of functionals */
-enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC };
+/* kinds of functionals (the deformation's rate only where a bilinear diaphragm yields: its
+ * unloading is where the rate changes sign) */
+enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC, SX_DEFORM_RATE };
 /* a storey's peak quantities: s1 = (h/2) q1, s2 = (h/2)(q1 + q2), the diaphragm's deformation and
  * the base acceleration */
 enum { SX_PEAK_S1 = 0, SX_PEAK_S2, SX_PEAK_DEFORM, SX_PEAK_ACC, SX_PEAK_KINDS };
 
-/* what selects a region: which walls stand and their hinge moments Q = c + J q */
+/* what selects a region: which walls stand and their hinge moments Q = c + J q, and each bilinear
+ * diaphragm's branch, its spring force F = k_branch d + F0 (1 - alpha) Fy (d its deformation) */
 typedef struct {
     int standing[RW_SCENE_MAX_STOREYS];
     double c[RW_SCENE_MAX_STOREYS][2], J[RW_SCENE_MAX_STOREYS][2][2];
     double cap[RW_SCENE_MAX_STOREYS]; /* the wall's hinge capacities cap_b + cap_m: the scale of c */
+    int branch[RW_SCENE_MAX_STOREYS]; /* bilinear diaphragm: 0 elastic, +1 or -1 yielding that way */
+    double F0[RW_SCENE_MAX_STOREYS];  /* its spring force's constant over (1 - alpha) Fy (0: linear) */
 } sx_key;
 
 /* a standing wall's collapse indicator on the region: G(q) = q.A q - c.q (rw_collapse_form) */
@@ -130,6 +134,14 @@ typedef struct {
     double a0, a1, s, t, c;
 } sx_line;
 
+/* one indicator of a bilinear diaphragm on its region: z = c + a v, v the functional of `kind`
+ * (the deformation on the elastic branch: z = 1 -+ the normalised hysteretic force; its rate while
+ * yielding) */
+typedef struct {
+    int kind;
+    double c, a;
+} sx_dline;
+
 /* a step whose quiet test left a peak in doubt: the step was taken, and the peak of `kind` of
  * `storey` inside it is bounded by `bound`; it is resolved on the exact series only if the peak
  * reached elsewhere stays under that bound (rw_scene_exact_peaks.c) */
@@ -151,6 +163,10 @@ typedef struct {
     long stamp;
     int nlines[RW_SCENE_MAX_STOREYS];
     sx_line lines[RW_SCENE_MAX_STOREYS][SX_MAX_LINES];
+    int ndlines[RW_SCENE_MAX_STOREYS];  /* the bilinear diaphragms' indicators on the region */
+    sx_dline dlines[RW_SCENE_MAX_STOREYS][2];
+    double d_synced[RW_SCENE_MAX_STOREYS]; /* a bilinear diaphragm's deformation where its work and
+                                              z were last brought up to date (sx_sync_hysteresis) */
     double work_ground, work_damping, losses;
     size_t hint, next_out;
     double last_event_t;
@@ -164,6 +180,17 @@ typedef struct {
 double sx_ground(sx_run *R, double t);  /* the record at t */
 int sx_handle_events(sx_run *R);        /* the event update at R->t, then the region: 0 or an error code */
 int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
+
+/* ---- bilinear diaphragms (rw_scene_exact_bilinear.c) ---- */
+/* does the exact engine take diaphragm i's law (linear, or bilinear with a yield force)? */
+int sx_bilinear(const rw_scene *sc, int i);
+/* the branch and force constant of bilinear diaphragm i at the scene state x (rates dx) */
+void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], int i, sx_key *key);
+/* the hysteretic variable z and the work done on each bilinear diaphragm brought up to R->x from
+ * the current region (before the scene's own functions read x) */
+void sx_sync_hysteresis(sx_run *R);
+/* the indicators of the current region's bilinear diaphragms, and where their work starts */
+void sx_bilinear_entered(sx_run *R);
 
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */

@@ -36,6 +36,8 @@ void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key)
         key->c[i][1] = Q[1] - J[1][0] * xi[0] - J[1][1] * xi[1];
         key->cap[i] = sc->D[i].cap_b + sc->D[i].cap_m;
     }
+    for (i = 0; i < sc->S.n_storeys; i++)
+        if (sx_bilinear(sc, i)) sx_bilinear_key(sc, x, dx, i, key);
 }
 
 /* J selects the region exactly; c = Q - J q carries the rounding of the state it was taken at (of
@@ -44,6 +46,7 @@ int sx_key_equal(const sx_key *a, const sx_key *b)
 {
     int i, k;
     for (i = 0; i < RW_SCENE_MAX_STOREYS; i++) {
+        if (a->branch[i] != b->branch[i] || fabs(a->F0[i] - b->F0[i]) > 1e-9) return 0; /* F0: over its scale */
         if (a->standing[i] != b->standing[i]) return 0;
         if (!a->standing[i]) continue;
         if (memcmp(a->J[i], b->J[i], sizeof a->J[i]) != 0) return 0;
@@ -132,11 +135,17 @@ static void building(const rw_scene *sc, const sx_region *r, lti *s)
     int i;
     for (i = 0; i < sc->S.n_storeys; i++) {
         const int u = r->floor_dof[i], y = r->diaph_dof[i], ub = i > 0 ? r->floor_dof[i - 1] : -1;
+        const bd_spring *d = &b->diaph[i];
+        /* the diaphragm's spring on the region's branch, F = k_b (y - u) + F0 (a bilinear one's;
+         * Rayleigh's a1 on the initial stiffness, as building_physics.c takes it) */
+        const double k_b = r->key.branch[i] ? d->alpha * d->k : d->k, F0 = r->key.F0[i] * (1.0 - d->alpha) * d->Fy;
         add(s->M, s->nd, y, y, b->md[i]);
         add_b(s, y, -b->md[i]);
         add(s->C, s->nd, y, y, b->a0 * b->md[i]);
-        spring(s, y, u, b->diaph[i].k, b->a1 * b->diaph[i].k + b->cd[i]);
+        spring(s, y, u, k_b, b->a1 * d->k + b->cd[i]);
+        s->f[y] -= F0;
         if (u < 0) continue;
+        s->f[u] += F0;
         add(s->M, s->nd, u, u, b->m[i]);
         add_b(s, u, -b->m[i]);
         add(s->C, s->nd, u, u, b->a0 * b->m[i]);
@@ -186,7 +195,7 @@ static void functional(sx_region *r, int kind, int storey)
 static int functional_count(const rw_scene *sc, const sx_key *key)
 {
     int i, n = 0;
-    for (i = 0; i < sc->S.n_storeys; i++) n += 2 + (key->standing[i] ? 2 : 0);
+    for (i = 0; i < sc->S.n_storeys; i++) n += 2 + (key->standing[i] ? 2 : 0) + (key->branch[i] != 0);
     return n;
 }
 
@@ -209,6 +218,11 @@ static void functionals(const rw_scene *sc, sx_region *r)
         r->F[r->nf - 1][r->n] = 1.0;
         if (i > 0)
             for (j = 0; j < na; j++) r->F[r->nf - 1][j] += r->Aa[(nd + r->diaph_dof[i - 1]) * na + j];
+        if (r->key.branch[i]) { /* a yielding bilinear diaphragm unloads where this changes sign */
+            functional(r, SX_DEFORM_RATE, i);
+            r->F[r->nf - 1][nd + r->diaph_dof[i]] = 1.0;
+            if (r->floor_dof[i] >= 0) r->F[r->nf - 1][nd + r->floor_dof[i]] = -1.0;
+        }
     }
     for (i = 0; i < r->nf; i++) {
         r->f_scale[i] = 0.0;

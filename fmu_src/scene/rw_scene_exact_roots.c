@@ -78,9 +78,17 @@ static double collapse_root(const sx_collapse *c, const double *Q1, const double
     return sx_poly_first_root(G, 2 * deg, 0.0);
 }
 
+/* a bilinear diaphragm's indicator z = c + a v over the step (v its deformation or their rate) */
+static double diaphragm_root(const sx_dline *L, const double *V, int deg)
+{
+    const double tol = SX_TOL * (fabs(L->c) + fabs(L->a * V[0])) + DBL_MIN;
+    const double s0 = start_sign(L->c + L->a * V[0], tol, L->a * V[1], deg >= 2 ? L->a * V[2] : 0.0);
+    return affine_root(V, deg, L->c, L->a, s0, tol);
+}
+
 /* a storey's polynomials over the step */
 typedef struct {
-    double q1[SX_PMAX], q2[SX_PMAX], deform[SX_PMAX], acc[SX_PMAX];
+    double q1[SX_PMAX], q2[SX_PMAX], deform[SX_PMAX], acc[SX_PMAX], rate[SX_PMAX];
     double err_q1, err_q2, err_deform, err_acc;
     int wall;
 } storey_series;
@@ -96,7 +104,8 @@ static void storey_polys(const sx_region *r, const sx_series *s, storey_series *
         case SX_Q1: poly_of(r, f, s, S->q1), S->err_q1 = err, S->wall = 1; break;
         case SX_Q2: poly_of(r, f, s, S->q2), S->err_q2 = err; break;
         case SX_DEFORM: poly_of(r, f, s, S->deform), S->err_deform = err; break;
-        default: poly_of(r, f, s, S->acc), S->err_acc = err; break;
+        case SX_BASE_ACC: poly_of(r, f, s, S->acc), S->err_acc = err; break;
+        default: poly_of(r, f, s, S->rate); break;
         }
     }
 }
@@ -139,6 +148,7 @@ static void storeys(const sx_run *R, const sx_region *r, const sx_series *s, sto
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         if (only >= 0 && i != only) continue;
         memset(P[i].q1, 0, used), memset(P[i].q2, 0, used), memset(P[i].deform, 0, used), memset(P[i].acc, 0, used);
+        memset(P[i].rate, 0, used);
         P[i].err_q1 = P[i].err_q2 = P[i].err_deform = P[i].err_acc = 0.0;
         P[i].wall = 0;
     }
@@ -152,6 +162,10 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     int i, k;
     storeys(R, r, s, P, -1);
     for (i = 0; i < R->sc.S.n_storeys; i++) {
+        for (k = 0; k < R->ndlines[i]; k++) {
+            const sx_dline *L = &R->dlines[i][k];
+            first = fmin(first, diaphragm_root(L, L->kind == SX_DEFORM ? P[i].deform : P[i].rate, s->deg));
+        }
         if (!P[i].wall) continue;
         for (k = 0; k < R->nlines[i]; k++) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
         if (r->col[i].active) first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));

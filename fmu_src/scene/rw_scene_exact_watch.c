@@ -173,7 +173,7 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
 
 /* storey i's functionals' polynomials (NULL: the storey has none) */
 typedef struct {
-    const sx_lopoly *q1, *q2, *deform, *acc;
+    const sx_lopoly *q1, *q2, *deform, *acc, *rate;
 } storey_polys;
 
 /* the peaks at a state xa of the region: a cleared step's exact end (its start was the end of the
@@ -198,7 +198,8 @@ void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[])
             continue;
         }
         case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
-        default: peak = &res->peak_base_acc[i]; break;
+        case SX_BASE_ACC: peak = &res->peak_base_acc[i]; break;
+        default: continue; /* the deformation's rate: an indicator's, not a peak */
         }
         *peak = max2(*peak, fabs(v));
     }
@@ -227,14 +228,15 @@ static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[S
                         storey_polys S[RW_SCENE_MAX_STOREYS])
 {
     int f, i;
-    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].q1 = S[i].q2 = S[i].deform = S[i].acc = NULL;
+    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].q1 = S[i].q2 = S[i].deform = S[i].acc = S[i].rate = NULL;
     for (f = 0; f < r->nf; f++) {
         storey_polys *s = &S[r->f_storey[f]];
         switch (r->f_kind[f]) {
         case SX_Q1: s->q1 = &P[f]; break;
         case SX_Q2: s->q2 = &P[f]; break;
         case SX_DEFORM: s->deform = &P[f]; break;
-        default: s->acc = &P[f]; break;
+        case SX_BASE_ACC: s->acc = &P[f]; break;
+        default: s->rate = &P[f]; break;
         }
     }
 }
@@ -255,6 +257,20 @@ static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_p
         if (!clear_of_zero(line_span(L, poly_span(&w)), tol)) return 0;
     }
     return collapse_quiet(&r->col[i], P->q1, P->q2, box1, box2);
+}
+
+/* a bilinear diaphragm's indicators over the step: 1 if none can change sign */
+static int diaphragm_quiet(const sx_run *R, int i, const storey_polys *P)
+{
+    int k;
+    for (k = 0; k < R->ndlines[i]; k++) {
+        const sx_dline *L = &R->dlines[i][k];
+        const sx_lopoly *v = L->kind == SX_DEFORM ? P->deform : P->rate;
+        const span z = scaled(poly_span(v), L->a);
+        const double tol = SX_TOL * (fabs(L->c) + fabs(L->a * v->coef[0])) + DBL_MIN;
+        if (!clear_of_zero((span){L->c + z.lo, L->c + z.hi}, tol)) return 0;
+    }
+    return 1;
 }
 
 /* storey i's peak quantity `kind` over the step (0: the storey has none) */
@@ -291,7 +307,7 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], d
     int i;
     storey_view(R, r, P, S);
     for (i = 0; i < R->sc.S.n_storeys; i++)
-        if (S[i].q1 && !wall_quiet(R, r, i, &S[i])) return SX_MAY_CROSS;
+        if ((S[i].q1 && !wall_quiet(R, r, i, &S[i])) || !diaphragm_quiet(R, i, &S[i])) return SX_MAY_CROSS;
     return doubt_peaks(R, S, h, xa0) ? SX_MAY_PEAK : 0;
 }
 

@@ -1,6 +1,6 @@
 /* The exact scene engine (fmu_src/scene/rw_scene_exact*.c): its linear system against the scene's
- * own rates (rw_scene_derivatives) at random states of random scenes, a short run against
- * CVODES, what it refuses, and its two matrix-vector products giving the same bits. Run under ASan/UBSan by scripts/run_tests.sh. */
+ * own rates (rw_scene_derivatives) at random states of random scenes (linear and bilinear
+ * diaphragms), short runs against CVODES, what it refuses, and its two matrix-vector products giving the same bits. Run under ASan/UBSan by scripts/run_tests.sh. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -33,6 +33,7 @@ static void random_spec(rw_scene_spec *s)
     memset(s, 0, sizeof *s);
     s->n_storeys = 1 + rand() % 3;
     s->rigid_in_plane = coin();
+    s->building.diaphragm_law = coin() ? BD_BILINEAR : BD_ELASTIC;
     s->building.a0 = coin() ? uniform(0.0, 0.5) : 0.0;
     s->building.a1 = coin() ? uniform(0.0, 1e-3) : 0.0;
     for (i = 0; i < s->n_storeys; i++) {
@@ -40,6 +41,7 @@ static void random_spec(rw_scene_spec *s)
         b->md[i] = uniform(50.0, 500.0);
         b->diaph[i].k = pow(10.0, uniform(3.5, 6.0));
         b->cd[i] = uniform(0.0, 0.1) * 2.0 * sqrt(b->diaph[i].k * b->md[i]);
+        b->diaph[i].Fy = b->diaph[i].k * uniform(0.002, 0.05), b->diaph[i].alpha = uniform(0.0, 0.5);
         b->m[i] = uniform(500.0, 3000.0);
         b->storey[i].k = pow(10.0, uniform(6.0, 8.0));
         b->cs[i] = uniform(0.0, 0.05) * 2.0 * sqrt(b->storey[i].k * b->m[i]);
@@ -70,6 +72,7 @@ static void random_state(const rw_scene *sc, double *x)
             f[BD_W] = w_below + 0.5 * p->h * (xi[2] + xi[3]) - 100.0 * stretch;
         }
         if (!sc->S.rigid_in_plane) f[BD_U] = uniform(-0.02, 0.02), f[BD_V] = uniform(-0.2, 0.2);
+        f[BD_ZD] = coin() ? uniform(-1.0, 1.0) : (coin() ? 1.0 : -1.0); /* a bilinear one: elastic, or at a limit */
         y_below = f[BD_Y], w_below = f[BD_W];
     }
 }
@@ -190,6 +193,39 @@ static void test_runs_against_cvodes(void)
     for (bdf = 0; bdf < 2; bdf++) compare_with_cvodes("stiff dashpot", &spec, 0.06, bdf, 1);
 }
 
+/* bilinear diaphragms that yield and unload: the exact engine's branches against CVODES's rate
+ * form, which steps over the kinks by its error control */
+static void test_bilinear_against_cvodes(void)
+{
+    rw_scene_spec spec;
+    rw_scene_result r;
+    rw_scene_options opt;
+    rw_scene_record rec;
+    double t[401], ag[401];
+    int i;
+    srand(11);
+    memset(&spec, 0, sizeof spec);
+    spec.n_storeys = 2;
+    spec.rigid_in_plane = 1;
+    spec.building.diaphragm_law = BD_BILINEAR;
+    for (i = 0; i < 2; i++) {
+        spec.has_wall[i] = 1;
+        random_wall(&spec.wall[i]);
+        spec.wall[i].Kd = 1e6;
+        spec.building.md[i] = 200.0, spec.building.diaph[i].k = 5e4, spec.building.cd[i] = 100.0;
+        spec.building.diaph[i].Fy = 200.0, spec.building.diaph[i].alpha = 0.1;
+    }
+    compare_with_cvodes("bilinear diaphragms", &spec, 0.08, 0, 0);
+    pulse(0.08, 401, t, ag);
+    rec.n = 401, rec.t = t, rec.ag = ag;
+    memset(&opt, 0, sizeof opt);
+    opt.t_end = 2.0;
+    memset(&r, 0, sizeof r);
+    CHECK(rw_scene_run_exact(&spec, &rec, &opt, &r) == 0, "bilinear run: %s", r.message);
+    CHECK(r.peak_diaphragm[0] > 2.0 * spec.building.diaph[0].Fy / spec.building.diaph[0].k,
+          "the bilinear diaphragm does not yield (peak %g m): a comparison of little worth", r.peak_diaphragm[0]);
+}
+
 static void test_refusals(void)
 {
     rw_scene_spec spec;
@@ -208,6 +244,8 @@ static void test_refusals(void)
     spec.building.diaphragm_law = BD_BOUC_WEN;
     CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == RW_SCENE_UNSUPPORTED && strstr(msg, "diaphragm"),
           "Bouc-Wen diaphragms: %s", msg);
+    spec.building.diaphragm_law = BD_BILINEAR;
+    CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == 0, "bilinear diaphragms refused: %s", msg);
 }
 
 /* the engine's product from a matrix stored by columns keeps each sum's order: the very bits of a
@@ -238,6 +276,7 @@ int main(void)
     srand(12345);
     test_rates_match_the_scene();
     test_runs_against_cvodes();
+    test_bilinear_against_cvodes();
     test_refusals();
     test_products_agree_bitwise();
     printf("%d checks, %d failures\n", checks, failures);

@@ -59,6 +59,7 @@ double bd_hysteretic_rate(const bd_params *p, int law, const bd_spring *s, doubl
     const double gamma = 1.0 - p->beta, dy = s->Fy / s->k;
     double rate;
     if (law == BD_ELASTIC) return 0.0;
+    if (law == BD_BILINEAR) return bd_bilinear_branch(z, du) ? 0.0 : du / dy; /* (temporary: the law's own change lands separately) */
     rate = du / dy * (1.0 - power_of(fabs(z), p->n_bw) * (p->beta * sgn(du * z) + gamma));
     return law == BD_BOUC_WEN_PINCHED ? pinching(p, z, du) * rate : rate;
 }

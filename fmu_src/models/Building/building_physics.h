@@ -26,7 +26,16 @@
 enum { BD_U = 0, BD_V, BD_Z, BD_Y, BD_W, BD_ZD, BD_WORK_S, BD_WORK_D };
 
 /* spring laws */
-enum { BD_ELASTIC = 0, BD_BOUC_WEN = 1, BD_BOUC_WEN_PINCHED = 2 };
+enum { BD_ELASTIC = 0, BD_BOUC_WEN = 1, BD_BOUC_WEN_PINCHED = 2, BD_BILINEAR = 3 };
+
+/* The bilinear law's branch at the normalised hysteretic variable z and the deformation rate du:
+ * +1 or -1 yielding (|z| at 1 and moving outward: z stays), 0 elastic (z follows du / Dy). */
+static inline int bd_bilinear_branch(double z, double du)
+{
+    if (z >= 1.0 && du > 0.0) return 1;
+    if (z <= -1.0 && du < 0.0) return -1;
+    return 0;
+}
 
 /* one spring: initial stiffness k, yield force Fy, post-yield ratio alpha */
 typedef struct {
