@@ -60,6 +60,15 @@ static int entered(sx_run *R)
     return RW_SCENE_OK;
 }
 
+/* a cached region (not slot `except`) whose key differs from key's in constants only, or NULL */
+static const sx_region *sibling(const sx_run *R, const sx_key *key, int except)
+{
+    int k;
+    for (k = 0; k < R->nregions; k++)
+        if (k != except && R->regions[k].Aa && sx_key_same_matrix(key, &R->regions[k].key)) return &R->regions[k];
+    return NULL;
+}
+
 /* the region the motion at R->t goes into: kept, found among the cached ones, or built */
 static int enter_region(sx_run *R)
 {
@@ -82,7 +91,7 @@ static int enter_region(sx_run *R)
     }
     R->cur = slot;
     R->regions[slot].used = R->stamp;
-    k = sx_region_build(&R->sc, &key, &R->regions[slot]);
+    k = sx_region_build(&R->sc, &key, &R->regions[slot], sibling(R, &key, slot));
     if (k == RW_SCENE_SOLVER) snprintf(R->res->message, sizeof R->res->message, "singular mass matrix at t = %.9g s", R->t);
     if (k == RW_SCENE_NO_MEMORY) snprintf(R->res->message, sizeof R->res->message, "out of memory");
     if (k) R->regions[slot].key.standing[0] = -1; /* never matches */
@@ -272,7 +281,7 @@ int rw_scene_exact_rates(const rw_scene *sc, double ag, const double x[], double
     int k, code;
     memset(&r, 0, sizeof r);
     sx_region_key(sc, ag, x, &key);
-    code = sx_region_build(sc, &key, &r);
+    code = sx_region_build(sc, &key, &r, NULL);
     if (code) return sx_region_free(&r), code;
     sx_gather(&r, x, ag, 0.0, xa);
     sx_matvec_cols(r.na, r.na, r.Aa_cols, xa, d);

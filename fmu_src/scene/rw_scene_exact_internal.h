@@ -106,6 +106,8 @@ typedef struct {
     double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */
     double norm;               /* ||A_s||_inf */
     double F[SX_MAX_F][SX_MAX_NA]; /* functional rows over xa */
+    int f_nz[SX_MAX_F], f_at[SX_MAX_F][SX_MAX_NA]; /* their nonzero entries, in order (most hold one
+                                                      or two: sx_functional) */
     int f_kind[SX_MAX_F], f_storey[SX_MAX_F];
     double f_scale[SX_MAX_F];  /* sum_i |l_i| S_i over x: a functional's share of a tail in the S norm */
     double mom[SX_MAX_NA];     /* the horizontal momentum relative to the ground, a row over xa */
@@ -176,6 +178,16 @@ typedef struct {
     int ndoubts;
 } sx_run;
 
+/* functional f of the region at v (an augmented state, or a series' coefficient): its row's
+ * nonzero terms in the row's order, the very sum of the whole row (its zeros add nothing) */
+static inline double sx_functional(const sx_region *r, int f, const double *v)
+{
+    double sum = 0.0;
+    int k;
+    for (k = 0; k < r->f_nz[f]; k++) sum += r->F[f][r->f_at[f][k]] * v[r->f_at[f][k]];
+    return sum;
+}
+
 /* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */
 double sx_ground(sx_run *R, double t);  /* the record at t */
 int sx_handle_events(sx_run *R);        /* the event update at R->t, then the region: 0 or an error code */
@@ -205,8 +217,13 @@ void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's sym
 /* the key of the region the motion at x goes into; 0, or an error code */
 void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key);
 int sx_key_equal(const sx_key *a, const sx_key *b);
-/* builds region r for key (allocates; frees an old build first): 0 or RW_SCENE_NO_MEMORY */
-int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r);
+/* builds region r for key (allocates; frees an old build first): 0 or RW_SCENE_NO_MEMORY. A
+ * sibling (NULL: none) is a built region whose key differs from this one's in constants only (the
+ * hinge moments' c, a bilinear diaphragm's F0): where its first-order matrix is this one's to the
+ * bit, its modes are taken over rather than decomposed again (sx_modes_adopt) */
+int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const sx_region *sibling);
+/* do two keys select the same first-order matrix (the same standing walls, J and branches)? */
+int sx_key_same_matrix(const sx_key *a, const sx_key *b);
 void sx_region_free(sx_region *r);
 /* the scene state's (x, ag, slope) as the region's augmented state, and back */
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[]);
@@ -248,6 +265,8 @@ void sx_poly_product(const double *p, const double *q, int deg, double *pq);
 
 /* ---- modes and slow steps (rw_scene_exact_modes.c) ---- */
 void sx_modes_build(sx_region *r);
+/* the modes of a region whose first-order matrix is r's: all but the constant's modal forcing */
+void sx_modes_adopt(sx_region *r, const sx_modes *of);
 /* each functional's polynomial over a step of length h from xa0 (the trend of the slow modes and the
  * fast modes' quasi-static part, with the slow modes' remainder and the fast modes' free motion as
  * the tail); 0 if the region has no usable modes */

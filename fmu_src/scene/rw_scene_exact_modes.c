@@ -114,6 +114,12 @@ void sx_modes_build(sx_region *r)
     m->valid = 1;
 }
 
+void sx_modes_adopt(sx_region *r, const sx_modes *of)
+{
+    r->modes = *of;
+    modal_forcing(r, &r->modes, r->n + 2, r->modes.g0);
+}
+
 /* one mode over a step in u = tau/h: its part of a functional's polynomial (c[0..2], times the
  * share), and what bounds the rest (the slow mode's cubic remainder, or the fast mode's free
  * oscillation), for the value and for its rate */

@@ -56,6 +56,16 @@ int sx_key_equal(const sx_key *a, const sx_key *b)
     return 1;
 }
 
+int sx_key_same_matrix(const sx_key *a, const sx_key *b)
+{
+    int i;
+    for (i = 0; i < RW_SCENE_MAX_STOREYS; i++) {
+        if (a->standing[i] != b->standing[i] || a->branch[i] != b->branch[i]) return 0;
+        if (a->standing[i] && memcmp(a->J[i], b->J[i], sizeof a->J[i]) != 0) return 0;
+    }
+    return 1;
+}
+
 /* ---- layout: the generalised coordinates and where they live in the scene state ---- */
 
 static int add_dof(sx_region *r, int pos, int vel)
@@ -227,6 +237,9 @@ static void functionals(const rw_scene *sc, sx_region *r)
     for (i = 0; i < r->nf; i++) {
         r->f_scale[i] = 0.0;
         for (j = 0; j < r->n; j++) r->f_scale[i] += fabs(r->F[i][j]) * r->scale[j];
+        r->f_nz[i] = 0;
+        for (j = 0; j < na; j++)
+            if (r->F[i][j] != 0.0) r->f_at[i][r->f_nz[i]++] = j;
     }
 }
 
@@ -297,7 +310,17 @@ static int allocate(sx_region *r)
     return 0;
 }
 
-int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
+/* is the first-order block of Aa the same, to the bit, in both regions? */
+static int same_first_order(const sx_region *a, const sx_region *b)
+{
+    int i;
+    if (a->n != b->n) return 0;
+    for (i = 0; i < a->n; i++)
+        if (memcmp(a->Aa + i * a->na, b->Aa + i * b->na, sizeof(double) * (size_t)a->n) != 0) return 0;
+    return 1;
+}
+
+int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const sx_region *sibling)
 {
     lti *s = (lti *)calloc(1, sizeof(lti));
     int fail;
@@ -333,7 +356,8 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r)
     functionals(sc, r);
     energy_rows(sc, r);
     collapse_forms(sc, key, r);
-    sx_modes_build(r);
+    if (sibling && sibling->modes.valid && same_first_order(r, sibling)) sx_modes_adopt(r, &sibling->modes);
+    else sx_modes_build(r);
     return RW_SCENE_OK;
 }
 

@@ -15,13 +15,8 @@ static double sgn(double v) { return (v > 0.0) - (v < 0.0); }
 /* functional f's polynomial over the step */
 static void poly_of(const sx_region *r, int f, const sx_series *s, double *p)
 {
-    int k, j;
-    for (k = 0; k <= s->deg; k++) {
-        const double *X = s->X + (size_t)k * (size_t)r->na;
-        double v = 0.0;
-        for (j = 0; j < r->na; j++) v += r->F[f][j] * X[j];
-        p[k] = v;
-    }
+    int k;
+    for (k = 0; k <= s->deg; k++) p[k] = sx_functional(r, f, s->X + (size_t)k * (size_t)r->na);
 }
 
 /* the sign an indicator starts with: its own when clear of rounding, else its direction */

@@ -184,11 +184,11 @@ void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[])
 {
     rw_scene_result *res = R->res;
     double q1 = 0.0;
-    int f, k;
+    int f;
     for (f = 0; f < r->nf; f++) {
         const int i = r->f_storey[f];
-        double v = 0.0, *peak;
-        for (k = 0; k < r->na; k++) v += r->F[f][k] * xa[k];
+        const double v = sx_functional(r, f, xa);
+        double *peak;
         switch (r->f_kind[f]) {
         case SX_Q1: q1 = v; continue;
         case SX_Q2: { /* q1 comes first: the wall's peaks */
