@@ -12,8 +12,9 @@ its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
   60 kN/m per m and 600 kg/m under the floor, rigid in-plane walls), tied by the same ties.
 - two storeys, hysteretic: the two-storey scene with Bouc-Wen diaphragms (yield force 2 % of the
   stiffness times 1 m, post-yield ratio 0.1), which only CVODES solves, at rtol 1e-8 and 1e-6, with
-  its method (Adams) and with BDF; and `rockingwall building`'s four runs of it under the record
-  (wall-clock), one after another and on threads.
+  its method (Adams) and with BDF; the same scene with bilinear diaphragms on the exact engine,
+  beside CVODES on the law's rate form; and `rockingwall building`'s four runs of the Bouc-Wen
+  scene under the record (wall-clock), one after another and on threads.
 Each scene: the exact engine (the best CPU time of 5 calls in-process) and CVODES (rtol 1e-8, one
 call), their peaks' largest relative difference, and the floor: the arithmetic the exact engine's
 method cannot skip at the steps and events it counted. Per record interval one exact propagation
@@ -67,11 +68,12 @@ def scenes(tie):
             "house": house(tie)}
 
 
-def hysteretic(tie):
-    """the two-storey scene with Bouc-Wen diaphragms (a yield force of 2 % of k_d x 1 m)"""
+def hysteretic(tie, law="boucWen"):
+    """the two-storey scene with hysteretic diaphragms (a yield force of 2 % of k_d x 1 m, post-yield
+    ratio 0.1): Bouc-Wen, or bilinear"""
     base = scenes(tie)["2 storeys"]
     storeys = tuple(dataclasses.replace(s, Fyd=0.02 * s.kd, alphad=0.1) for s in base.storeys)
-    return dataclasses.replace(base, storeys=storeys, diaphragm_law="boucWen")
+    return dataclasses.replace(base, storeys=storeys, diaphragm_law=law)
 
 
 def timed_cvode(spec, t, ag, rtol, bdf):
@@ -93,6 +95,22 @@ def print_hysteretic(t, ag):
             bdf, t_bdf = timed_cvode(hysteretic(tie), t, ag, rtol, True)
             print(f"{tie:>15.0e} {rtol:>6.0e} | {t_adams:7.2f} {adams.steps:7d} {adams.t_newton:6.2f} | "
                   f"{t_bdf:6.2f} {bdf.steps:7d} | {t_bdf / t_adams:9.1f} {peak_difference(adams, bdf):8.1e}")
+
+
+def print_bilinear(t, ag, calls):
+    """the hysteretic two-storey scene with bilinear diaphragms on the exact engine (best CPU time of
+    `calls`), beside CVODES on the law's rate form at rtol 1e-8 and 1e-10 (one call each)"""
+    print("two storeys, bilinear diaphragms: the exact engine (best of calls) and CVODES (one call each)")
+    print(f"{'tie [N/m per m]':>15} | {'exact ms':>8} {'steps':>7} {'events':>6} | {'CVODES 1e-8 s':>13} {'peaks':>8} | "
+          f"{'CVODES 1e-10 s':>14} {'peaks':>8}")
+    for tie in TIES:
+        spec = hysteretic(tie, "bilinear")
+        exact, t_exact = best_time(lambda: se.run(spec, t, ag, engine="exact"), calls)
+        loose, t_loose = timed_cvode(spec, t, ag, 1e-8, False)
+        tight, t_tight = timed_cvode(spec, t, ag, 1e-10, False)
+        print(f"{tie:>15.0e} | {t_exact * 1e3:8.1f} {exact.steps:7d} {exact.events:6d} | {t_loose:13.2f} "
+              f"{peak_difference(loose, exact):8.1e} | {t_tight:14.2f} {peak_difference(tight, exact):8.1e}")
+    print("peaks: the largest relative difference of peak s1, s2 of CVODES against the exact engine")
 
 
 def print_building_runs(t, ag):
@@ -182,6 +200,7 @@ def main(argv=None):
     print("x wall: the exact scene's time over one wall's; floor: its method's arithmetic at its steps and "
           "events; peaks: the largest relative difference of peak s1, s2 against CVODES at rtol 1e-8")
     print_hysteretic(t, ag)
+    print_bilinear(t, ag, a.calls)
     print_building_runs(t, ag)
 
 
