@@ -1,8 +1,11 @@
-"""The names users give supports, hinge laws and the paper's walls, and the codes the FMU and
-the engine take (fmu_src/wall/rw_parameters.h: `support`, `hingeLaw`). The one copy of these maps."""
+"""The names users give supports, hinge laws, the building's spring laws and the paper's walls, and
+the codes the FMUs and the engines take (fmu_src/wall/rw_parameters.h: `support`, `hingeLaw`;
+fmu_src/models/Building/building_physics.h: `storeyLaw`, `diaphragmLaw`). The one copy of these maps."""
 
 SUPPORTS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
 HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
+# the springs of the building (diaphragms; the in-plane walls take the first two)
+SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 SUPPORT_NAMES = {code: name for name, code in SUPPORTS.items()}
 HINGE_LAW_NAMES = {code: name for name, code in HINGE_LAWS.items()}
 

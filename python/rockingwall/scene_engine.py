@@ -18,9 +18,9 @@ import numpy as np
 
 from . import engine
 from .errors import RockingWallError
+from .names import SPRING_LAWS
 
 MAX_STOREYS = 5
-SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 ERRORS = {1: "bad argument", 2: "bad scene", 3: "solver", 4: "Zeno", 5: "no memory", 6: "unsupported"}
 ENGINES = ("exact", "cvode")
 

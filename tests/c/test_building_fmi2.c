@@ -85,7 +85,7 @@ static void test_out_of_range(void)
     bad_integer(BD_VR_nStoreys, -2147483647 - 1, "nStoreys");
     bad_integer(BD_VR_storeyLaw, 2, "storeyLaw"); /* no pinching for the storeys */
     bad_integer(BD_VR_storeyLaw, -1, "storeyLaw");
-    bad_integer(BD_VR_diaphragmLaw, 3, "diaphragmLaw");
+    bad_integer(BD_VR_diaphragmLaw, 4, "diaphragmLaw"); /* 3 is the bilinear law */
 }
 
 static void test_nonfinite(void)

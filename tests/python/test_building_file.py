@@ -66,6 +66,25 @@ def test_the_echo_gives_a_hysteretic_diaphragms_yield_force_and_post_yield():
     assert "5 % damping (linear; own period 0.628 s)" in building_file.parse(CONTRACT).describe()
 
 
+def test_a_bilinear_diaphragm_is_read_echoed_and_run_on_the_exact_engine(tmp_path, capsys):
+    """law = "bilinear" (elastoplastic with kinematic hardening) takes a yield force and a post-yield
+    ratio as the Bouc-Wen laws do; the building runs on the exact engine, and its diaphragms yield."""
+    text = CONTRACT.replace('damping = 0.05 }', 'damping = 0.05, law = "bilinear", yield_force = "0.4 kN/m", '
+                            'post_yield = 0.1 }')
+    b = building_file.parse(text)
+    assert [s.diaphragm.law for s in b.storeys] == ["bilinear", "bilinear"]
+    assert "5 % damping (bilinear, yield force 0.4 kN/m, post-yield 0.1; own period 0.628 s)" in b.describe()
+    path = tmp_path / "bilinear.toml"
+    path.write_text(text)
+    assert cli.main(["building", str(path), "gaussian:0.04,1", "--scale", "1", "--json"]) == 0
+    (run,) = _strict(capsys.readouterr().out)["runs"]
+    assert run["solver"] == "exact"
+    dy = [0.4e3 / s.diaphragm.stiffness for s in b.storeys]
+    assert all(s["diaphragm_peak_m"] > 2 * y for s, y in zip(run["storeys"], dy))
+    with pytest.raises(building_file.BuildingFileError, match="yield_force is given with a hysteretic law"):
+        building_file.parse(text.replace(', yield_force = "0.4 kN/m"', '', 1))
+
+
 @pytest.mark.parametrize("edit, line, words", [  # the line the problem is on (was its storey's header's)
     (lambda t: t.replace('damping = 0.05 }\ntie = "1e6', 'dampin = 0.05 }\ntie = "1e6', 1), 7, "unknown key"),
     (lambda t: t.replace('stiffness = "60 kN/m/m"', 'stiffness = "60 kN/m"'), 7, "not a unit of"),

@@ -209,7 +209,7 @@ static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
 {
     bd_data *S = (bd_data *)M;
     const int lo = vr == BD_VR_nStoreys ? 1 : 0;
-    const int hi = vr == BD_VR_nStoreys ? BD_MAX_FLOORS : (vr == BD_VR_storeyLaw ? BD_BOUC_WEN : BD_BOUC_WEN_PINCHED);
+    const int hi = vr == BD_VR_nStoreys ? BD_MAX_FLOORS : (vr == BD_VR_storeyLaw ? BD_BOUC_WEN : BD_BILINEAR);
     if (value < lo || value > hi) {
         snprintf(msg, n, "%s = %d is out of its range [%d, %d]", name_of(vr), value, lo, hi);
         return 1;

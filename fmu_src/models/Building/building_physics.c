@@ -59,7 +59,9 @@ double bd_hysteretic_rate(const bd_params *p, int law, const bd_spring *s, doubl
     const double gamma = 1.0 - p->beta, dy = s->Fy / s->k;
     double rate;
     if (law == BD_ELASTIC) return 0.0;
-    if (law == BD_BILINEAR) return bd_bilinear_branch(z, du) ? 0.0 : du / dy; /* (temporary: the law's own change lands separately) */
+    /* bilinear: z follows du / Dy on the elastic branch and stays while yielding; a z that a
+     * solver's step has put a hair past +-1 is yielding, so it cannot drift further out */
+    if (law == BD_BILINEAR) return bd_bilinear_branch(z, du) ? 0.0 : du / dy;
     rate = du / dy * (1.0 - power_of(fabs(z), p->n_bw) * (p->beta * sgn(du * z) + gamma));
     return law == BD_BOUC_WEN_PINCHED ? pinching(p, z, du) * rate : rate;
 }

@@ -8,7 +8,8 @@
  *   wall standing on floor i), two inputs so that each takes one connection (SSP).
  *
  * Displacements relative to the ground; the ground acceleration ag enters as -m ag. Each spring is
- * linear or Bouc-Wen (hysteretic variable a continuous state, no events), the diaphragms
+ * linear, Bouc-Wen or bilinear (the hysteretic variable a continuous state, no events; bilinear:
+ * elastoplastic with kinematic hardening, Bouc-Wen's limit of a sharp yield), the diaphragms
  * optionally with Foliente's pinching function; Rayleigh damping C = a0 M + a1 K0, and a dashpot
  * beside each spring (cs, cd: the scenes' damping ratios; the Building FMU leaves them 0). */
 #ifndef BUILDING_PHYSICS_H
@@ -80,9 +81,10 @@ double bd_diaphragm_force(const bd_params *p, const double x[BD_NX], int i);
 /* absolute acceleration of diaphragm i (ag + its acceleration relative to the ground) */
 double bd_diaphragm_acceleration(const bd_params *p, const bd_input *in, const double x[BD_NX], int i);
 
-/* Rate of the normalised Bouc-Wen variable z (|z| <= 1) of a spring under deformation rate du:
- * dz/dt = h(z, du) du/Dy [1 - |z|^n (beta sgn(du z) + gamma)], Dy = Fy/k, h = 1 or Foliente's
- * pinching function. 0 for the elastic law. */
+/* Rate of the normalised hysteretic variable z (|z| <= 1) of a spring under deformation rate du:
+ * Bouc-Wen dz/dt = h(z, du) du/Dy [1 - |z|^n (beta sgn(du z) + gamma)], Dy = Fy/k, h = 1 or
+ * Foliente's pinching function; bilinear du/Dy on the elastic branch, 0 while yielding
+ * (bd_bilinear_branch). 0 for the elastic law. */
 double bd_hysteretic_rate(const bd_params *p, int law, const bd_spring *s, double z, double du);
 
 #endif

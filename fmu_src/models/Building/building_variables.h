@@ -25,7 +25,7 @@
 #define BD_VARIABLES(X) \
 X(nStoreys, 1, "nStoreys", Integer, "parameter", "fixed", "exact", 2, "", 0, 0, "Number of storeys N, 1..5 (floors above N are held at rest, their outputs 0)") \
 X(storeyLaw, 2, "storeyLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Storey shear springs (in-plane walls): 0 linear elastic, 1 Bouc-Wen") \
-X(diaphragmLaw, 3, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Diaphragm springs: 0 linear elastic, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber)") \
+X(diaphragmLaw, 3, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Diaphragm springs: 0 linear elastic, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic with kinematic hardening)") \
 X(nBW, 4, "nBW", Real, "parameter", "fixed", "exact", 2, "1", 0, 0, "Bouc-Wen exponent n, in [1, 100] (large n: sharp, elastoplastic-like yield)") \
 X(betaBW, 5, "betaBW", Real, "parameter", "fixed", "exact", 0.5, "1", 0, 0, "Bouc-Wen beta, in [0, 1]; gamma = 1 - beta so that the hysteretic force saturates at the yield force") \
 X(pinchSize, 6, "pinchSize", Real, "parameter", "fixed", "exact", 0.8, "1", 0, 0, "Pinching: zeta1 of Foliente's pinching function, in [0, 0.99] (diaphragmLaw 2)") \

@@ -169,7 +169,7 @@ int bw_set_integer_parameter(bw_data *S, unsigned vr, int value, char *msg, size
         return 1;
     }
     if (vr == BW_VR_nStoreys) lo = 1, hi = RW_SCENE_MAX_STOREYS;
-    else if (vr == BW_VR_diaphragmLaw) hi = BD_BOUC_WEN_PINCHED;
+    else if (vr == BW_VR_diaphragmLaw) hi = BD_BILINEAR;
     else if (BW_SLOT_OF(vr) == 8 && BW_STOREY_OF(vr)) lo = RW_RIGID, hi = RW_DOHERTY_HINGE;
     if (value < lo || value > hi) {
         snprintf(msg, n, "%s = %d is out of its range [%d, %d]", name_of(vr), value, lo, hi);

@@ -29,7 +29,7 @@
 X(nStoreys, 1, "nStoreys", Integer, "parameter", "fixed", "exact", 2, "", 0, 0, "Number of storeys N, 1..5 (the storeys above N are not there: their states at rest, their outputs 0)") \
 X(rigidInPlane, 2, "rigidInPlane", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "1: the in-plane walls are rigid, every floor moves with the ground (m_i, k_i, zetas_i unused); 0: floors of mass m_i on storey springs k_i") \
 X(storeyLaw, 3, "storeyLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Storey springs (in-plane walls, rigidInPlane = 0): 0 linear, 1 Bouc-Wen") \
-X(diaphragmLaw, 4, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Diaphragm springs: 0 linear, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber)") \
+X(diaphragmLaw, 4, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Diaphragm springs: 0 linear, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic with kinematic hardening)") \
 X(nBW, 5, "nBW", Real, "parameter", "fixed", "exact", 1, "1", 0, 0, "Bouc-Wen exponent n, in [1, 100]") \
 X(betaBW, 6, "betaBW", Real, "parameter", "fixed", "exact", 0.5, "1", 0, 0, "Bouc-Wen beta, in [0, 1] (gamma = 1 - beta)") \
 X(pinchSize, 7, "pinchSize", Real, "parameter", "fixed", "exact", 0.8, "1", 0, 0, "Pinching zeta1, in [0, 0.99] (diaphragmLaw 2)") \
@@ -64,8 +64,8 @@ X(eTop_1, 149, "eTop_1", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Ecc
 X(md_1, 110, "md_1", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 1 per metre of wall, in (0, 1e9]") \
 X(kd_1, 111, "kd_1", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 1 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_1, 112, "zetad_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 1 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_1, 113, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (Bouc-Wen laws), in (0, 1e15]") \
-X(alphad_1, 114, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1 (Bouc-Wen laws), in [0, 1]") \
+X(Fyd_1, 113, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (hysteretic laws), in (0, 1e15]") \
+X(alphad_1, 114, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1 (hysteretic laws), in [0, 1]") \
 X(m_1, 115, "m_1", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 1 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_1, 116, "k_1", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 1's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_1, 117, "zetas_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 1's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
@@ -113,8 +113,8 @@ X(eTop_2, 249, "eTop_2", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Ecc
 X(md_2, 210, "md_2", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 2 per metre of wall, in (0, 1e9]") \
 X(kd_2, 211, "kd_2", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 2 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_2, 212, "zetad_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 2 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_2, 213, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (Bouc-Wen laws), in (0, 1e15]") \
-X(alphad_2, 214, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2 (Bouc-Wen laws), in [0, 1]") \
+X(Fyd_2, 213, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (hysteretic laws), in (0, 1e15]") \
+X(alphad_2, 214, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2 (hysteretic laws), in [0, 1]") \
 X(m_2, 215, "m_2", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 2 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_2, 216, "k_2", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 2's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_2, 217, "zetas_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 2's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
@@ -162,8 +162,8 @@ X(eTop_3, 349, "eTop_3", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Ecc
 X(md_3, 310, "md_3", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 3 per metre of wall, in (0, 1e9]") \
 X(kd_3, 311, "kd_3", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 3 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_3, 312, "zetad_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 3 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_3, 313, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (Bouc-Wen laws), in (0, 1e15]") \
-X(alphad_3, 314, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3 (Bouc-Wen laws), in [0, 1]") \
+X(Fyd_3, 313, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (hysteretic laws), in (0, 1e15]") \
+X(alphad_3, 314, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3 (hysteretic laws), in [0, 1]") \
 X(m_3, 315, "m_3", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 3 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_3, 316, "k_3", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 3's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_3, 317, "zetas_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 3's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
@@ -211,8 +211,8 @@ X(eTop_4, 449, "eTop_4", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Ecc
 X(md_4, 410, "md_4", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 4 per metre of wall, in (0, 1e9]") \
 X(kd_4, 411, "kd_4", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 4 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_4, 412, "zetad_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 4 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_4, 413, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (Bouc-Wen laws), in (0, 1e15]") \
-X(alphad_4, 414, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4 (Bouc-Wen laws), in [0, 1]") \
+X(Fyd_4, 413, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (hysteretic laws), in (0, 1e15]") \
+X(alphad_4, 414, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4 (hysteretic laws), in [0, 1]") \
 X(m_4, 415, "m_4", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 4 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_4, 416, "k_4", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 4's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_4, 417, "zetas_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 4's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
@@ -260,8 +260,8 @@ X(eTop_5, 549, "eTop_5", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Ecc
 X(md_5, 510, "md_5", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 5 per metre of wall, in (0, 1e9]") \
 X(kd_5, 511, "kd_5", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 5 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
 X(zetad_5, 512, "zetad_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 5 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_5, 513, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (Bouc-Wen laws), in (0, 1e15]") \
-X(alphad_5, 514, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5 (Bouc-Wen laws), in [0, 1]") \
+X(Fyd_5, 513, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (hysteretic laws), in (0, 1e15]") \
+X(alphad_5, 514, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5 (hysteretic laws), in [0, 1]") \
 X(m_5, 515, "m_5", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 5 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_5, 516, "k_5", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 5's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_5, 517, "zetas_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 5's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \

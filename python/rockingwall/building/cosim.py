@@ -11,11 +11,11 @@ cs_i; no Rayleigh damping. The Bouc-Wen shape and pinching are the building's
 (description.Building.hysteresis), as the scene solver's, so both run the same law."""
 import math
 
+from ..names import SPRING_LAWS
 from .scene import Scene, WallSpec
 
 RIGID_STOREY_K = 1e11       # N/m per m: the in-plane walls of a storey taken as rigid
 RIGID_FLOOR_MASS = 1000.0   # kg/m: the floor on them (it moves by F/k: nanometres)
-DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
 
 
 def building_start_values(building):
@@ -37,7 +37,7 @@ def building_start_values(building):
         else:
             real.update({f"m_{i}": p.mass, f"k_{i}": p.stiffness,
                          f"cs_{i}": 2.0 * p.damping * math.sqrt(p.stiffness * p.mass)})
-    integer = {"nStoreys": n, "storeyLaw": 0, "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law]}
+    integer = {"nStoreys": n, "storeyLaw": 0, "diaphragmLaw": SPRING_LAWS[building.storeys[0].diaphragm.law]}
     return real, integer
 
 

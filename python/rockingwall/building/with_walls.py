@@ -2,15 +2,14 @@
 walls, ties, diaphragms and floors of a description.Building by the FMU's names, for an FMI tool
 or fmpy. The FMU runs the scene the one-integration solver (rockingwall.building.monolithic) runs,
 with the same Bouc-Wen shape and pinching (description.Building.hysteresis)."""
-from ..names import hinge_law_code
+from ..names import SPRING_LAWS, hinge_law_code
 
-DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
 
 
 def start_values(building):
     """{name: value} of every parameter the building sets (the FMU's defaults for the rest)."""
     v = {"nStoreys": len(building.storeys), "rigidInPlane": int(building.rigid_in_plane), "storeyLaw": 0,
-         "diaphragmLaw": DIAPHRAGM_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
+         "diaphragmLaw": SPRING_LAWS[building.storeys[0].diaphragm.law], "rayleighMass": 0.0,
          "rayleighStiffness": 0.0, **building.fmu_hysteresis()}
     for i, s in enumerate(building.storeys, 1):
         w, d, wall = s.wall, s.diaphragm, building.wall_parameters(i - 1)
