@@ -92,7 +92,8 @@ def simulate(wall, record, engine="exact", stop_time=None, tail=TAIL_S, output_i
     stop_time [s]: default the record's end plus `tail`. engine: 'exact' (event-driven, in this
     process), 'fmi2sim' (CVODE BDF at rtol) or 'fmpy' (the FMU's Model Exchange under fmpy's CVode).
     diaphragm: a building.description.Diaphragm (its stiffness, mass, damping): the wall tied to it
-    by `tie` [N/m per m] (the scene solver; engine is then ignored). The wall's own K_d is then not
+    by `tie` [N/m per m] on the scene solver (engine 'exact' only: the FMU and fmi2sim hold the
+    paper's scene; ValueError otherwise). The wall's own K_d is then not
     used: the diaphragm's stiffness and the tie take its place, and the result's scene names both.
     None: the paper's scene, the wall's top spring K_d ending at a fixed point.
     ensemble: an ensemble.Ensemble (or its size): the run's robustness, the same case for walls
@@ -112,6 +113,9 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
     t_end = run_end(record, stop_time, tail)
     grid = output_grid(float(record.t[0]), t_end, output_interval)
     if diaphragm is not None:
+        if engine != "exact":
+            raise ValueError(f"engine {engine!r} runs the paper's scene (the top spring to a fixed point); a wall under "
+                             "a diaphragm with mass runs on the scene solver: leave the engine at 'exact'")
         return _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie)
     if engine == "exact" and not engine_module.covers(wall.params):
         engine = PARAPET_ON_CVODE  # beyond the engine's small-rotation form: said in the result

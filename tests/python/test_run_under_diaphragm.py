@@ -137,3 +137,17 @@ def test_the_solver_line_says_what_ran(capsys):
     assert main(["run", *WALL_ARGS, "--diaphragm-mass", "200kg/m", "--pga", "0.1", "elcentro"]) == 0
     assert capsys.readouterr().out.splitlines()[-1] == (
         "solved by the scene solver (exact): the wall, its tie and the diaphragm in one integration")
+
+
+def test_an_engine_that_cannot_hold_the_diaphragm_is_refused(capsys):
+    """`run --engine fmi2sim --diaphragm-mass ...` ran the scene solver and said so in the output,
+    where the user asked for CVODE on the FMU: the option was taken and not used. It is refused
+    now (exit 2, one line), on the command line and in the API."""
+    assert main(["run", *WALL_ARGS, "--diaphragm-mass", "200kg/m", "--pga", "0.2", "gaussian:0.04,1",
+                 "--engine", "fmi2sim"]) == 2
+    err = capsys.readouterr().err
+    assert "--engine fmi2sim runs the paper's scene" in err and "Traceback" not in err
+    wall = rw.Wall.make(b="230 mm", h=3.6, W="14.904 kN/m", psi=0.2013, Kd="20 kN/m per m")
+    diaphragm = Diaphragm(stiffness=2e4, mass=200.0)
+    with pytest.raises(ValueError, match="runs the paper's scene"):
+        rw.simulate(wall, rw.read_record("gaussian:0.04,1"), engine="fmpy", diaphragm=diaphragm)

@@ -48,6 +48,9 @@ def main(args):
         return run_building(args.building, args)
     wall = cc.wall_from_args(args)
     diaphragm, tie = cc.diaphragm_from_args(args, wall)
+    if diaphragm is not None and args.engine != "exact":
+        raise ValueError(f"--engine {args.engine} runs the paper's scene (the top spring to a fixed point); a wall "
+                         "under a diaphragm with mass runs on the scene solver: drop --engine or --diaphragm-mass")
     ensemble = cc.ensemble_from_args(args)
     recs = [cc.record_from_args(spec, args) for spec in args.records]
     files = targets(cc.output_dir(args.out), recs) if args.out else []
