@@ -62,3 +62,18 @@ def format_kd(kd):
     if not math.isfinite(kd):
         return f"{kd} N/m per m"
     return f"{kd / 1e3:g} kN/m per m"
+
+
+# The time histories' columns and their units as a column name carries them ('s1' -> 's1_m'), as
+# the JSON's keys do ('peak_s1_m'): a CSV opened in a spreadsheet says what its numbers are.
+HISTORY_UNITS = {"time": "s", "ag": "m_s2", "s1": "m", "s2": "m", "diaphragm": "m", "F_top": "N_per_m",
+                 "floor_acc": "m_s2", "tie_force": "N_per_m"}
+
+
+def history_column(name, storey=None):
+    """A history's column name with its unit, and the storey (1-based) after it if given; a
+    filtered history keeps its cut-off before the unit: ('s1', 2) -> 's1_m_2', 'time' -> 'time_s',
+    ('floor_acc_25Hz', 1) -> 'floor_acc_25Hz_m_s2_1'."""
+    quantity = re.sub(r"_\d+(?:\.\d+)?Hz$", "", name)
+    column = f"{name}_{HISTORY_UNITS[quantity]}"
+    return column if storey is None else f"{column}_{storey}"

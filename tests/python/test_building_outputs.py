@@ -30,7 +30,7 @@ def test_the_written_histories_are_the_filtered_ones_the_table_reads(written):
     run, history, _ = written
     assert not any(name.startswith("base_acc") for name in history.columns)
     for i, s in enumerate(run["storeys"], 1):
-        floor, tie = history[f"floor_acc_25Hz_{i}"].abs().max(), history[f"tie_force_25Hz_{i}"].abs().max()
+        floor, tie = history[f"floor_acc_25Hz_m_s2_{i}"].abs().max(), history[f"tie_force_25Hz_N_per_m_{i}"].abs().max()
         for written, table in ((floor, s["base_peak_acc_m_s2"]), (tie, s["tie_force_N_per_m"])):
             assert 0.95 * table <= written <= table * (1 + 1e-9)
     upper = run["storeys"][1]
@@ -62,8 +62,8 @@ def test_each_storeys_panel_draws_its_wall_and_the_diaphragm_it_is_tied_to(writt
         lines = {line.get_label(): line for line in ax.get_lines()}
         s1, diaphragm = lines["wall s1 (mid-height) [mm]"], lines["diaphragm [mm]"]
         assert (s1.get_color(), diaphragm.get_color()) == ("C0", "C1")
-        assert np.allclose(s1.get_ydata(), history[f"s1_{i}"] * 1e3)
-        assert np.allclose(diaphragm.get_ydata(), history[f"diaphragm_{i}"] * 1e3)
+        assert np.allclose(s1.get_ydata(), history[f"s1_m_{i}"] * 1e3)
+        assert np.allclose(diaphragm.get_ydata(), history[f"diaphragm_m_{i}"] * 1e3)
         assert np.max(np.abs(diaphragm.get_ydata())) == pytest.approx(run["storeys"][i - 1]["diaphragm_peak_m"] * 1e3,
                                                                    rel=0.02)
         du = next(label for label in lines if label.startswith("Delta_u"))
@@ -101,6 +101,19 @@ def test_a_collapsed_wall_is_drawn_up_to_its_collapse(tmp_path, capsys, figures)
     assert "scene: a wall tied (1e+08 N/m per m) to a diaphragm of 20 kN/m per m, 200 kg/m" in run_fig.get_suptitle()
 
 
+def test_the_history_columns_carry_their_units(written, tmp_path, capsys):
+    """The CSVs named their columns s1_1, floor_acc_25Hz_1: a spreadsheet of them did not say what
+    the numbers were (m, m/s2, N/m), as the docs alone did. Each name now carries its unit as the
+    JSON's keys do, the storey last; `run`'s CSV too."""
+    _, history, _ = written
+    assert list(history.columns) == ["time_s"] + [f"{name}_{i}" for i in (1, 2) for name in (
+        "s1_m", "s2_m", "diaphragm_m", "floor_acc_25Hz_m_s2", "tie_force_25Hz_N_per_m")]
+    assert main(["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--scale", "0.5", "elcentro", "--out",
+                 str(tmp_path / "r")]) == 0
+    (csv,) = (tmp_path / "r").glob("*.csv")
+    assert list(pd.read_csv(csv).columns) == ["time_s", "ag_m_s2", "s1_m", "s2_m"]
+
+
 def test_a_collapsed_walls_columns_are_empty_after_its_collapse(tmp_path, capsys):
     """`building --out` wrote a collapsed wall's held state on to the record's end: at 1 g of El
     Centro the upper wall's s1 sat at 230 mm (its thickness) from 3.46 s to 80 s, with a tie
@@ -114,10 +127,10 @@ def test_a_collapsed_walls_columns_are_empty_after_its_collapse(tmp_path, capsys
     lower, upper = json.loads(capsys.readouterr().out)["runs"][0]["storeys"]
     assert upper["collapsed"] and not lower["collapsed"]
     history = pd.read_csv(tmp_path / "h" / "El_Centro_1940_at_0.3_g.csv")
-    after = history["time"] > upper["t_collapse_s"]
+    after = history["time_s"] > upper["t_collapse_s"]
     assert 0 < after.sum() < len(history) - 100
-    for name in ("s1_2", "s2_2", "tie_force_25Hz_2"):
+    for name in ("s1_m_2", "s2_m_2", "tie_force_25Hz_N_per_m_2"):
         assert history.loc[after, name].isna().all() and history.loc[~after, name].notna().all()
-    for name in ("diaphragm_2", "floor_acc_25Hz_2", "s1_1", "s2_1", "diaphragm_1", "tie_force_25Hz_1"):
+    for name in ("diaphragm_m_2", "floor_acc_25Hz_m_s2_2", "s1_m_1", "s2_m_1", "diaphragm_m_1", "tie_force_25Hz_N_per_m_1"):
         assert history[name].notna().all()
-    assert history.loc[after, "diaphragm_2"].abs().max() > 1e-3  # the roof still moves
+    assert history.loc[after, "diaphragm_m_2"].abs().max() > 1e-3  # the roof still moves

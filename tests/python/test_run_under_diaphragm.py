@@ -127,7 +127,7 @@ def test_the_written_history_has_the_tie_force_the_table_reads(tmp_path, capsys)
                  "--out", str(tmp_path)]) == 0
     (run,) = json.loads(capsys.readouterr().out)["runs"]
     (csv,) = tmp_path.glob("*.csv")
-    written = np.max(np.abs(np.genfromtxt(csv, delimiter=",", names=True)["F_top_25Hz"]))
+    written = np.max(np.abs(np.genfromtxt(csv, delimiter=",", names=True)["F_top_25Hz_N_per_m"]))
     assert 0.95 * run["peak_F_top_N_per_m"] <= written <= run["peak_F_top_N_per_m"] * (1 + 1e-9)
 
 

@@ -4,6 +4,7 @@ import numpy as np
 import pandas as pd
 
 from .. import figure_titles, limits, scenes, strict_json
+from ..units import history_column
 from .floor_acc import CUTOFF_HZ
 from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
@@ -130,7 +131,7 @@ def history_csv(histories, path, t_collapse=()):
     (relative to its supports), and where computed the absolute acceleration of the floor the wall
     stands on [m/s2] and the tie's force on the diaphragm [N/m], both low-pass filtered at
     floor_acc.CUTOFF_HZ (monolithic.Histories): raw on this grid, the tie's ringing would alias
-    into them. t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
+    into them. Each column's name carries its unit and storey (units.history_column: s1_m_1). t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
     s1, s2 and tie force are empty cells, as `rockingwall run` writes them: the run holds the state
     the wall collapsed at, which is no displacement, and a collapsed wall pulls on no tie."""
     scene = histories.scene
@@ -139,12 +140,12 @@ def history_csv(histories, path, t_collapse=()):
     for name, filtered in (("floor_acc", histories.floor_acc), ("tie_force", histories.tie_force)):
         if filtered is not None:
             per_storey[f"{name}_{CUTOFF_HZ:g}Hz"] = filtered
-    table = pd.DataFrame({"time": scene.t} | {f"{name}_{i + 1}": np.asarray(a[:, i], dtype=float)
+    table = pd.DataFrame({"time": scene.t} | {history_column(name, i + 1): np.asarray(a[:, i], dtype=float)
                                               for i in range(n) for name, a in per_storey.items()})
     for i, t_c in enumerate(t_collapse):
-        blank_after_collapse(table, t_c, [f"{name}_{i + 1}" for name in per_storey
+        blank_after_collapse(table, t_c, [history_column(name, i + 1) for name in per_storey
                                           if name in ("s1", "s2") or name.startswith("tie_force")])
-    table.to_csv(path, index=False, float_format="%.9g", na_rep="")
+    table.rename(columns={"time": history_column("time")}).to_csv(path, index=False, float_format="%.9g", na_rep="")
 
 
 def blank_after_collapse(table, t_collapse, columns):

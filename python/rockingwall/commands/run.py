@@ -8,6 +8,7 @@ from tqdm import tqdm
 
 from .. import limits, outputs, run_report, strict_json
 from ..api import ENGINES, simulate
+from ..units import history_column
 from . import common as cc
 from .building import run_building
 
@@ -58,7 +59,8 @@ def main(args):
                         diaphragm=diaphragm, tie=tie, ensemble=ensemble)
                for rec in tqdm(recs, desc="records", unit="record", file=sys.stderr, delay=2)]
     for r, (csv_path, png_path) in zip(results, files):  # files first: a closed pipe on stdout cannot lose them
-        cc.write_atomic(csv_path, lambda tmp, r=r: r.history.to_csv(tmp, index=False, float_format="%.9g"))
+        cc.write_atomic(csv_path, lambda tmp, r=r: r.history.rename(columns=history_column).to_csv(
+            tmp, index=False, float_format="%.9g"))
         cc.write_atomic(png_path, lambda tmp, r=r: run_report.plot(r, tmp))
         print(f"wrote {csv_path} and {png_path}", file=sys.stderr)
     if args.json:
