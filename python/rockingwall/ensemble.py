@@ -3,7 +3,8 @@ scales drawn within the inputs' plausible uncertainty, so that a chaotic respons
 is reported as a probability and a spread, not as one exact number.
 
 Each member multiplies psi (the overburden), W, b, K_d (the diaphragm's stiffness), the record's
-scale and, where the scene has them, the diaphragm's mass and damping and the tie by exp(s z),
+scale and, where the scene has them, the diaphragm's mass and damping, the tie and a hysteretic
+diaphragm's yield force by exp(s z),
 z a standard normal draw truncated at 3 (s: the spread, about the coefficient of variation), and
 adds s z to e_r (kept within [0, 1]). The draws come from one seeded generator and are the same
 for every case of a study (common random numbers): member k is the same plausible wall under
@@ -20,8 +21,14 @@ from . import engine
 from .building import monolithic
 from .building.trusted_run import BuildingError
 
-FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
+# The inputs perturbed, in the order their draws are made. The later ones are drawn after the
+# first nine, so that adding one left every member's earlier inputs as they were: a study run
+# again gives the same members.
+FIRST_FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphragm_damping", "tie")
+LATER_FIELDS = ("diaphragm_yield",)
+FIELDS = FIRST_FIELDS + LATER_FIELDS
 DIAPHRAGM_FIELDS = ("diaphragm_mass", "diaphragm_damping", "tie")  # scenes (b) and (c) only
+HYSTERETIC_FIELDS = ("diaphragm_yield",)  # a building's hysteretic diaphragms only
 TRUNCATE = 3.0
 FLIP_SHARE = 0.05   # a case is flagged when this share of the ensemble or more disagrees with its nominal run
 
@@ -40,6 +47,7 @@ class Spreads:
     diaphragm_mass: float = 0.20    # the diaphragm's tributary mass
     diaphragm_damping: float = 0.30 # its damping ratio
     tie: float = 1.0                # the wall-to-diaphragm connection: a factor e either way
+    diaphragm_yield: float = 0.30   # a hysteretic diaphragm's yield force: tables, as its stiffness
 
     @classmethod
     def parse(cls, items):
@@ -82,7 +90,9 @@ class Ensemble:
 
     def factors(self, storeys=1):
         """{field: array (size, storeys)}: the factor on each input (for er: the value to add)."""
-        z = np.random.default_rng(self.seed).standard_normal((self.size, storeys, len(FIELDS)))
+        rng = np.random.default_rng(self.seed)
+        z = np.concatenate([rng.standard_normal((self.size, storeys, len(FIRST_FIELDS))),
+                            rng.standard_normal((self.size, storeys, len(LATER_FIELDS)))], axis=2)
         z = np.clip(z, -TRUNCATE, TRUNCATE)
         out = {}
         for i, name in enumerate(FIELDS):
@@ -177,8 +187,8 @@ def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_
 
 def building_members(building, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a building (scene c): [Members per storey]. Every storey's wall (psi via
-    its overburden, W, b, e_r), diaphragm (stiffness, mass, damping) and tie perturbed, each storey
-    by its own draws; the in-plane walls as given. with_tie_force: each standing wall's tie force
+    its overburden, W, b, e_r), diaphragm (stiffness, mass, damping; a hysteretic one's yield force)
+    and tie perturbed, each storey by its own draws; the in-plane walls as given. with_tie_force: each standing wall's tie force
     too (one more run per member), else NaN."""
     n = len(building.storeys)
     factors = ensemble.factors(n)
@@ -195,6 +205,8 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
             d = dataclasses.replace(s.diaphragm, stiffness=s.diaphragm.stiffness * f["Kd"],
                                     mass=s.diaphragm.mass * f["diaphragm_mass"],
                                     damping=min(2.0, s.diaphragm.damping * f["diaphragm_damping"]))
+            if d.law != "linear":
+                d = dataclasses.replace(d, yield_force=d.yield_force * f["diaphragm_yield"])
             storeys.append(dataclasses.replace(s, wall=wall, diaphragm=d, tie=s.tie * f["tie"]))
         member = dataclasses.replace(building, storeys=tuple(storeys))
         params = [member.wall_parameters(i) for i in range(n)]

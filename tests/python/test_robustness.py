@@ -4,6 +4,8 @@ The assessor's wall: b = 230 mm, h = 3.6 m, W = 14.904 kN/m, psi = 0.2013, under
 1989, Capitola 000 (FEMA P695 far-field ff13a). At 0.5 g with K_d = 200 kN/m per m the nominal
 run stands at 124 mm, and psi = 0.2 (7 N/m less roof load) collapses it: rocking near collapse is
 chaotic, and a single run's peak is not the answer there."""
+import pathlib
+
 import numpy as np
 import pytest
 from scipy import optimize, stats
@@ -92,6 +94,30 @@ def test_the_ensemble_of_a_wall_under_a_diaphragm_with_mass_runs_the_scene_solve
     tie = ens.diaphragm_members(wall.params, d, 1e8, record, ens.Ensemble(size=3, spreads=only_tie),
                                 float(record.t[-1]))
     assert np.ptp(tie.peak_s1) > 0 and not tie.failed.any()
+
+
+def test_the_yield_force_spread_varies_a_hysteretic_building_and_leaves_the_other_draws_alone():
+    """A hysteretic diaphragm's yield force is as uncertain as its stiffness (tables): the ensemble
+    perturbs it for a building with bilinear (or Bouc-Wen) diaphragms. Its draws come after the
+    nine earlier inputs', so every member's earlier inputs are what they were before it was added."""
+    e = ens.Ensemble(size=6, seed=5)
+    z = np.clip(np.random.default_rng(5).standard_normal((6, 2, 9)), -ens.TRUNCATE, ens.TRUNCATE)
+    f = e.factors(2)
+    for j, name in enumerate(ens.FIRST_FIELDS):
+        np.testing.assert_array_equal(f[name], z[:, :, j] * e.spreads.er if name == "er"
+                                      else np.exp(getattr(e.spreads, name) * z[:, :, j]))
+    from rockingwall.building import building_file
+    text = (pathlib.Path(__file__).parents[2] / "examples" / "two-storey-brick.toml").read_text()
+    for k, fy in (('"60 kN/m/m"', "1.2 kN/m"), ('"20 kN/m/m"', "0.4 kN/m")):
+        text = text.replace(f"stiffness = {k}, mass", f'law = "bilinear", yield_force = "{fy}", post_yield = 0.1, '
+                                                      f"stiffness = {k}, mass")
+    house = building_file.parse(text)
+    record = rw.read_record("elcentro").to_pga(0.15)
+    only_yield = ens.Spreads(**{name: (0.3 if name == "diaphragm_yield" else 0.0) for name in ens.FIELDS})
+    members = ens.building_members(house, record, ens.Ensemble(size=4, spreads=only_yield), 10.0)
+    none = ens.building_members(house, record, ens.Ensemble(size=2, spreads=ens.Spreads(
+        **{name: 0.0 for name in ens.FIELDS})), 10.0)
+    assert np.ptp(members[1].peak_s1) > 1e-4 and np.ptp(none[1].peak_s1) == 0.0
 
 
 # ---- the fragility fits ------------------------------------------------------------------------

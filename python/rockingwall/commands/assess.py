@@ -26,7 +26,7 @@ from tqdm import tqdm
 from .. import (assessment, assessment_building, assessment_codes, assessment_codes_building, assessment_report,
                engine, intensity, limits, records, scenes, strict_json, units)
 from ..api import ENGINES, PARAPET_ON_CVODE
-from ..ensemble import DIAPHRAGM_FIELDS, FIELDS as SPREAD_FIELDS
+from ..ensemble import DIAPHRAGM_FIELDS, FIELDS as SPREAD_FIELDS, HYSTERETIC_FIELDS
 from ..names import SUPPORTS
 from ..output_folder import MANIFEST, OutputFolder
 from . import common as cc
@@ -154,7 +154,8 @@ def wall_study(args):
     def run(lvs, ensemble):
         return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
     varied = tuple(f for f in SPREAD_FIELDS  # a massless or absent spring has no diaphragm to perturb
-                   if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd"))
+                   if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd")
+                   and f not in HYSTERETIC_FIELDS)  # (its diaphragm is linear)
     return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall,
                  spread_fields=varied)
 
@@ -174,7 +175,10 @@ def building_study(args):
 
     def run(lvs, ensemble):
         return assessment_building.run_cases(building, lvs, states, ensemble)
-    return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building)
+    hysteretic = any(s.diaphragm.law != "linear" for s in building.storeys)
+    varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
+    return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
+                 spread_fields=varied)
 
 
 def write_files(out, cases, frag, recs, states, im_name, study):
