@@ -20,7 +20,9 @@ from . import engine
 from .errors import RockingWallError
 
 MAX_STOREYS = 5
-SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
+# the spring laws by name and by the C code of building_physics.h (bilinear: elastoplastic with
+# kinematic hardening; a storey takes every law but boucWenPinched)
+SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 ERRORS = {1: "bad argument", 2: "bad scene", 3: "solver", 4: "Zeno", 5: "no memory", 6: "unsupported"}
 ENGINES = ("exact", "cvode")
 
@@ -81,7 +83,7 @@ class SceneError(RockingWallError, RuntimeError):
 class StoreySpec:
     """One storey: its wall (a dict of the wall's parameters by the FMU's names, support
     flexibleTop and Kd = the tie's stiffness; None for no wall), the diaphragm on top of it (mass
-    md [kg/m], stiffness kd [N/m per m], dashpot cd [N s/m per m]; Bouc-Wen yield force Fyd [N/m]
+    md [kg/m], stiffness kd [N/m per m], dashpot cd [N s/m per m]; hysteretic yield force Fyd [N/m]
     and post-yield ratio alphad) and the in-plane walls of the storey (floor mass m, stiffness k,
     dashpot cs, Fy, alpha; unused when the scene's in-plane walls are rigid)."""
     wall: dict = None
@@ -100,7 +102,8 @@ class StoreySpec:
 @dataclasses.dataclass(frozen=True)
 class Spec:
     """A scene: storeys bottom up, the in-plane walls rigid or not, the spring laws (one for all
-    diaphragms, one for all storeys) with the Bouc-Wen shape (n, beta) and pinching, Rayleigh."""
+    diaphragms, one for all storeys: SPRING_LAWS) with the Bouc-Wen shape (n, beta) and pinching,
+    Rayleigh."""
     storeys: tuple
     rigid_in_plane: bool = True
     diaphragm_law: str = "linear"

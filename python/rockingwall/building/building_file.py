@@ -19,7 +19,7 @@ WALL_KEYS = {"b", "W", "unit_weight", "overburden", "e_top", "hinge_law", "e_r"}
 PINCHING_KEYS = ("pinch_size", "pinch_width", "pinch_centre")
 DIAPHRAGM_KEYS = {"stiffness", "mass", "damping", "law", "yield_force", "post_yield", *PINCHING_KEYS}
 IN_PLANE_KEYS = {"stiffness", "mass", "damping"}
-DIAPHRAGM_LAWS = ("linear", "boucWen", "boucWenPinched")
+DIAPHRAGM_LAWS = ("linear", "boucWen", "boucWenPinched", "bilinear")
 RANGES = {  # what a masonry building's per-metre numbers can be (SI); outside is refused
     "height": (0.5, 30.0), "b": (0.02, 3.0), "W": (10.0, 1e6), "unit_weight": (1e3, 1e5), "overburden": (0.0, 1e7),
     "stiffness": (0.0, 1e12), "mass": (1e-6, 1e7), "damping": (0.0, 2.0), "tie": (1.0, 1e12), "e_r": (0.0, 1.0),
@@ -136,7 +136,8 @@ def _diaphragm(table, where, line, what):
         raise where.error(line, f"{what}.law = {law!r}: known {', '.join(DIAPHRAGM_LAWS)}", _keys(what) + ["law"])
     hysteretic = law != "linear"
     if hysteretic != ("yield_force" in table):
-        raise where.error(line, f"{what}: yield_force is given with a Bouc-Wen law and only with one", _keys(what))
+        raise where.error(line, f"{what}: yield_force is given with a hysteretic law ({', '.join(DIAPHRAGM_LAWS[1:])}) "
+                                f"and only with one", _keys(what))
     given = [k for k in PINCHING_KEYS if k in table]
     if given and law != "boucWenPinched":
         raise where.error(line, f"{what}: {', '.join(given)} is the pinching of law = \"boucWenPinched\" only",

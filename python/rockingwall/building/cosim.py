@@ -15,7 +15,7 @@ from .scene import Scene, WallSpec
 
 RIGID_STOREY_K = 1e11       # N/m per m: the in-plane walls of a storey taken as rigid
 RIGID_FLOOR_MASS = 1000.0   # kg/m: the floor on them (it moves by F/k: nanometres)
-DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
+DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 
 
 def building_start_values(building):

@@ -26,7 +26,7 @@ MAX_STOREYS = 5
 # Building FMU's defaults for timber, slack in nailed sheathing (docs/building.md)
 PINCHING_TIMBER = {"pinch_size": 0.8, "pinch_width": 0.2, "pinch_centre": 0.1}
 NO_PINCHING = {"pinch_size": 0.0, "pinch_width": 1.0, "pinch_centre": 0.0}
-BOUC_WEN_SHAPE = {"n_bw": 1.0, "beta": 0.5}  # the loop's shape for both Bouc-Wen laws
+BOUC_WEN_SHAPE = {"n_bw": 1.0, "beta": 0.5}  # the loop's shape for both Bouc-Wen laws (bilinear: unused)
 # the same quantities by the Building FMUs' parameter names
 FMU_HYSTERESIS_NAMES = {"n_bw": "nBW", "beta": "betaBW", "pinch_size": "pinchSize", "pinch_width": "pinchWidth",
                         "pinch_centre": "pinchCentre"}
@@ -50,9 +50,10 @@ class WallLayer:
 @dataclasses.dataclass(frozen=True)
 class Diaphragm:
     """The diaphragm on top of a storey, at the wall, per metre of wall: stiffness [N/m per m],
-    mass [kg/m] and damping ratio; law 'linear', 'boucWen' or 'boucWenPinched' (the latter two
-    with a yield force [N/m] and a post-yield stiffness ratio); pinching: Foliente's (pinch_size,
-    pinch_width, pinch_centre) of a boucWenPinched law, default PINCHING_TIMBER."""
+    mass [kg/m] and damping ratio; law 'linear', 'boucWen', 'boucWenPinched' or 'bilinear'
+    (elastoplastic with kinematic hardening; the hysteretic three with a yield force [N/m] and a
+    post-yield stiffness ratio); pinching: Foliente's (pinch_size, pinch_width, pinch_centre) of a
+    boucWenPinched law, default PINCHING_TIMBER."""
     stiffness: float
     mass: float
     damping: float = DAMPING_DEFAULT

@@ -11,7 +11,7 @@ from . import floor_acc, tie_force
 from .concurrent_runs import InOrder
 from .trusted_run import check_energy
 
-SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched"}
+SPRING_LAW = {"linear": "linear", "boucWen": "boucWen", "boucWenPinched": "boucWenPinched", "bilinear": "bilinear"}
 
 # The sensitivity check: the record scaled by 1 -/+ this, far below any record's accuracy. Impacts
 # through a stiff tie can make a building's motion sensitive: on two storeys tied at 1e9 N/m per m

@@ -4,7 +4,7 @@ or fmpy. The FMU runs the scene the one-integration solver (rockingwall.building
 with the same Bouc-Wen shape and pinching (description.Building.hysteresis)."""
 from ..names import hinge_law_code
 
-DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2}
+DIAPHRAGM_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 
 
 def start_values(building):
