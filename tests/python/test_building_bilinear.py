@@ -13,6 +13,7 @@ hardening, docs/building.md) for the Building's diaphragms and storeys:
   to BuildingWithWalls.fmu and the co-simulated Building FMU;
 - the laws' tables agree (Python's names, the FMUs' codes and descriptions).
 """
+import dataclasses
 import json
 import math
 import xml.etree.ElementTree as ET
@@ -309,3 +310,12 @@ def test_the_model_descriptions_name_the_law(repo, model, version):
     desc = {v.get("name"): v.get("description") for v in root.iter(tag)}
     assert "3 bilinear (elastoplastic, kinematic hardening)" in desc["diaphragmLaw"]
     assert "3 bilinear" in desc["storeyLaw"] and "2 " not in desc["storeyLaw"]
+
+
+def test_the_scene_solver_refuses_a_pinched_storey(el_centro):
+    """rw_scene_validate checks the laws as the FMUs do (it did not: an unknown law ran as
+    Bouc-Wen): a pinched storey is refused with the law named, by both engines."""
+    pinched_storey = dataclasses.replace(scene("bilinear"), storey_law="boucWenPinched")
+    for engine in se.ENGINES:
+        with pytest.raises(se.SceneError, match="storey law 2 is not one of 0 linear, 1 Bouc-Wen, 3 bilinear"):
+            se.run(pinched_storey, el_centro.t, el_centro.ag, engine=engine)
