@@ -53,7 +53,7 @@ MODELS = {
         header=MODELS_DIR / "Building" / "building_variables.h",
         output=MODELS_DIR / "Building" / "fmi2" / "modelDescription.xml", prefix="BD",
         description="In-plane building of 1 to 5 storeys per metre of out-of-plane wall: storey shear springs "
-                    "and floor diaphragms (linear, Bouc-Wen, or Bouc-Wen with pinching), Rayleigh damping, "
+                    "and floor diaphragms (linear, Bouc-Wen, Bouc-Wen with pinching, or bilinear), Rayleigh damping, "
                     "driven by the ground acceleration and the out-of-plane walls' forces",
         sources=["building_physics.c", "building_model.c"] + SHARED_SOURCES,
         log_events="Instantiation and Co-Simulation steps"),
@@ -62,7 +62,7 @@ MODELS = {
         output=MODELS_DIR / "BuildingWithWalls" / "fmi2" / "modelDescription.xml", prefix="BW",
         description="A building of 1 to 5 storeys per metre of face-loaded wall as one model: in each storey a "
                     "rocking wall (RockingWall's physics and event rules) standing on the diaphragm below and tied "
-                    "to the one above, the diaphragms and floors (linear, Bouc-Wen, pinched) as states of the same "
+                    "to the one above, the diaphragms and floors (linear, Bouc-Wen, pinched, bilinear) as states of the same "
                     "integration, driven by the ground acceleration",
         sources=["rw_parameters.c", "rw_hinge_laws.c", "rw_dynamics.c", "rw_indicators.c", "rw_outputs.c",
                  "rw_events.c", "building_physics.c", "rw_scene.c", "bw_params.c", "bw_model.c"] + SHARED_SOURCES,

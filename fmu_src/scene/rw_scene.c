@@ -67,6 +67,14 @@ int rw_scene_validate(const rw_scene_spec *spec, char *msg, size_t n)
         snprintf(msg, n, "a scene has 1 to %d storeys, not %d", RW_SCENE_MAX_STOREYS, spec->n_storeys);
         return 1;
     }
+    if (!bd_law_allowed(spec->building.diaphragm_law, 0)) {
+        snprintf(msg, n, "diaphragm law %d is not one of %s", spec->building.diaphragm_law, BD_DIAPHRAGM_LAWS_TEXT);
+        return 1;
+    }
+    if (!bd_law_allowed(spec->building.storey_law, 1)) {
+        snprintf(msg, n, "storey law %d is not one of %s", spec->building.storey_law, BD_STOREY_LAWS_TEXT);
+        return 1;
+    }
     for (i = 0; i < spec->n_storeys; i++) {
         const bd_params *b = &spec->building;
         char why[384];

@@ -1,6 +1,6 @@
 /* A scene (rw_scene.h) run over a ground-motion record with CVODE: Adams (fixed-point iteration, Newton
  * where the scene proves stiff) with root-finding on every wall's event indicators and the walls' own event rules at each root, one integration for the
- * whole scene. Works for every spring law of the building (linear, Bouc-Wen, pinched). */
+ * whole scene. Works for every spring law of the building (linear, Bouc-Wen, pinched, bilinear). */
 #ifndef RW_SCENE_RUN_H
 #define RW_SCENE_RUN_H
 

@@ -4,7 +4,7 @@ fmu_src/models/Building/building_physics.h: `storeyLaw`, `diaphragmLaw`). The on
 
 SUPPORTS = {"parapet": 1, "simplySupported": 2, "flexibleTop": 3}
 HINGE_LAWS = {"rigid": 1, "semiRigidPaper": 2, "semiRigidHinge": 3, "dohertyHinge": 4}
-# the springs of the building (diaphragms; the in-plane walls take the first two)
+# the springs of the building (diaphragms; the in-plane walls take all but boucWenPinched)
 SPRING_LAWS = {"linear": 0, "boucWen": 1, "boucWenPinched": 2, "bilinear": 3}
 SUPPORT_NAMES = {code: name for name, code in SUPPORTS.items()}
 HINGE_LAW_NAMES = {code: name for name, code in HINGE_LAWS.items()}

@@ -61,12 +61,12 @@ STACKED = "each wall stands on the floor below and is tied to the diaphragm abov
 def coupled_building(n_storeys, storeys_with_walls, wall, diaphragm_law, source=None):
     """Scene (c) as `rockingwall couple-building` builds it from its options: the Building FMU's
     defaults, the paper's wall `wall` in the storeys given, diaphragms of the law numbered as the
-    FMU's diaphragmLaw (0 linear, 1 Bouc-Wen, 2 Bouc-Wen pinched); or, with `source`, the system of
-    that SSP file (wall and diaphragm_law None)."""
+    FMU's diaphragmLaw (0 linear, 1 Bouc-Wen, 2 Bouc-Wen pinched, 3 bilinear); or, with `source`,
+    the system of that SSP file (wall and diaphragm_law None)."""
     if source is not None:
         return Scene("building", f"walls in a {n_storeys}-storey building (the system of {source}): {STACKED}",
                      BUILDING_LEFT_OUT)
-    law = ("linear", "Bouc-Wen", "pinched Bouc-Wen")[diaphragm_law]
+    law = ("linear", "Bouc-Wen", "pinched Bouc-Wen", "bilinear")[diaphragm_law]
     return Scene("building",
                  f"walls in a {n_storeys}-storey building (the Building FMU's defaults; the paper's wall {wall} in "
                  f"storeys {', '.join(map(str, storeys_with_walls))}): {STACKED}; {law} diaphragms with mass and "

@@ -84,8 +84,32 @@ static void test_out_of_range(void)
     bad_integer(BD_VR_nStoreys, 6, "nStoreys");
     bad_integer(BD_VR_nStoreys, -2147483647 - 1, "nStoreys");
     bad_integer(BD_VR_storeyLaw, 2, "storeyLaw"); /* no pinching for the storeys */
+    bad_integer(BD_VR_storeyLaw, 4, "storeyLaw");  /* one past bilinear, the last law */
     bad_integer(BD_VR_storeyLaw, -1, "storeyLaw");
-    bad_integer(BD_VR_diaphragmLaw, 4, "diaphragmLaw"); /* 3 is the bilinear law */
+    bad_integer(BD_VR_diaphragmLaw, 4, "diaphragmLaw");
+    bad_integer(BD_VR_diaphragmLaw, -1, "diaphragmLaw");
+}
+
+/* every law a storey or a diaphragm takes is accepted: 0 to 3 for a diaphragm (3 bilinear), all
+ * but the pinching (2) for a storey */
+static void test_laws_accepted(void)
+{
+    const fmi2ValueReference vr[2] = {BD_VR_storeyLaw, BD_VR_diaphragmLaw};
+    int law, k;
+    for (k = 0; k < 2; k++)
+        for (law = 0; law <= 3; law++) {
+            fmi2Component c;
+            fmi2Integer v = law, got = -1;
+            if (k == 0 && law == 2) continue;
+            c = in_state(S_INST, fmi2ModelExchange);
+            n_logs = 0;
+            CHECK(fmi2SetInteger(c, &vr[k], 1, &v) == fmi2OK, "%s = %d refused: %s", k ? "diaphragmLaw" : "storeyLaw",
+                  law, n_logs ? last_message : "");
+            fmi2SetupExperiment(c, fmi2False, 0, 0, fmi2False, 0);
+            CHECK(fmi2EnterInitializationMode(c) == fmi2OK && fmi2GetInteger(c, &vr[k], 1, &got) == fmi2OK && got == law,
+                  "%s: read back %d, set %d", k ? "diaphragmLaw" : "storeyLaw", (int)got, law);
+            fmi2FreeInstance(c);
+        }
 }
 
 static void test_nonfinite(void)
@@ -300,6 +324,7 @@ static void test_cosim(void)
 int main(void)
 {
     test_out_of_range();
+    test_laws_accepted();
     test_nonfinite();
     test_value_references_and_settability();
     test_state_machine();

@@ -38,6 +38,17 @@ static void refused_integer(fmi2ValueReference vr, int v, const char *name)
     fmi2FreeInstance(c);
 }
 
+static void accepted_integer(fmi2ValueReference vr, int v, const char *name)
+{
+    fmi2Component c = instance(fmi2ModelExchange);
+    fmi2Integer got = -1;
+    n_logs = 0;
+    CHECK(fmi2SetInteger(c, &vr, 1, &v) == fmi2OK, "%s = %d refused: %s", name, v, n_logs ? last_message : "");
+    CHECK(fmi2EnterInitializationMode(c) == fmi2OK && fmi2GetInteger(c, &vr, 1, &got) == fmi2OK && got == v,
+          "%s: read back %d, set %d", name, (int)got, v);
+    fmi2FreeInstance(c);
+}
+
 static void test_bad_parameters(void)
 {
     fmi2Component c;
@@ -53,6 +64,11 @@ static void test_bad_parameters(void)
     refused_integer(BW_VR_nStoreys, 6, "nStoreys");
     refused_integer(BW_VR_hingeLaw_2, 7, "hingeLaw_2");
     refused_integer(BW_VR_hasWall_1, 2, "hasWall_1");
+    refused_integer(BW_VR_diaphragmLaw, 4, "diaphragmLaw"); /* one past bilinear, the last law */
+    refused_integer(BW_VR_storeyLaw, 4, "storeyLaw");
+    refused_integer(BW_VR_storeyLaw, 2, "storeyLaw"); /* the pinching is the diaphragms' */
+    accepted_integer(BW_VR_diaphragmLaw, 3, "diaphragmLaw");
+    accepted_integer(BW_VR_storeyLaw, 3, "storeyLaw");
     /* a wall thicker than it is high: each value in range, the scene refused */
     c = instance(fmi2ModelExchange);
     CHECK(fmi2SetReal(c, vr, 2, v) == fmi2OK, "b_1, h_1 in range");

@@ -168,38 +168,6 @@ def test_bouc_wen_with_large_n_is_elastoplastic(building_fmu):
     assert area == pytest.approx(bilinear_area, rel=3e-2)
 
 
-def test_bilinear_diaphragm_loop(building_fmu):
-    """The bilinear law (diaphragmLaw 3) on diaphragm 1, pushed cyclically through its stiff floor:
-    the loop is the elastoplastic one with kinematic hardening, written here from its definition:
-    the hysteretic force reaches (1 - alpha) Fy and no more, the loop's area is
-    4 (1 - alpha) Fy (d_max - Dy) for a symmetric cycle of amplitude d_max, the work per cycle
-    equals it, and the loop's slopes are k on the elastic branches and alpha k while yielding."""
-    kd, fyd, alphad = 7e5, 1e4, 0.1
-    dy = fyd / kd
-    extra = {"storeyLaw": 0, "diaphragmLaw": 3, "kd_1": kd, "Fyd_1": fyd, "alphad_1": alphad, "k_1": 1e9,
-             "rayleighMass": 2.0}
-    c = last_cycle(cyclic_push(building_fmu, 1.0, 1.3e4, extra=extra))
-    d, F = c["d_diaph_1"], c["F_diaph_1"]
-    hysteretic = F - alphad * kd * d
-    d_max = 0.5 * (d.max() - d.min())
-    area, work = shoelace(d, F), c["work_diaph_1"][-1] - c["work_diaph_1"][0]
-    expected = 4 * (1 - alphad) * fyd * (d_max - dy)
-    slope = (F[2:] - F[:-2]) / (d[2:] - d[:-2])
-    moving = np.abs(F[2:] - F[:-2]) > 0.2 * np.max(np.abs(F[2:] - F[:-2]))  # the push is a force
-    limit = np.abs(hysteretic) > 0.999 * (1 - alphad) * fyd  # a slope's three samples on one branch:
-    at_limit = limit[:-2] & limit[1:-1] & limit[2:] & moving
-    inside = ~limit[:-2] & ~limit[1:-1] & ~limit[2:] & moving
-    print(f"bilinear: amplitude {d_max / dy:.2f} Dy, loop area {area:.2f} J/m vs {expected:.2f}, work {work:.2f}; "
-          f"slopes {np.median(slope[inside]) / kd:.4f} k inside, {np.median(slope[at_limit]) / kd:.4f} k yielding")
-    assert d_max > 2 * dy, "the push does not yield the diaphragm"
-    assert np.abs(hysteretic).max() == pytest.approx((1 - alphad) * fyd, rel=1e-4)
-    assert area == pytest.approx(expected, rel=1e-2)
-    assert work == pytest.approx(area, rel=1e-2)
-    assert inside.sum() > 20 and at_limit.sum() > 20
-    np.testing.assert_allclose(slope[inside], kd, rtol=1e-3)
-    np.testing.assert_allclose(slope[at_limit], alphad * kd, rtol=1e-3)
-
-
 def test_pinched_diaphragm_loop(building_fmu):
     """Foliente's pinching (diaphragmLaw 2) on diaphragm 1, pushed cyclically through its stiff
     floor: the work per cycle is the loop area; the loop's tangent stiffness dF/dd (central

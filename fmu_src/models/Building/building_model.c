@@ -1,7 +1,7 @@
 /* Building as an FMU model: the callbacks of fmu_model.h over building_physics.c. Holds the
  * instance data (parameters, inputs, states); the FMI 2.0 API is the shared fmi2Functions.c and
- * Co-Simulation the shared CVODE stepper (cs_cvode.c). No events: the Bouc-Wen variables are
- * continuous states. */
+ * Co-Simulation the shared CVODE stepper (cs_cvode.c). No events: the hysteretic variables (Bouc-Wen
+ * and bilinear) are continuous states. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -208,10 +208,13 @@ static int set_real(void *M, unsigned vr, double value, char *msg, size_t n)
 static int set_integer(void *M, unsigned vr, int value, char *msg, size_t n)
 {
     bd_data *S = (bd_data *)M;
-    const int lo = vr == BD_VR_nStoreys ? 1 : 0;
-    const int hi = vr == BD_VR_nStoreys ? BD_MAX_FLOORS : (vr == BD_VR_storeyLaw ? BD_BOUC_WEN : BD_BILINEAR);
-    if (value < lo || value > hi) {
-        snprintf(msg, n, "%s = %d is out of its range [%d, %d]", name_of(vr), value, lo, hi);
+    if (vr == BD_VR_nStoreys && (value < 1 || value > BD_MAX_FLOORS)) {
+        snprintf(msg, n, "%s = %d is out of its range [1, %d]", name_of(vr), value, BD_MAX_FLOORS);
+        return 1;
+    }
+    if (vr != BD_VR_nStoreys && !bd_law_allowed(value, vr == BD_VR_storeyLaw)) {
+        snprintf(msg, n, "%s = %d is not one of its laws (%s)", name_of(vr), value,
+                 vr == BD_VR_storeyLaw ? BD_STOREY_LAWS_TEXT : BD_DIAPHRAGM_LAWS_TEXT);
         return 1;
     }
     *integer_parameter(&S->P, vr) = value;

@@ -6,6 +6,12 @@
 
 static double sgn(double v) { return (v > 0.0) - (v < 0.0); }
 
+int bd_law_allowed(int law, int storey)
+{
+    if (law < BD_ELASTIC || law > BD_LAST_LAW) return 0;
+    return !(storey && law == BD_BOUC_WEN_PINCHED);
+}
+
 static const double *floor_states(const double x[BD_NX], int i) { return x + BD_STATES_PER_FLOOR * i; }
 
 double bd_drift(const double x[BD_NX], int i)
@@ -19,7 +25,7 @@ double bd_diaphragm_deformation(const double x[BD_NX], int i)
     return floor_states(x, i)[BD_Y] - floor_states(x, i)[BD_U];
 }
 
-/* linear: k u; Bouc-Wen: alpha k u + (1 - alpha) Fy z with the normalised z (|z| <= 1) */
+/* linear: k u; Bouc-Wen and bilinear: alpha k u + (1 - alpha) Fy z with the normalised z (|z| <= 1) */
 static double spring_force(int law, const bd_spring *s, double u, double z)
 {
     if (law == BD_ELASTIC) return s->k * u;
@@ -54,14 +60,27 @@ static double power_of(double a, double n)
     return pow(a, n);
 }
 
+/* The bilinear law, Bouc-Wen's limit n -> infinity with beta = gamma = 1/2: z follows u at the
+ * elastic slope (du/Dy) until |z| reaches 1, then stays while the spring loads on (yield, the force
+ * growing at alpha k alone) and leaves 1 at the elastic slope as soon as it unloads (kinematic
+ * hardening: the elastic range 2 Fy (1 - alpha) wide, wherever the loop stands).
+ * The test is |z| >= 1, not |z| == 1, and a yielding z keeps a rate of exactly 0 rather than being
+ * pulled back: the step that reaches the limit carries z past 1 by the integrator's error (a
+ * multistep method's history still holds the elastic rate; about 1e-6 at rtol 1e-9), and rounding
+ * leaves z a hair past; with the elastic rate there z would drift on past 1 for as long as the
+ * spring loads, and a pull-back rate would be a stiff term the law does not have. Held where it
+ * landed, z is off by that error only, and it rejoins the loop on the next unloading. */
+static double bilinear_rate(double z, double du, double dy)
+{
+    return bd_bilinear_branch(z, du) ? 0.0 : du / dy; /* yielding (at rest the rate is 0 anyway) */
+}
+
 double bd_hysteretic_rate(const bd_params *p, int law, const bd_spring *s, double z, double du)
 {
     const double gamma = 1.0 - p->beta, dy = s->Fy / s->k;
     double rate;
     if (law == BD_ELASTIC) return 0.0;
-    /* bilinear: z follows du / Dy on the elastic branch and stays while yielding; a z that a
-     * solver's step has put a hair past +-1 is yielding, so it cannot drift further out */
-    if (law == BD_BILINEAR) return bd_bilinear_branch(z, du) ? 0.0 : du / dy;
+    if (law == BD_BILINEAR) return bilinear_rate(z, du, dy);
     rate = du / dy * (1.0 - power_of(fabs(z), p->n_bw) * (p->beta * sgn(du * z) + gamma));
     return law == BD_BOUC_WEN_PINCHED ? pinching(p, z, du) * rate : rate;
 }

@@ -24,8 +24,8 @@
 /* clang-format off */
 #define BD_VARIABLES(X) \
 X(nStoreys, 1, "nStoreys", Integer, "parameter", "fixed", "exact", 2, "", 0, 0, "Number of storeys N, 1..5 (floors above N are held at rest, their outputs 0)") \
-X(storeyLaw, 2, "storeyLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Storey shear springs (in-plane walls): 0 linear elastic, 1 Bouc-Wen") \
-X(diaphragmLaw, 3, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Diaphragm springs: 0 linear elastic, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic with kinematic hardening)") \
+X(storeyLaw, 2, "storeyLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Storey shear springs (in-plane walls): 0 linear elastic, 1 Bouc-Wen, 3 bilinear (elastoplastic, kinematic hardening)") \
+X(diaphragmLaw, 3, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "Diaphragm springs: 0 linear elastic, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic, kinematic hardening)") \
 X(nBW, 4, "nBW", Real, "parameter", "fixed", "exact", 2, "1", 0, 0, "Bouc-Wen exponent n, in [1, 100] (large n: sharp, elastoplastic-like yield)") \
 X(betaBW, 5, "betaBW", Real, "parameter", "fixed", "exact", 0.5, "1", 0, 0, "Bouc-Wen beta, in [0, 1]; gamma = 1 - beta so that the hysteretic force saturates at the yield force") \
 X(pinchSize, 6, "pinchSize", Real, "parameter", "fixed", "exact", 0.8, "1", 0, 0, "Pinching: zeta1 of Foliente's pinching function, in [0, 0.99] (diaphragmLaw 2)") \
@@ -49,12 +49,12 @@ X(F_above_1, 111, "F_above_1", Real, "input", "continuous", "", 0, "N/m", 0, 0, 
 X(u_floor_1, 120, "u_floor_1", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 1 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_1, 121, "v_floor_1", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 120, "Velocity of floor 1 relative to the ground (state, der(u_floor_1))") \
 X(der_v_floor_1, 131, "der(v_floor_1)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 121, "Acceleration of floor 1 relative to the ground") \
-X(z_storey_1, 122, "z_storey_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 1, z/z_u in [-1, 1] (state)") \
+X(z_storey_1, 122, "z_storey_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 1, z/z_u in [-1, 1] (state)") \
 X(der_z_storey_1, 132, "der(z_storey_1)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 122, "Rate of z_storey_1") \
 X(u_diaph_1, 123, "u_diaph_1", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 1 relative to the ground (state)") \
 X(v_diaph_1, 124, "v_diaph_1", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 123, "Velocity of diaphragm 1 relative to the ground (state, der(u_diaph_1))") \
 X(der_v_diaph_1, 134, "der(v_diaph_1)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 124, "Acceleration of diaphragm 1 relative to the ground") \
-X(z_diaph_1, 125, "z_diaph_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 1, z/z_u in [-1, 1] (state)") \
+X(z_diaph_1, 125, "z_diaph_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 1, z/z_u in [-1, 1] (state)") \
 X(der_z_diaph_1, 135, "der(z_diaph_1)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 125, "Rate of z_diaph_1") \
 X(work_storey_1, 126, "work_storey_1", Real, "output", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 1's spring force on its drift, integral of V_storey_1 d(drift_1) (state; per closed cycle: the energy dissipated by hysteresis)") \
 X(der_work_storey_1, 136, "der(work_storey_1)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 126, "Power V_storey_1 * der(drift_1)") \
@@ -81,12 +81,12 @@ X(F_above_2, 211, "F_above_2", Real, "input", "continuous", "", 0, "N/m", 0, 0, 
 X(u_floor_2, 220, "u_floor_2", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 2 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_2, 221, "v_floor_2", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 220, "Velocity of floor 2 relative to the ground (state, der(u_floor_2))") \
 X(der_v_floor_2, 231, "der(v_floor_2)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 221, "Acceleration of floor 2 relative to the ground") \
-X(z_storey_2, 222, "z_storey_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 2, z/z_u in [-1, 1] (state)") \
+X(z_storey_2, 222, "z_storey_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 2, z/z_u in [-1, 1] (state)") \
 X(der_z_storey_2, 232, "der(z_storey_2)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 222, "Rate of z_storey_2") \
 X(u_diaph_2, 223, "u_diaph_2", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 2 relative to the ground (state)") \
 X(v_diaph_2, 224, "v_diaph_2", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 223, "Velocity of diaphragm 2 relative to the ground (state, der(u_diaph_2))") \
 X(der_v_diaph_2, 234, "der(v_diaph_2)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 224, "Acceleration of diaphragm 2 relative to the ground") \
-X(z_diaph_2, 225, "z_diaph_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 2, z/z_u in [-1, 1] (state)") \
+X(z_diaph_2, 225, "z_diaph_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 2, z/z_u in [-1, 1] (state)") \
 X(der_z_diaph_2, 235, "der(z_diaph_2)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 225, "Rate of z_diaph_2") \
 X(work_storey_2, 226, "work_storey_2", Real, "output", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 2's spring force on its drift, integral of V_storey_2 d(drift_2) (state; per closed cycle: the energy dissipated by hysteresis)") \
 X(der_work_storey_2, 236, "der(work_storey_2)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 226, "Power V_storey_2 * der(drift_2)") \
@@ -113,12 +113,12 @@ X(F_above_3, 311, "F_above_3", Real, "input", "continuous", "", 0, "N/m", 0, 0, 
 X(u_floor_3, 320, "u_floor_3", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 3 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_3, 321, "v_floor_3", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 320, "Velocity of floor 3 relative to the ground (state, der(u_floor_3))") \
 X(der_v_floor_3, 331, "der(v_floor_3)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 321, "Acceleration of floor 3 relative to the ground") \
-X(z_storey_3, 322, "z_storey_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 3, z/z_u in [-1, 1] (state)") \
+X(z_storey_3, 322, "z_storey_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 3, z/z_u in [-1, 1] (state)") \
 X(der_z_storey_3, 332, "der(z_storey_3)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 322, "Rate of z_storey_3") \
 X(u_diaph_3, 323, "u_diaph_3", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 3 relative to the ground (state)") \
 X(v_diaph_3, 324, "v_diaph_3", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 323, "Velocity of diaphragm 3 relative to the ground (state, der(u_diaph_3))") \
 X(der_v_diaph_3, 334, "der(v_diaph_3)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 324, "Acceleration of diaphragm 3 relative to the ground") \
-X(z_diaph_3, 325, "z_diaph_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 3, z/z_u in [-1, 1] (state)") \
+X(z_diaph_3, 325, "z_diaph_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 3, z/z_u in [-1, 1] (state)") \
 X(der_z_diaph_3, 335, "der(z_diaph_3)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 325, "Rate of z_diaph_3") \
 X(work_storey_3, 326, "work_storey_3", Real, "output", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 3's spring force on its drift, integral of V_storey_3 d(drift_3) (state; per closed cycle: the energy dissipated by hysteresis)") \
 X(der_work_storey_3, 336, "der(work_storey_3)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 326, "Power V_storey_3 * der(drift_3)") \
@@ -145,12 +145,12 @@ X(F_above_4, 411, "F_above_4", Real, "input", "continuous", "", 0, "N/m", 0, 0, 
 X(u_floor_4, 420, "u_floor_4", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 4 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_4, 421, "v_floor_4", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 420, "Velocity of floor 4 relative to the ground (state, der(u_floor_4))") \
 X(der_v_floor_4, 431, "der(v_floor_4)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 421, "Acceleration of floor 4 relative to the ground") \
-X(z_storey_4, 422, "z_storey_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 4, z/z_u in [-1, 1] (state)") \
+X(z_storey_4, 422, "z_storey_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 4, z/z_u in [-1, 1] (state)") \
 X(der_z_storey_4, 432, "der(z_storey_4)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 422, "Rate of z_storey_4") \
 X(u_diaph_4, 423, "u_diaph_4", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 4 relative to the ground (state)") \
 X(v_diaph_4, 424, "v_diaph_4", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 423, "Velocity of diaphragm 4 relative to the ground (state, der(u_diaph_4))") \
 X(der_v_diaph_4, 434, "der(v_diaph_4)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 424, "Acceleration of diaphragm 4 relative to the ground") \
-X(z_diaph_4, 425, "z_diaph_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 4, z/z_u in [-1, 1] (state)") \
+X(z_diaph_4, 425, "z_diaph_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 4, z/z_u in [-1, 1] (state)") \
 X(der_z_diaph_4, 435, "der(z_diaph_4)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 425, "Rate of z_diaph_4") \
 X(work_storey_4, 426, "work_storey_4", Real, "output", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 4's spring force on its drift, integral of V_storey_4 d(drift_4) (state; per closed cycle: the energy dissipated by hysteresis)") \
 X(der_work_storey_4, 436, "der(work_storey_4)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 426, "Power V_storey_4 * der(drift_4)") \
@@ -177,12 +177,12 @@ X(F_above_5, 511, "F_above_5", Real, "input", "continuous", "", 0, "N/m", 0, 0, 
 X(u_floor_5, 520, "u_floor_5", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 5 (in-plane walls' level) relative to the ground (state)") \
 X(v_floor_5, 521, "v_floor_5", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 520, "Velocity of floor 5 relative to the ground (state, der(u_floor_5))") \
 X(der_v_floor_5, 531, "der(v_floor_5)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 521, "Acceleration of floor 5 relative to the ground") \
-X(z_storey_5, 522, "z_storey_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 5, z/z_u in [-1, 1] (state)") \
+X(z_storey_5, 522, "z_storey_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 5, z/z_u in [-1, 1] (state)") \
 X(der_z_storey_5, 532, "der(z_storey_5)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 522, "Rate of z_storey_5") \
 X(u_diaph_5, 523, "u_diaph_5", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 5 relative to the ground (state)") \
 X(v_diaph_5, 524, "v_diaph_5", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 523, "Velocity of diaphragm 5 relative to the ground (state, der(u_diaph_5))") \
 X(der_v_diaph_5, 534, "der(v_diaph_5)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 524, "Acceleration of diaphragm 5 relative to the ground") \
-X(z_diaph_5, 525, "z_diaph_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 5, z/z_u in [-1, 1] (state)") \
+X(z_diaph_5, 525, "z_diaph_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 5, z/z_u in [-1, 1] (state)") \
 X(der_z_diaph_5, 535, "der(z_diaph_5)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 525, "Rate of z_diaph_5") \
 X(work_storey_5, 526, "work_storey_5", Real, "output", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 5's spring force on its drift, integral of V_storey_5 d(drift_5) (state; per closed cycle: the energy dissipated by hysteresis)") \
 X(der_work_storey_5, 536, "der(work_storey_5)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 526, "Power V_storey_5 * der(drift_5)") \

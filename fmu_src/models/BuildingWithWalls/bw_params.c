@@ -168,8 +168,16 @@ int bw_set_integer_parameter(bw_data *S, unsigned vr, int value, char *msg, size
         snprintf(msg, n, "value reference %u is not a settable Integer", vr);
         return 1;
     }
+    if (vr == BW_VR_storeyLaw || vr == BW_VR_diaphragmLaw) {
+        if (!bd_law_allowed(value, vr == BW_VR_storeyLaw)) {
+            snprintf(msg, n, "%s = %d is not one of its laws (%s)", name_of(vr), value,
+                     vr == BW_VR_storeyLaw ? BD_STOREY_LAWS_TEXT : BD_DIAPHRAGM_LAWS_TEXT);
+            return 1;
+        }
+        *field = value;
+        return 0;
+    }
     if (vr == BW_VR_nStoreys) lo = 1, hi = RW_SCENE_MAX_STOREYS;
-    else if (vr == BW_VR_diaphragmLaw) hi = BD_BILINEAR;
     else if (BW_SLOT_OF(vr) == 8 && BW_STOREY_OF(vr)) lo = RW_RIGID, hi = RW_DOHERTY_HINGE;
     if (value < lo || value > hi) {
         snprintf(msg, n, "%s = %d is out of its range [%d, %d]", name_of(vr), value, lo, hi);

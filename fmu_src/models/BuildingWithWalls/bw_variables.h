@@ -28,8 +28,8 @@
 #define BW_VARIABLES(X) \
 X(nStoreys, 1, "nStoreys", Integer, "parameter", "fixed", "exact", 2, "", 0, 0, "Number of storeys N, 1..5 (the storeys above N are not there: their states at rest, their outputs 0)") \
 X(rigidInPlane, 2, "rigidInPlane", Integer, "parameter", "fixed", "exact", 1, "", 0, 0, "1: the in-plane walls are rigid, every floor moves with the ground (m_i, k_i, zetas_i unused); 0: floors of mass m_i on storey springs k_i") \
-X(storeyLaw, 3, "storeyLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Storey springs (in-plane walls, rigidInPlane = 0): 0 linear, 1 Bouc-Wen") \
-X(diaphragmLaw, 4, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Diaphragm springs: 0 linear, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic with kinematic hardening)") \
+X(storeyLaw, 3, "storeyLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Storey springs (in-plane walls, rigidInPlane = 0): 0 linear, 1 Bouc-Wen, 3 bilinear (elastoplastic, kinematic hardening)") \
+X(diaphragmLaw, 4, "diaphragmLaw", Integer, "parameter", "fixed", "exact", 0, "", 0, 0, "Diaphragm springs: 0 linear, 1 Bouc-Wen, 2 Bouc-Wen with Foliente's pinching (timber), 3 bilinear (elastoplastic, kinematic hardening)") \
 X(nBW, 5, "nBW", Real, "parameter", "fixed", "exact", 1, "1", 0, 0, "Bouc-Wen exponent n, in [1, 100]") \
 X(betaBW, 6, "betaBW", Real, "parameter", "fixed", "exact", 0.5, "1", 0, 0, "Bouc-Wen beta, in [0, 1] (gamma = 1 - beta)") \
 X(pinchSize, 7, "pinchSize", Real, "parameter", "fixed", "exact", 0.8, "1", 0, 0, "Pinching zeta1, in [0, 0.99] (diaphragmLaw 2)") \
@@ -62,15 +62,15 @@ X(hingeLaw_1, 108, "hingeLaw_1", Integer, "parameter", "fixed", "exact", 4, "", 
 X(psiWeightOnly_1, 109, "psiWeightOnly_1", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 1: 2 (weight of the walls above)/W_1, in [0, 20] (weight without mass: the walls above carry their own)") \
 X(eTop_1, 149, "eTop_1", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 1 (psi_1) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_1| <= b_1/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_1, 110, "md_1", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 1 per metre of wall, in (0, 1e9]") \
-X(kd_1, 111, "kd_1", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 1 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
+X(kd_1, 111, "kd_1", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 1 relative to its floor (initial, hysteretic laws), N/m per m, in [0, 1e15]") \
 X(zetad_1, 112, "zetad_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 1 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_1, 113, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (hysteretic laws), in (0, 1e15]") \
-X(alphad_1, 114, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1 (hysteretic laws), in [0, 1]") \
+X(Fyd_1, 113, "Fyd_1", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 1 (hysteretic laws: diaphragmLaw 1 to 3), in (0, 1e15]") \
+X(alphad_1, 114, "alphad_1", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 1 (hysteretic laws: diaphragmLaw 1 to 3), in [0, 1]") \
 X(m_1, 115, "m_1", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 1 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_1, 116, "k_1", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 1's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_1, 117, "zetas_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 1's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
-X(Fy_1, 118, "Fy_1", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 1 (storeyLaw 1), in (0, 1e15]") \
-X(alpha_1, 119, "alpha_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 1 (storeyLaw 1), in [0, 1]") \
+X(Fy_1, 118, "Fy_1", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 1 (storeyLaw 1, 3), in (0, 1e15]") \
+X(alpha_1, 119, "alpha_1", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 1 (storeyLaw 1, 3), in [0, 1]") \
 X(q1_1, 120, "q1_1", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the lower body of the wall of storey 1 (state)") \
 X(q2_1, 121, "q2_1", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the upper body of the wall of storey 1 (state)") \
 X(dq1_1, 122, "dq1_1", Real, "local", "continuous", "exact", 0, "rad/s", 0.1, 120, "Rate of q1_1 (state, der(q1_1))") \
@@ -80,12 +80,12 @@ X(der_dq2_1, 133, "der(dq2_1)", Real, "local", "continuous", "calculated", 0, "r
 X(u_floor_1, 124, "u_floor_1", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 1 relative to the ground (state; 0 with rigid in-plane walls)") \
 X(v_floor_1, 125, "v_floor_1", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 124, "Velocity of floor 1 (state, der(u_floor_1))") \
 X(der_v_floor_1, 134, "der(v_floor_1)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 125, "Acceleration of floor 1 relative to the ground") \
-X(z_storey_1, 126, "z_storey_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 1, in [-1, 1] (state)") \
+X(z_storey_1, 126, "z_storey_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 1, in [-1, 1] (state)") \
 X(der_z_storey_1, 135, "der(z_storey_1)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 126, "Rate of z_storey_1") \
 X(u_diaph_1, 127, "u_diaph_1", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 1 relative to the ground (state)") \
 X(v_diaph_1, 128, "v_diaph_1", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 127, "Velocity of diaphragm 1 (state, der(u_diaph_1))") \
 X(der_v_diaph_1, 136, "der(v_diaph_1)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 128, "Acceleration of diaphragm 1 relative to the ground") \
-X(z_diaph_1, 129, "z_diaph_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 1, in [-1, 1] (state)") \
+X(z_diaph_1, 129, "z_diaph_1", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 1, in [-1, 1] (state)") \
 X(der_z_diaph_1, 137, "der(z_diaph_1)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 129, "Rate of z_diaph_1") \
 X(work_storey_1, 130, "work_storey_1", Real, "local", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 1's spring force on its drift (state)") \
 X(der_work_storey_1, 138, "der(work_storey_1)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 130, "Power of storey 1's spring") \
@@ -111,15 +111,15 @@ X(hingeLaw_2, 208, "hingeLaw_2", Integer, "parameter", "fixed", "exact", 4, "", 
 X(psiWeightOnly_2, 209, "psiWeightOnly_2", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 2: 2 (weight of the walls above)/W_2, in [0, 20] (weight without mass: the walls above carry their own)") \
 X(eTop_2, 249, "eTop_2", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 2 (psi_2) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_2| <= b_2/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_2, 210, "md_2", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 2 per metre of wall, in (0, 1e9]") \
-X(kd_2, 211, "kd_2", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 2 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
+X(kd_2, 211, "kd_2", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 2 relative to its floor (initial, hysteretic laws), N/m per m, in [0, 1e15]") \
 X(zetad_2, 212, "zetad_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 2 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_2, 213, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (hysteretic laws), in (0, 1e15]") \
-X(alphad_2, 214, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2 (hysteretic laws), in [0, 1]") \
+X(Fyd_2, 213, "Fyd_2", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 2 (hysteretic laws: diaphragmLaw 1 to 3), in (0, 1e15]") \
+X(alphad_2, 214, "alphad_2", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 2 (hysteretic laws: diaphragmLaw 1 to 3), in [0, 1]") \
 X(m_2, 215, "m_2", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 2 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_2, 216, "k_2", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 2's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_2, 217, "zetas_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 2's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
-X(Fy_2, 218, "Fy_2", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 2 (storeyLaw 1), in (0, 1e15]") \
-X(alpha_2, 219, "alpha_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 2 (storeyLaw 1), in [0, 1]") \
+X(Fy_2, 218, "Fy_2", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 2 (storeyLaw 1, 3), in (0, 1e15]") \
+X(alpha_2, 219, "alpha_2", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 2 (storeyLaw 1, 3), in [0, 1]") \
 X(q1_2, 220, "q1_2", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the lower body of the wall of storey 2 (state)") \
 X(q2_2, 221, "q2_2", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the upper body of the wall of storey 2 (state)") \
 X(dq1_2, 222, "dq1_2", Real, "local", "continuous", "exact", 0, "rad/s", 0.1, 220, "Rate of q1_2 (state, der(q1_2))") \
@@ -129,12 +129,12 @@ X(der_dq2_2, 233, "der(dq2_2)", Real, "local", "continuous", "calculated", 0, "r
 X(u_floor_2, 224, "u_floor_2", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 2 relative to the ground (state; 0 with rigid in-plane walls)") \
 X(v_floor_2, 225, "v_floor_2", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 224, "Velocity of floor 2 (state, der(u_floor_2))") \
 X(der_v_floor_2, 234, "der(v_floor_2)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 225, "Acceleration of floor 2 relative to the ground") \
-X(z_storey_2, 226, "z_storey_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 2, in [-1, 1] (state)") \
+X(z_storey_2, 226, "z_storey_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 2, in [-1, 1] (state)") \
 X(der_z_storey_2, 235, "der(z_storey_2)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 226, "Rate of z_storey_2") \
 X(u_diaph_2, 227, "u_diaph_2", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 2 relative to the ground (state)") \
 X(v_diaph_2, 228, "v_diaph_2", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 227, "Velocity of diaphragm 2 (state, der(u_diaph_2))") \
 X(der_v_diaph_2, 236, "der(v_diaph_2)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 228, "Acceleration of diaphragm 2 relative to the ground") \
-X(z_diaph_2, 229, "z_diaph_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 2, in [-1, 1] (state)") \
+X(z_diaph_2, 229, "z_diaph_2", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 2, in [-1, 1] (state)") \
 X(der_z_diaph_2, 237, "der(z_diaph_2)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 229, "Rate of z_diaph_2") \
 X(work_storey_2, 230, "work_storey_2", Real, "local", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 2's spring force on its drift (state)") \
 X(der_work_storey_2, 238, "der(work_storey_2)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 230, "Power of storey 2's spring") \
@@ -160,15 +160,15 @@ X(hingeLaw_3, 308, "hingeLaw_3", Integer, "parameter", "fixed", "exact", 4, "", 
 X(psiWeightOnly_3, 309, "psiWeightOnly_3", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 3: 2 (weight of the walls above)/W_3, in [0, 20] (weight without mass: the walls above carry their own)") \
 X(eTop_3, 349, "eTop_3", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 3 (psi_3) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_3| <= b_3/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_3, 310, "md_3", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 3 per metre of wall, in (0, 1e9]") \
-X(kd_3, 311, "kd_3", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 3 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
+X(kd_3, 311, "kd_3", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 3 relative to its floor (initial, hysteretic laws), N/m per m, in [0, 1e15]") \
 X(zetad_3, 312, "zetad_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 3 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_3, 313, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (hysteretic laws), in (0, 1e15]") \
-X(alphad_3, 314, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3 (hysteretic laws), in [0, 1]") \
+X(Fyd_3, 313, "Fyd_3", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 3 (hysteretic laws: diaphragmLaw 1 to 3), in (0, 1e15]") \
+X(alphad_3, 314, "alphad_3", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 3 (hysteretic laws: diaphragmLaw 1 to 3), in [0, 1]") \
 X(m_3, 315, "m_3", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 3 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_3, 316, "k_3", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 3's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_3, 317, "zetas_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 3's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
-X(Fy_3, 318, "Fy_3", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 3 (storeyLaw 1), in (0, 1e15]") \
-X(alpha_3, 319, "alpha_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 3 (storeyLaw 1), in [0, 1]") \
+X(Fy_3, 318, "Fy_3", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 3 (storeyLaw 1, 3), in (0, 1e15]") \
+X(alpha_3, 319, "alpha_3", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 3 (storeyLaw 1, 3), in [0, 1]") \
 X(q1_3, 320, "q1_3", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the lower body of the wall of storey 3 (state)") \
 X(q2_3, 321, "q2_3", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the upper body of the wall of storey 3 (state)") \
 X(dq1_3, 322, "dq1_3", Real, "local", "continuous", "exact", 0, "rad/s", 0.1, 320, "Rate of q1_3 (state, der(q1_3))") \
@@ -178,12 +178,12 @@ X(der_dq2_3, 333, "der(dq2_3)", Real, "local", "continuous", "calculated", 0, "r
 X(u_floor_3, 324, "u_floor_3", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 3 relative to the ground (state; 0 with rigid in-plane walls)") \
 X(v_floor_3, 325, "v_floor_3", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 324, "Velocity of floor 3 (state, der(u_floor_3))") \
 X(der_v_floor_3, 334, "der(v_floor_3)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 325, "Acceleration of floor 3 relative to the ground") \
-X(z_storey_3, 326, "z_storey_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 3, in [-1, 1] (state)") \
+X(z_storey_3, 326, "z_storey_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 3, in [-1, 1] (state)") \
 X(der_z_storey_3, 335, "der(z_storey_3)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 326, "Rate of z_storey_3") \
 X(u_diaph_3, 327, "u_diaph_3", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 3 relative to the ground (state)") \
 X(v_diaph_3, 328, "v_diaph_3", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 327, "Velocity of diaphragm 3 (state, der(u_diaph_3))") \
 X(der_v_diaph_3, 336, "der(v_diaph_3)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 328, "Acceleration of diaphragm 3 relative to the ground") \
-X(z_diaph_3, 329, "z_diaph_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 3, in [-1, 1] (state)") \
+X(z_diaph_3, 329, "z_diaph_3", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 3, in [-1, 1] (state)") \
 X(der_z_diaph_3, 337, "der(z_diaph_3)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 329, "Rate of z_diaph_3") \
 X(work_storey_3, 330, "work_storey_3", Real, "local", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 3's spring force on its drift (state)") \
 X(der_work_storey_3, 338, "der(work_storey_3)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 330, "Power of storey 3's spring") \
@@ -209,15 +209,15 @@ X(hingeLaw_4, 408, "hingeLaw_4", Integer, "parameter", "fixed", "exact", 4, "", 
 X(psiWeightOnly_4, 409, "psiWeightOnly_4", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 4: 2 (weight of the walls above)/W_4, in [0, 20] (weight without mass: the walls above carry their own)") \
 X(eTop_4, 449, "eTop_4", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 4 (psi_4) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_4| <= b_4/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_4, 410, "md_4", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 4 per metre of wall, in (0, 1e9]") \
-X(kd_4, 411, "kd_4", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 4 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
+X(kd_4, 411, "kd_4", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 4 relative to its floor (initial, hysteretic laws), N/m per m, in [0, 1e15]") \
 X(zetad_4, 412, "zetad_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 4 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_4, 413, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (hysteretic laws), in (0, 1e15]") \
-X(alphad_4, 414, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4 (hysteretic laws), in [0, 1]") \
+X(Fyd_4, 413, "Fyd_4", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 4 (hysteretic laws: diaphragmLaw 1 to 3), in (0, 1e15]") \
+X(alphad_4, 414, "alphad_4", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 4 (hysteretic laws: diaphragmLaw 1 to 3), in [0, 1]") \
 X(m_4, 415, "m_4", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 4 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_4, 416, "k_4", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 4's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_4, 417, "zetas_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 4's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
-X(Fy_4, 418, "Fy_4", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 4 (storeyLaw 1), in (0, 1e15]") \
-X(alpha_4, 419, "alpha_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 4 (storeyLaw 1), in [0, 1]") \
+X(Fy_4, 418, "Fy_4", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 4 (storeyLaw 1, 3), in (0, 1e15]") \
+X(alpha_4, 419, "alpha_4", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 4 (storeyLaw 1, 3), in [0, 1]") \
 X(q1_4, 420, "q1_4", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the lower body of the wall of storey 4 (state)") \
 X(q2_4, 421, "q2_4", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the upper body of the wall of storey 4 (state)") \
 X(dq1_4, 422, "dq1_4", Real, "local", "continuous", "exact", 0, "rad/s", 0.1, 420, "Rate of q1_4 (state, der(q1_4))") \
@@ -227,12 +227,12 @@ X(der_dq2_4, 433, "der(dq2_4)", Real, "local", "continuous", "calculated", 0, "r
 X(u_floor_4, 424, "u_floor_4", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 4 relative to the ground (state; 0 with rigid in-plane walls)") \
 X(v_floor_4, 425, "v_floor_4", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 424, "Velocity of floor 4 (state, der(u_floor_4))") \
 X(der_v_floor_4, 434, "der(v_floor_4)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 425, "Acceleration of floor 4 relative to the ground") \
-X(z_storey_4, 426, "z_storey_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 4, in [-1, 1] (state)") \
+X(z_storey_4, 426, "z_storey_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 4, in [-1, 1] (state)") \
 X(der_z_storey_4, 435, "der(z_storey_4)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 426, "Rate of z_storey_4") \
 X(u_diaph_4, 427, "u_diaph_4", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 4 relative to the ground (state)") \
 X(v_diaph_4, 428, "v_diaph_4", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 427, "Velocity of diaphragm 4 (state, der(u_diaph_4))") \
 X(der_v_diaph_4, 436, "der(v_diaph_4)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 428, "Acceleration of diaphragm 4 relative to the ground") \
-X(z_diaph_4, 429, "z_diaph_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 4, in [-1, 1] (state)") \
+X(z_diaph_4, 429, "z_diaph_4", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 4, in [-1, 1] (state)") \
 X(der_z_diaph_4, 437, "der(z_diaph_4)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 429, "Rate of z_diaph_4") \
 X(work_storey_4, 430, "work_storey_4", Real, "local", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 4's spring force on its drift (state)") \
 X(der_work_storey_4, 438, "der(work_storey_4)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 430, "Power of storey 4's spring") \
@@ -258,15 +258,15 @@ X(hingeLaw_5, 508, "hingeLaw_5", Integer, "parameter", "fixed", "exact", 4, "", 
 X(psiWeightOnly_5, 509, "psiWeightOnly_5", Real, "parameter", "fixed", "exact", 0, "1", 0, 0, "Weight-only overburden ratio of the wall of storey 5: 2 (weight of the walls above)/W_5, in [0, 20] (weight without mass: the walls above carry their own)") \
 X(eTop_5, 549, "eTop_5", Real, "parameter", "fixed", "exact", 0, "m", 0, 0, "Eccentricity of the overburden of the wall of storey 5 (psi_5) from its centreline, positive toward +x, the inner face (joists bearing on it); |eTop_5| <= b_5/2 (RockingWall's eTop; the walls above bear on the centreline)") \
 X(md_5, 510, "md_5", Real, "parameter", "fixed", "exact", 600, "kg/m", 0, 0, "Mass of diaphragm 5 per metre of wall, in (0, 1e9]") \
-X(kd_5, 511, "kd_5", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 5 relative to its floor (initial, Bouc-Wen), N/m per m, in [0, 1e15]") \
+X(kd_5, 511, "kd_5", Real, "parameter", "fixed", "exact", 60000.0, "N/m2", 0, 0, "Stiffness of diaphragm 5 relative to its floor (initial, hysteretic laws), N/m per m, in [0, 1e15]") \
 X(zetad_5, 512, "zetad_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of diaphragm 5 on its own mass and spring, a dashpot 2 zetad sqrt(kd md), in [0, 2]") \
-X(Fyd_5, 513, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (hysteretic laws), in (0, 1e15]") \
-X(alphad_5, 514, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5 (hysteretic laws), in [0, 1]") \
+X(Fyd_5, 513, "Fyd_5", Real, "parameter", "fixed", "exact", 10000.0, "N/m", 0, 0, "Yield force of diaphragm 5 (hysteretic laws: diaphragmLaw 1 to 3), in (0, 1e15]") \
+X(alphad_5, 514, "alphad_5", Real, "parameter", "fixed", "exact", 0.1, "1", 0, 0, "Post-yield stiffness ratio of diaphragm 5 (hysteretic laws: diaphragmLaw 1 to 3), in [0, 1]") \
 X(m_5, 515, "m_5", Real, "parameter", "fixed", "exact", 4000, "kg/m", 0, 0, "Mass of floor 5 at the in-plane walls (rigidInPlane = 0), in (0, 1e9]") \
 X(k_5, 516, "k_5", Real, "parameter", "fixed", "exact", 20000000.0, "N/m2", 0, 0, "Stiffness of storey 5's in-plane walls (rigidInPlane = 0), N/m per m, in (0, 1e15]") \
 X(zetas_5, 517, "zetas_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Damping ratio of storey 5's in-plane walls on floor mass and spring, a dashpot 2 zetas sqrt(k m), in [0, 2]") \
-X(Fy_5, 518, "Fy_5", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 5 (storeyLaw 1), in (0, 1e15]") \
-X(alpha_5, 519, "alpha_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 5 (storeyLaw 1), in [0, 1]") \
+X(Fy_5, 518, "Fy_5", Real, "parameter", "fixed", "exact", 30000.0, "N/m", 0, 0, "Yield force of storey 5 (storeyLaw 1, 3), in (0, 1e15]") \
+X(alpha_5, 519, "alpha_5", Real, "parameter", "fixed", "exact", 0.05, "1", 0, 0, "Post-yield stiffness ratio of storey 5 (storeyLaw 1, 3), in [0, 1]") \
 X(q1_5, 520, "q1_5", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the lower body of the wall of storey 5 (state)") \
 X(q2_5, 521, "q2_5", Real, "local", "continuous", "exact", 0, "rad", 0.01, 0, "Rotation of the upper body of the wall of storey 5 (state)") \
 X(dq1_5, 522, "dq1_5", Real, "local", "continuous", "exact", 0, "rad/s", 0.1, 520, "Rate of q1_5 (state, der(q1_5))") \
@@ -276,12 +276,12 @@ X(der_dq2_5, 533, "der(dq2_5)", Real, "local", "continuous", "calculated", 0, "r
 X(u_floor_5, 524, "u_floor_5", Real, "local", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of floor 5 relative to the ground (state; 0 with rigid in-plane walls)") \
 X(v_floor_5, 525, "v_floor_5", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 524, "Velocity of floor 5 (state, der(u_floor_5))") \
 X(der_v_floor_5, 534, "der(v_floor_5)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 525, "Acceleration of floor 5 relative to the ground") \
-X(z_storey_5, 526, "z_storey_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of storey 5, in [-1, 1] (state)") \
+X(z_storey_5, 526, "z_storey_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of storey 5, in [-1, 1] (state)") \
 X(der_z_storey_5, 535, "der(z_storey_5)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 526, "Rate of z_storey_5") \
 X(u_diaph_5, 527, "u_diaph_5", Real, "output", "continuous", "exact", 0, "m", 0.01, 0, "Displacement of diaphragm 5 relative to the ground (state)") \
 X(v_diaph_5, 528, "v_diaph_5", Real, "local", "continuous", "exact", 0, "m/s", 0.1, 527, "Velocity of diaphragm 5 (state, der(u_diaph_5))") \
 X(der_v_diaph_5, 536, "der(v_diaph_5)", Real, "local", "continuous", "calculated", 0, "m/s2", 0, 528, "Acceleration of diaphragm 5 relative to the ground") \
-X(z_diaph_5, 529, "z_diaph_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Bouc-Wen variable of diaphragm 5, in [-1, 1] (state)") \
+X(z_diaph_5, 529, "z_diaph_5", Real, "local", "continuous", "exact", 0, "1", 1, 0, "Hysteretic variable (Bouc-Wen, bilinear) of diaphragm 5, in [-1, 1] (state)") \
 X(der_z_diaph_5, 537, "der(z_diaph_5)", Real, "local", "continuous", "calculated", 0, "1/s", 0, 529, "Rate of z_diaph_5") \
 X(work_storey_5, 530, "work_storey_5", Real, "local", "continuous", "exact", 0, "J/m", 0, 0, "Work of storey 5's spring force on its drift (state)") \
 X(der_work_storey_5, 538, "der(work_storey_5)", Real, "local", "continuous", "calculated", 0, "W/m", 0, 530, "Power of storey 5's spring") \

@@ -50,9 +50,10 @@ class WallLayer:
 @dataclasses.dataclass(frozen=True)
 class Diaphragm:
     """The diaphragm on top of a storey, at the wall, per metre of wall: stiffness [N/m per m],
-    mass [kg/m] and damping ratio; law 'linear', 'boucWen', 'boucWenPinched' or 'bilinear' (the
-    hysteretic ones with a yield force [N/m] and a post-yield stiffness ratio); pinching: Foliente's
-    (pinch_size, pinch_width, pinch_centre) of a boucWenPinched law, default PINCHING_TIMBER."""
+    mass [kg/m] and damping ratio; law 'linear', 'boucWen', 'boucWenPinched' or 'bilinear'
+    (elastoplastic with kinematic hardening; the hysteretic three with a yield force [N/m] and a
+    post-yield stiffness ratio); pinching: Foliente's (pinch_size, pinch_width, pinch_centre) of a
+    boucWenPinched law, default PINCHING_TIMBER."""
     stiffness: float
     mass: float
     damping: float = DAMPING_DEFAULT

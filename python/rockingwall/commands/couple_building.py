@@ -37,8 +37,8 @@ def parse_args(argv):
     ap.add_argument("--wall", type=int, default=1, choices=[1, 2, 3], help="the paper's wall")
     ap.add_argument("--Kd", type=float, default=1e6, help="wall-to-diaphragm connection, N/m per m")
     ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(HINGE_LAWS))
-    ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2],
-                    help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber)")
+    ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2, 3],
+                    help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber), 3 bilinear")
     ap.add_argument("--record", default="elcentro", help="'elcentro', 'gaussian[:D,T]' or an .AT2/.csv file")
     ap.add_argument("--building", metavar="FILE.toml",
                     help="the building file (docs/your-building.md): the Building FMU's parameters from its storeys, "
