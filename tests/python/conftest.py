@@ -54,6 +54,11 @@ def rockingwall_fmu():
 
 
 @pytest.fixture(scope="session")
+def building_fmu():
+    return _artefact("Building.fmu")
+
+
+@pytest.fixture(scope="session")
 def ball_fmu():
     """The bouncing ball with analytic bounce times (tests/bouncingball), for fmi2sim's tests."""
     return _artefact("BouncingBall.fmu")

@@ -71,14 +71,6 @@ def frequency_from_crossings(t, y):
     return 2 * np.pi * (len(tc) - 1) / (tc[-1] - tc[0])
 
 
-@pytest.fixture(scope="module")
-def building_fmu(build_dir):
-    path = build_dir / "Building.fmu"
-    if not path.exists():
-        pytest.fail(f"{path} is missing: build it first")
-    return path
-
-
 @pytest.mark.parametrize("mode", range(2 * N))
 def test_undamped_free_vibration_is_the_modal_solution(building_fmu, mode):
     M, K = matrices()

@@ -50,14 +50,6 @@ SPRINGS = {
 }
 
 
-@pytest.fixture(scope="module")
-def building_fmu(build_dir):
-    path = build_dir / "Building.fmu"
-    if not path.exists():
-        pytest.fail(f"{path} is missing: build it first")
-    return path
-
-
 @pytest.mark.parametrize("spring", sorted(SPRINGS))
 def test_the_pushed_spring_draws_the_bilinear_loop(building_fmu, spring):
     """The force the FMU gives is alpha k d + (1 - alpha) Fy z with z the play operator's of its
