@@ -14,20 +14,23 @@ STOREY_COLUMN = "storey"
 
 
 def storey_walls(building):
-    """A Wall per storey (its parameters as the scene runs it, tied to its diaphragm)."""
-    return [Wall.make(warn=False, **building.wall_parameters(i)) for i in range(len(building.storeys))]
+    """A Wall per storey (its parameters as the scene runs it, tied to its diaphragm; None for a
+    storey without one)."""
+    return [Wall.make(warn=False, **p) if (p := building.wall_parameters(i)) else None
+            for i in range(len(building.storeys))]
 
 
 def storey_states(building, limit_texts):
-    """The limit states of every storey's wall (thresholds in Delta_u or b are each wall's own)."""
-    return [limits.parse_all(limit_texts, wall) for wall in storey_walls(building)]
+    """The limit states of every storey's wall (thresholds in Delta_u or b are each wall's own;
+    None for a storey without one)."""
+    return [limits.parse_all(limit_texts, wall) if wall else None for wall in storey_walls(building)]
 
 
 def run_cases(building, lvs, states, ensemble=None):
     """One row per record at an intensity level (lvs: assessment.levels()) and storey, and the
     ensemble outcomes of each row."""
     walls = storey_walls(building)
-    tie_forces = any(limits.ask_tie_force(st) for st in states)  # one more run each, where asked for
+    tie_forces = any(limits.ask_tie_force(st) for st in states if st)  # one more run each, where asked for
 
     def one(lv):
         result, _ = monolithic.simulate_building(building, lv.record, filter_floor=False, tie_forces=tie_forces)
@@ -35,6 +38,8 @@ def run_cases(building, lvs, states, ensemble=None):
                    if ensemble is not None else [None] * len(walls))
         rows = []
         for s, wall, st, m in zip(result.storeys, walls, states, members):
+            if wall is None:  # a storey without a wall has no limit state to reach
+                continue
             peaks = dict(peak_s1=s.peak_s1_m, peak_s2=s.peak_s2_m, peak_F_top=s.tie_force_or_nan, collapsed=s.collapsed)
             summary = ens.summarize(m, st, robustness.nominal_outcome(st, peaks)) if m is not None else None
             row = case_row(lv, {STOREY_COLUMN: s.storey}, "building", peaks, s.t_collapse_s or np.nan, s.impacts,

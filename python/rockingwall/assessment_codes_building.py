@@ -41,7 +41,8 @@ def wall_places(building, building_height=None):
 
 def checks_by_storey(building, codes, values, pgas=(), given=()):
     """[{hazard key: CodeChecks}] per storey (assessment_codes.checks_by_hazard on each storey's
-    wall at its place); values: assessment_codes.option_values; given: the options the user gave."""
+    wall at its place; None for a storey without a wall); values: assessment_codes.option_values;
+    given: the options the user gave."""
     placed = [flag for flag in PLACE_OPTIONS if flag in given]
     if placed:
         raise ValueError(f"{placed[0]}: with --building each storey's wall takes its own place from the "
@@ -49,14 +50,14 @@ def checks_by_storey(building, codes, values, pgas=(), given=()):
     out = []
     for wall, (h_i, h_n, storey) in zip(storey_walls(building), wall_places(building, values["building_height"])):
         at = dict(values, attachment_height=h_i, building_height=h_n, asce_storey=storey)
-        out.append(assessment_codes.checks_by_hazard(wall, codes, at, pgas, given))
+        out.append(assessment_codes.checks_by_hazard(wall, codes, at, pgas, given) if wall else None)
     return out
 
 
 def add_to_cases(cases, per_storey):
     """cases (a row per record, level and storey) with each storey's code columns and flags."""
     parts = [assessment_codes.add_to_cases(cases[cases[STOREY_COLUMN] == i], by_pga)
-             for i, by_pga in enumerate(per_storey, 1)]
+             for i, by_pga in enumerate(per_storey, 1) if by_pga is not None]
     return pd.concat(parts).loc[cases.index]
 
 
@@ -64,6 +65,8 @@ def head_lines(per_storey):
     """The report's lines on the codes, storey by storey."""
     lines = []
     for i, by_pga in enumerate(per_storey, 1):
+        if by_pga is None:
+            continue
         lines.append(f"codes on storey {i}'s wall:")
         for key, checks in by_pga.items():
             if key is not None:
@@ -77,7 +80,7 @@ def head_lines(per_storey):
 def to_json(per_storey):
     """The checks as plain data: one entry per storey and hazard, with its storey (1 = ground)."""
     return [dict(storey=i, **assessment_codes.checks_json(checks))
-            for i, by_pga in enumerate(per_storey, 1) for checks in by_pga.values()]
+            for i, by_pga in enumerate(per_storey, 1) if by_pga is not None for checks in by_pga.values()]
 
 
 def unconservative(per_storey, results, pgas):
@@ -87,6 +90,8 @@ def unconservative(per_storey, results, pgas):
     out = []
     for result, pga in zip(results, pgas):
         for s, by_pga in zip(result.storeys, per_storey):
+            if by_pga is None:
+                continue
             flags = assessment_codes.unconservative(assessment_codes.checks_at(by_pga, pga),
                                                     math.nan if s.collapsed else s.peak_s1_m, s.collapsed)
             codes = [assessment_codes.LABELS[c] for c, flagged in flags.items() if flagged]

@@ -188,8 +188,9 @@ def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_
 def building_members(building, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a building (scene c): [Members per storey]. Every storey's wall (psi via
     its overburden, W, b, e_r), diaphragm (stiffness, mass, damping; a hysteretic one's yield force)
-    and tie perturbed, each storey by its own draws; the in-plane walls as given. with_tie_force: each standing wall's tie force
-    too (one more run per member), else NaN."""
+    and tie perturbed, each storey by its own draws; the in-plane walls as given. with_tie_force: each
+    standing wall's tie force too (one more run per member), else NaN. A storey without a wall has
+    its diaphragm perturbed, and its Members hold NaN."""
     n = len(building.storeys)
     factors = ensemble.factors(n)
     runs, walls_per_storey = [], [dict() for _ in range(n)]
@@ -197,11 +198,7 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
         storeys = []
         for i, s in enumerate(building.storeys):
             f = {name: v[k, i] for name, v in factors.items()}
-            b = s.wall.b * f["b"]  # the overburden bears at the same fraction of it (on the face stays on it)
-            wall = dataclasses.replace(s.wall, b=b, W=s.wall.W * f["W"],
-                                       e_top=math.copysign(min(abs(s.wall.e_top) * f["b"], b / 2), s.wall.e_top),
-                                       overburden=s.wall.overburden * f["psi"],
-                                       e_r=float(np.clip(s.wall.e_r + f["er"], 0.0, 1.0)))
+            wall = _member_wall(s.wall, f) if s.wall else None
             d = dataclasses.replace(s.diaphragm, stiffness=s.diaphragm.stiffness * f["Kd"],
                                     mass=s.diaphragm.mass * f["diaphragm_mass"],
                                     damping=min(2.0, s.diaphragm.damping * f["diaphragm_damping"]))
@@ -211,11 +208,19 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
         member = dataclasses.replace(building, storeys=tuple(storeys))
         params = [member.wall_parameters(i) for i in range(n)]
         for i, p in enumerate(params):
-            walls_per_storey[i].setdefault("b", []).append(p["b"])
-            walls_per_storey[i].setdefault("delta_u", []).append(_delta_u(p))
+            walls_per_storey[i].setdefault("b", []).append(p["b"] if p else math.nan)
+            walls_per_storey[i].setdefault("delta_u", []).append(_delta_u(p) if p else math.nan)
         runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
                                with_tie_force))
     return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
+
+
+def _member_wall(wall, f):
+    """A member's wall: the building file's wall layer with the member's factors f."""
+    b = wall.b * f["b"]  # the overburden bears at the same fraction of it (on the face stays on it)
+    return dataclasses.replace(wall, b=b, W=wall.W * f["W"],
+                               e_top=math.copysign(min(abs(wall.e_top) * f["b"], b / 2), wall.e_top),
+                               overburden=wall.overburden * f["psi"], e_r=float(np.clip(wall.e_r + f["er"], 0.0, 1.0)))
 
 
 def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):

@@ -14,6 +14,7 @@ from ..wall import PlausibilityWarning
 from . import file_checks
 
 BUILDING_KEYS = {"name", "tie"}
+NO_WALL = "none"  # wall = "none": a storey without a face-loaded wall
 STOREY_KEYS = {"height", "wall", "diaphragm", "tie", "in_plane"}
 WALL_KEYS = {"b", "W", "unit_weight", "overburden", "e_top", "hinge_law", "e_r"}
 PINCHING_KEYS = ("pinch_size", "pinch_width", "pinch_centre")
@@ -166,16 +167,29 @@ def _storey(table, tie, where, line, k):
         raise where.error(line, f"{what}: expected a [[storey]] table")
     _check_keys(table, STOREY_KEYS, what, where, line)
     height = _quantity(table, "height", "m", where, line, what)
-    for key in ("wall", "diaphragm"):
-        if key not in table:
-            raise where.error(line, f"{what}.{key} is missing")
+    if "wall" not in table:
+        raise where.error(line, f'{what}.wall is missing: the storey\'s face-loaded wall, or wall = "{NO_WALL}" for a '
+                                "storey without one (an open front)")
+    if "diaphragm" not in table:
+        raise where.error(line, f"{what}.diaphragm is missing")
+    wall = _storey_wall(table, height, where, line, what)
+    in_plane = _in_plane(table["in_plane"], where, line, f"{what}.in_plane") if "in_plane" in table else None
+    return Storey(height=height, wall=wall, diaphragm=_diaphragm(table["diaphragm"], where, line, f"{what}.diaphragm"),
+                  tie=_quantity(table, "tie", "N/m2", where, line, what, tie), in_plane=in_plane)
+
+
+def _storey_wall(table, height, where, line, what):
+    """The storey's face-loaded wall, or None for wall = "none": an open front (a shopfront on a
+    beam or a frame), whose diaphragm is still there and which no wall above stands on."""
+    if table["wall"] == NO_WALL:
+        if "tie" in table:
+            raise where.error(line, f"{what}: a storey without a wall has no tie to its diaphragm", ["tie"])
+        return None
     wall = _wall(table["wall"], height, where, line, f"{what}.wall")
     if not wall.b < height:
         raise where.error(line, f"{what}: the wall's thickness b = {wall.b:g} m must be less than its height {height:g} m",
                           ["wall"])
-    in_plane = _in_plane(table["in_plane"], where, line, f"{what}.in_plane") if "in_plane" in table else None
-    return Storey(height=height, wall=wall, diaphragm=_diaphragm(table["diaphragm"], where, line, f"{what}.diaphragm"),
-                  tie=_quantity(table, "tie", "N/m2", where, line, what, tie), in_plane=in_plane)
+    return wall
 
 
 def parse(text, path="<building>"):

@@ -42,11 +42,11 @@ def building_start_values(building):
 
 
 def scene_of(building, building_fmu=None, wall_fmu=None):
-    """The co-simulated Scene of a description.Building: a RockingWall per storey, tied to its
-    diaphragm by the storey's tie (its K_d)."""
+    """The co-simulated Scene of a description.Building: a RockingWall per storey with a wall, tied
+    to its diaphragm by the storey's tie (its K_d)."""
     real, integer = building_start_values(building)
     walls = []
-    for i in range(len(building.storeys)):
+    for i in building.walled():
         p = building.wall_parameters(i)
         ints = {"support": int(p.pop("support")), "hingeLaw": int(p.pop("hingeLaw"))}
         walls.append(WallSpec(i + 1, p, ints))

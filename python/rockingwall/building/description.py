@@ -104,6 +104,9 @@ class InPlaneWalls:
 
 @dataclasses.dataclass(frozen=True)
 class Storey:
+    """A storey: its clear height [m], its face-loaded wall (None: a storey without one, an open
+    front: the walls above it bear on its beam or frame, not on a wall), the diaphragm on top of it,
+    the tie between them [N/m per m] and its in-plane walls."""
     height: float
     wall: WallLayer
     diaphragm: Diaphragm
@@ -120,6 +123,8 @@ class Building:
     def __post_init__(self):
         if not 1 <= len(self.storeys) <= MAX_STOREYS:
             raise ValueError(f"a building has 1 to {MAX_STOREYS} storeys, not {len(self.storeys)}")
+        if not self.walled():
+            raise ValueError("no storey has a face-loaded wall: there is no wall to assess")
         rigid = [s.in_plane is None for s in self.storeys]
         if any(rigid) and not all(rigid):
             raise ValueError("in-plane walls: give them for every storey or for none (none: rigid)")
@@ -141,20 +146,40 @@ class Building:
     def rigid_in_plane(self):
         return self.storeys[0].in_plane is None
 
+    def walled(self):
+        """The storeys (0-based) that have a face-loaded wall."""
+        return [i for i, s in enumerate(self.storeys) if s.wall is not None]
+
     def weight_above(self, i):
         """The weight [N/m] the walls above storey i (0-based) put on its wall's top: their own
-        weights and the overburdens they carry."""
-        return sum(s.wall.W + s.wall.overburden for s in self.storeys[i + 1:])
+        weights and the overburdens they carry, up to a storey without a wall (the walls above an
+        open front bear on its beam or frame)."""
+        weight = 0.0
+        for s in self.storeys[i + 1:]:
+            if s.wall is None:
+                break
+            weight += s.wall.W + s.wall.overburden
+        return weight
 
     def wall_parameters(self, i):
-        """The wall of storey i as the model's parameters (SI): tied to its diaphragm (flexibleTop,
-        Kd = the tie), psi from the overburden it carries (weight and mass at its top, at eTop) and
-        psiWeightOnly from the weight of the walls above (weight_above: their mass is in their own
-        walls, so it is not counted twice)."""
+        """The wall of storey i as the model's parameters (SI), or None for a storey without one:
+        tied to its diaphragm (flexibleTop, Kd = the tie), psi from the overburden it carries (weight
+        and mass at its top, at eTop) and psiWeightOnly from the weight of the walls above
+        (weight_above: their mass is in their own walls, so it is not counted twice)."""
         s = self.storeys[i]
+        if s.wall is None:
+            return None
         return dict(h=s.height, b=s.wall.b, W=s.wall.W, psi=2.0 * s.wall.overburden / s.wall.W,
                     psiWeightOnly=2.0 * self.weight_above(i) / s.wall.W, eTop=s.wall.e_top, Kd=s.tie,
                     er=s.wall.e_r, support=3, hingeLaw=hinge_law_code(s.wall.hinge_law))
+
+    def _wall_text(self, i):
+        """Storey i's wall with units, and the weight of the walls above it."""
+        w, above = self.storeys[i].wall, self.weight_above(i)
+        return (f"wall b = {w.b * 1e3:g} mm, W = {w.W / 1e3:.4g} kN/m, overburden {w.overburden / 1e3:.4g} kN/m"
+                + (f" at {w.e_top * 1e3:g} mm from the centreline (+: toward the inner face)" if w.e_top else "")
+                + (f" + walls above {above / 1e3:.4g} kN/m (weight only)" if above else "")
+                + f", {w.hinge_law}, e_r = {w.e_r:g}")
 
     def describe(self):
         """The building with units, storey by storey: what the report echoes."""
@@ -163,16 +188,11 @@ class Building:
                                        else "flexible")]
         for i, s in enumerate(self.storeys, 1):
             w, d = s.wall, s.diaphragm
-            above = self.weight_above(i - 1)
-            lines.append(f"storey {i}: h = {s.height:g} m; wall b = {w.b * 1e3:g} mm, W = {w.W / 1e3:.4g} kN/m, "
-                         f"overburden {w.overburden / 1e3:.4g} kN/m"
-                         + (f" at {w.e_top * 1e3:g} mm from the centreline (+: toward the inner face)"
-                            if w.e_top else "")
-                         + (f" + walls above {above / 1e3:.4g} kN/m (weight only)" if above else "")
-                         + f", {w.hinge_law}, e_r = {w.e_r:g}")
+            lines.append(f"storey {i}: h = {s.height:g} m; " + (self._wall_text(i - 1) if w else
+                         "no face-loaded wall (an open front: the walls above bear on its beam or frame)"))
             lines.append(f"  diaphragm: {d.stiffness / 1e3:.4g} kN/m per m, {d.mass:.4g} kg/m, "
-                         f"{100 * d.damping:.3g} % damping ({d.law}{d.yielding()}; own period {d.period:.3g} s); "
-                         f"tie {s.tie:.3g} N/m per m")
+                         f"{100 * d.damping:.3g} % damping ({d.law}{d.yielding()}; own period {d.period:.3g} s)"
+                         + (f"; tie {s.tie:.3g} N/m per m" if w else ""))
             if s.in_plane is not None:
                 p = s.in_plane
                 lines.append(f"  in-plane walls: {p.stiffness / 1e3:.4g} kN/m per m, floor {p.mass:.4g} kg/m, "

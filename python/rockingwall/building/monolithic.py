@@ -41,6 +41,7 @@ class StoreyResult:
     base_peak_acc_raw_m_s2: float = None
     tie_force_N_per_m: float = None      # the tie's force on the diaphragm filtered at 25 Hz; None: not computed or collapsed
     tie_force_raw_N_per_m: float = None  # the same unfiltered (it grows with the tie's stiffness)
+    wall: bool = True                    # False: a storey without a face-loaded wall (its peaks NaN, its diaphragm's real)
 
     @property
     def tie_force_or_nan(self):
@@ -57,8 +58,10 @@ class StoreyResult:
         d = dataclasses.asdict(self)
         d["s1_over_Delta_u"] = self.s1_over_delta_u
         d["near_collapse"] = limits.near_collapse(self.s1_over_delta_u, self.collapsed)
-        if self.collapsed:
+        if self.collapsed or not self.wall:
             d.update(peak_s1_m=None, peak_s2_m=None, s1_over_Delta_u=None)
+        if not self.wall:
+            d.update(delta_u_m=None, impacts=None, near_collapse=False)
         return d
 
 
@@ -156,17 +159,18 @@ def storey_results(r, wall_params_list, floor=None, ties=None):
     filtered histories (floor_acc.Sampled; None: not computed)."""
     storeys = []
     for i, params in enumerate(wall_params_list):
-        collapsed = bool(r.collapsed[i])
-        tie, tie_raw = (None, None) if ties is None or collapsed else (float(ties.filtered_peak[i]),
-                                                                          float(ties.raw_peak[i]))
-        du = engine.delta_u(**params) if params else math.nan
+        collapsed, wall = bool(r.collapsed[i]), params is not None
+        tie, tie_raw = (None, None) if ties is None or collapsed or not wall else (float(ties.filtered_peak[i]),
+                                                                                       float(ties.raw_peak[i]))
         storeys.append(StoreyResult(
-            storey=i + 1, peak_s1_m=float(r.peak_s1[i]), peak_s2_m=float(r.peak_s2[i]), delta_u_m=du,
+            storey=i + 1, peak_s1_m=float(r.peak_s1[i]) if wall else math.nan,
+            peak_s2_m=float(r.peak_s2[i]) if wall else math.nan,
+            delta_u_m=engine.delta_u(**params) if wall else math.nan,
             collapsed=collapsed, t_collapse_s=float(r.t_collapse[i]) if collapsed else None,
             diaphragm_peak_m=float(r.peak_diaphragm[i]),
             base_peak_acc_m_s2=None if floor is None else float(floor.filtered_peak[i]),
             base_peak_acc_raw_m_s2=float(r.peak_base_acc[i]), impacts=int(r.impacts[i]),
-            tie_force_N_per_m=tie, tie_force_raw_N_per_m=tie_raw))
+            tie_force_N_per_m=tie, tie_force_raw_N_per_m=tie_raw, wall=wall))
     return tuple(storeys)
 
 

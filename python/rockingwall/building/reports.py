@@ -10,6 +10,8 @@ from .monolithic import SENSITIVITY_PERTURBATION, SENSITIVITY_SHARE
 
 
 def _collapse(s):
+    if not s.wall:
+        return "no wall"
     return f"collapsed at {s.t_collapse_s:.2f} s" if s.collapsed else "standing"
 
 
@@ -92,12 +94,14 @@ def table(building, results):
              f"{'diaphragm [mm]':>16}{'floor acc [g]':>15}{'tie [kN/m]':>12}  collapse"]
     for r in results:
         for s in r.storeys:
-            s1 = "-" if s.collapsed else f"{s.peak_s1_m * 1e3:.1f}"
-            s2 = "-" if s.collapsed else f"{s.peak_s2_m * 1e3:.1f}"
-            ratio = "-" if s.collapsed else f"{s.s1_over_delta_u:.2f}"
+            shown = s.wall and not s.collapsed
+            s1 = f"{s.peak_s1_m * 1e3:.1f}" if shown else "-"
+            s2 = f"{s.peak_s2_m * 1e3:.1f}" if shown else "-"
+            ratio = f"{s.s1_over_delta_u:.2f}" if shown else "-"
             lines.append(f"{r.record:<{width}}{s.storey:>7}{s1:>14}{s2:>14}{ratio:>12}"
                          f"{s.diaphragm_peak_m * 1e3:>16.1f}{_floor(s):>15}{_tie(s):>12}  {_collapse(s)}")
-    lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-); "
+    lines.append("peaks relative to each wall's own base; a collapsed wall's peaks are not displacements (-), and a "
+                 "storey without a wall has none; "
                  f"floor acc: the floor the wall stands on, absolute, and tie: the tie's force on the diaphragm "
                  f"(none for a collapsed wall), both low-pass filtered at {CUTOFF_HZ:g} Hz (the raw peaks, which grow "
                  "with the tie's stiffness, are in --json)")
@@ -106,7 +110,7 @@ def table(building, results):
     if any(r.tie_resolved is False for r in results):
         lines.append(f"warning: {TIE_FORCE_UNRESOLVED}")
     near = near_collapse_lines([(f"{r.record}, storey {s.storey}", s.s1_over_delta_u) for r in results
-                                for s in r.storeys if not s.collapsed],
+                                for s in r.storeys if s.wall and not s.collapsed],
                                "rockingwall assess --building FILE RECORDS --pga ... runs an ensemble of buildings "
                                "and gives each storey's probability of collapse (docs/robustness.md)")
     return "\n".join(lines + sensitivity_lines(results) + near)
@@ -126,12 +130,13 @@ def to_json(building, results):
                    "runs": [r.to_dict() for r in results]})
 
 
-def history_csv(histories, path, t_collapse=()):
+def history_csv(histories, path, t_collapse=(), walls=()):
     """time [s] and, per storey, s1 and s2 [m] (relative to the wall's base), the diaphragm [m]
     (relative to its supports), and where computed the absolute acceleration of the floor the wall
     stands on [m/s2] and the tie's force on the diaphragm [N/m], both low-pass filtered at
     floor_acc.CUTOFF_HZ (monolithic.Histories): raw on this grid, the tie's ringing would alias
-    into them. Each column's name carries its unit and storey (units.history_column: s1_m_1). t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
+    into them. Each column's name carries its unit and storey (units.history_column: s1_m_1).
+    walls: whether each storey has a wall (s1, s2 and the tie's force of one without are empty). t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
     s1, s2 and tie force are empty cells, as `rockingwall run` writes them: the run holds the state
     the wall collapsed at, which is no displacement, and a collapsed wall pulls on no tie."""
     scene = histories.scene
@@ -145,6 +150,9 @@ def history_csv(histories, path, t_collapse=()):
     for i, t_c in enumerate(t_collapse):
         blank_after_collapse(table, t_c, [history_column(name, i + 1) for name in per_storey
                                           if name in ("s1", "s2") or name.startswith("tie_force")])
+    for i in np.flatnonzero(~np.asarray(walls, dtype=bool)):  # a storey without a wall: no wall's history
+        table[[history_column(name, i + 1) for name in per_storey
+               if name in ("s1", "s2") or name.startswith("tie_force")]] = np.nan
     table.rename(columns={"time": history_column("time")}).to_csv(path, index=False, float_format="%.9g", na_rep="")
 
 
@@ -187,12 +195,14 @@ def plot(building, result, histories, path):
     fig, axes = plt.subplots(n, 1, figsize=(9, 2.4 * n + 0.6), sharex=True, squeeze=False)
     for panel, s in zip(axes[::-1, 0], result.storeys):
         i = s.storey - 1
-        draw_wall(panel, history.t, history.s1[:, i] * 1e3, s.t_collapse_s if s.collapsed else None, lw=0.8,
-                  color="C0", label="wall s1 (mid-height) [mm]")
+        if s.wall:
+            draw_wall(panel, history.t, history.s1[:, i] * 1e3, s.t_collapse_s if s.collapsed else None, lw=0.8,
+                      color="C0", label="wall s1 (mid-height) [mm]")
         panel.plot(history.t, history.diaphragm[:, i] * 1e3, lw=0.8, color="C1", label="diaphragm [mm]")
-        du = s.delta_u_m * 1e3
-        panel.axhline(du, color="C3", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
-        panel.axhline(-du, color="C3", lw=0.6, ls="--")
+        if s.wall:
+            du = s.delta_u_m * 1e3
+            panel.axhline(du, color="C3", lw=0.6, ls="--", label=f"Delta_u = {du:.0f} mm")
+            panel.axhline(-du, color="C3", lw=0.6, ls="--")
         panel.set_ylabel(f"storey {s.storey}")
         panel.set_title(f"storey {s.storey}: {_collapse(s)}", fontsize=8)
         panel.legend(fontsize=7, loc="upper right")

@@ -5,7 +5,6 @@ with the same Bouc-Wen shape and pinching (description.Building.hysteresis)."""
 from ..names import SPRING_LAWS, hinge_law_code
 
 
-
 def start_values(building):
     """{name: value} of every parameter the building sets (the FMU's defaults for the rest)."""
     v = {"nStoreys": len(building.storeys), "rigidInPlane": int(building.rigid_in_plane), "storeyLaw": 0,
@@ -13,12 +12,12 @@ def start_values(building):
          "rayleighStiffness": 0.0, **building.fmu_hysteresis()}
     for i, s in enumerate(building.storeys, 1):
         w, d, wall = s.wall, s.diaphragm, building.wall_parameters(i - 1)
-        v.update({f"hasWall_{i}": 1, f"h_{i}": s.height, f"b_{i}": w.b, f"W_{i}": w.W,
-                  f"psi_{i}": wall["psi"], f"psiWeightOnly_{i}": wall["psiWeightOnly"], f"eTop_{i}": wall["eTop"],
-                  f"tie_{i}": s.tie,
-                  f"er_{i}": w.e_r,
-                  f"hingeLaw_{i}": hinge_law_code(w.hinge_law),
-                  f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"zetad_{i}": d.damping})
+        v.update({f"hasWall_{i}": int(w is not None), f"md_{i}": d.mass, f"kd_{i}": d.stiffness,
+                  f"zetad_{i}": d.damping})
+        if w is not None:
+            v.update({f"h_{i}": s.height, f"b_{i}": w.b, f"W_{i}": w.W, f"psi_{i}": wall["psi"],
+                      f"psiWeightOnly_{i}": wall["psiWeightOnly"], f"eTop_{i}": wall["eTop"], f"tie_{i}": s.tie,
+                      f"er_{i}": w.e_r, f"hingeLaw_{i}": hinge_law_code(w.hinge_law)})
         if d.law != "linear":
             v.update({f"Fyd_{i}": d.yield_force, f"alphad_{i}": d.post_yield})
         if s.in_plane is not None:

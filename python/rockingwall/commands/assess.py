@@ -111,7 +111,8 @@ def main(args):
     cases, outcomes = study.run(lvs, ensemble)
     if codes is not None:
         cases = code_view.add_to_cases(cases, codes)
-    states = study.states[0] if args.building else study.states  # the names; thresholds are per storey
+    # the names (the thresholds are each storey's wall's own): the first wall's
+    states = next(st for st in study.states if st is not None) if args.building else study.states
     frag = assessment.fragilities(cases, states, study.column, outcomes)
     im_name = f"Sa({args.sa_period:g} s, 5 %) [g]" if args.sa else "PGA [g]"
     with out:  # the folder holds this run's files only, swapped in when all are written
@@ -171,7 +172,7 @@ def building_study(args):
     states = assessment_building.storey_states(building, args.limit)
     scene = scenes.building(building).text()
     head = [building.describe(), "limit states: " + " | ".join(
-        f"storey {i + 1}: " + "; ".join(s.describe() for s in st) for i, st in enumerate(states)), scene]
+        f"storey {i + 1}: " + "; ".join(s.describe() for s in st) for i, st in enumerate(states) if st), scene]
 
     def run(lvs, ensemble):
         return assessment_building.run_cases(building, lvs, states, ensemble)

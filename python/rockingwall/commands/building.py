@@ -78,6 +78,6 @@ def write_histories(building, runs, out):
     for result, history in runs:
         stem = cc.file_stem(result.record)
         cc.write_atomic(out / f"{stem}.csv", lambda tmp, r=result, h=history: reports.history_csv(
-            h, tmp, [s.t_collapse_s if s.collapsed else None for s in r.storeys]))
+            h, tmp, [s.t_collapse_s if s.collapsed else None for s in r.storeys], [s.wall for s in r.storeys]))
         cc.write_atomic(out / f"{stem}.png", lambda tmp, r=result, h=history: reports.plot(building, r, h, tmp))
         print(f"wrote {out / stem}.csv and {out / stem}.png", file=sys.stderr)

@@ -49,7 +49,8 @@ def expand(grid, suite):
             pairs, tag = [(p / rec.pga_g if rec.pga_g > 0 else math.nan, float(p)) for p in grid["pga_g"]], "pga"
         else:
             pairs, tag = [(float(s), float(s) * rec.pga_g) for s in grid["scales"]], "x"
-        for (scale, pga), (i, storey) in itertools.product(pairs, enumerate(building.storeys, 1)):
+        walled = [(i + 1, building.storeys[i]) for i in building.walled()]  # a storey without a wall: no row
+        for (scale, pga), (i, storey) in itertools.product(pairs, walled):
             level = pga if tag == "pga" else scale
             run_id = f"b{building.name}|storey{i}|{rec.name}|{tag}{_fmt(level)}|tail{_fmt(grid['tail'])}"
             sets = (("building", text), ("storey", str(i)), ("row_format", ROW_FORMAT))
@@ -64,7 +65,7 @@ def describe(grid, suite, specs):
     levels = f"target PGA [g] {grid['pga_g']}" if grid["pga_g"] else f"scale factors {grid['scales']}"
     return "\n".join([building.describe(), scenes.building(building).text(),
                       f"records: {len(suite)} from '{grid['suite']}'", levels,
-                      f"{len(specs)} runs ({len(building.storeys)} storeys per record and intensity, "
+                      f"{len(specs)} runs ({len(building.walled())} walls per record and intensity, "
                       "one building solution each)"])
 
 
