@@ -53,8 +53,9 @@ void sx_sync_hysteresis(sx_run *R)
         if (!sx_bilinear(sc, i)) continue;
         f = floor_block(sc, R->x, i);
         d = f[BD_Y] - f[BD_U], d0 = R->d_synced[i];
-        /* the work of F = k_b d + F0 from d0 to d, without cancellation */
-        f[BD_WORK_D] += (d - d0) * (0.5 * branch_stiffness(s, key->branch[i]) * (d + d0) + key->F0[i] * hysteretic_force(s));
+        /* the work of F = k_b d + F0 (1 - alpha) Fy from d0 to d, without cancellation */
+        f[BD_WORK_D] += (d - d0) * (0.5 * branch_stiffness(s, key->branch[i]) * (d + d0) +
+                                    key->F0[i] * hysteretic_force(s));
         R->d_synced[i] = d;
         z = key->branch[i] ? key->branch[i] : key->F0[i] + s->k * d / s->Fy;
         f[BD_ZD] = fmax(-1.0, fmin(1.0, z)); /* an event leaves z a rounding past its limit */

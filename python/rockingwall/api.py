@@ -114,8 +114,8 @@ def _simulate(wall, record, engine, stop_time, tail, output_interval, rtol, diap
     grid = output_grid(float(record.t[0]), t_end, output_interval)
     if diaphragm is not None:
         if engine != "exact":
-            raise ValueError(f"engine {engine!r} runs the paper's scene (the top spring to a fixed point); a wall under "
-                             "a diaphragm with mass runs on the scene solver: leave the engine at 'exact'")
+            raise ValueError(f"engine {engine!r} runs the paper's scene (the top spring to a fixed point); a wall "
+                             "under a diaphragm with mass runs on the scene solver: leave the engine at 'exact'")
         return _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie)
     if engine == "exact" and not engine_module.covers(wall.params):
         engine = PARAPET_ON_CVODE  # beyond the engine's small-rotation form: said in the result

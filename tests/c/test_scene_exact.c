@@ -1,6 +1,7 @@
 /* The exact scene engine (fmu_src/scene/rw_scene_exact*.c): its linear system against the scene's
  * own rates (rw_scene_derivatives) at random states of random scenes (linear and bilinear
- * diaphragms), short runs against CVODES, what it refuses, and its two matrix-vector products giving the same bits. Run under ASan/UBSan by scripts/run_tests.sh. */
+ * diaphragms), short runs against CVODES, what it refuses, and its two matrix-vector products
+ * giving the same bits. Run under ASan/UBSan by scripts/run_tests.sh. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

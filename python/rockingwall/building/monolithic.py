@@ -41,7 +41,7 @@ class StoreyResult:
     base_peak_acc_raw_m_s2: float = None
     tie_force_N_per_m: float = None      # the tie's force on the diaphragm filtered at 25 Hz; None: not computed or collapsed
     tie_force_raw_N_per_m: float = None  # the same unfiltered (it grows with the tie's stiffness)
-    wall: bool = True                    # False: a storey without a face-loaded wall (its peaks NaN, its diaphragm's real)
+    wall: bool = True  # False: a storey without a face-loaded wall (its wall's peaks NaN; its diaphragm's real)
 
     @property
     def tie_force_or_nan(self):

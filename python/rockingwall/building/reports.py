@@ -136,9 +136,10 @@ def history_csv(histories, path, t_collapse=(), walls=()):
     stands on [m/s2] and the tie's force on the diaphragm [N/m], both low-pass filtered at
     floor_acc.CUTOFF_HZ (monolithic.Histories): raw on this grid, the tie's ringing would alias
     into them. Each column's name carries its unit and storey (units.history_column: s1_m_1).
-    walls: whether each storey has a wall (s1, s2 and the tie's force of one without are empty). t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's
-    s1, s2 and tie force are empty cells, as `rockingwall run` writes them: the run holds the state
-    the wall collapsed at, which is no displacement, and a collapsed wall pulls on no tie."""
+    t_collapse: each storey's collapse time (None or NaN: standing); after it the wall's s1, s2 and
+    tie force are empty cells, as `rockingwall run` writes them: the run holds the state the wall
+    collapsed at, which is no displacement, and a collapsed wall pulls on no tie. walls: whether
+    each storey has a wall (those cells of one without are empty throughout)."""
     scene = histories.scene
     n = scene.s1.shape[1]
     per_storey = {"s1": scene.s1, "s2": scene.s2, "diaphragm": scene.diaphragm}
