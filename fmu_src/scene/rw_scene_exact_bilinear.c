@@ -12,7 +12,13 @@
 
 #include <math.h>
 
-static double *floor_block(const rw_scene *sc, double x[], int i)
+/* floor i's block of the scene state (its diaphragm's states among them) */
+static const double *floor_states(const rw_scene *sc, const double x[], int i)
+{
+    return RW_SCENE_BUILDING(sc, x) + BD_STATES_PER_FLOOR * i;
+}
+
+static double *floor_states_to_set(const rw_scene *sc, double x[], int i)
 {
     return RW_SCENE_BUILDING(sc, x) + BD_STATES_PER_FLOOR * i;
 }
@@ -20,18 +26,22 @@ static double *floor_block(const rw_scene *sc, double x[], int i)
 /* the hysteretic share of the yield force, (1 - alpha) Fy */
 static double hysteretic_force(const bd_spring *s) { return (1.0 - s->alpha) * s->Fy; }
 
+/* can the spring yield at all (alpha = 1 or no yield force: it is k d, as a linear one) */
+static int yields(const bd_spring *s) { return hysteretic_force(s) > 0.0 && s->k > 0.0; }
+
 int sx_bilinear(const rw_scene *sc, int i)
 {
-    const bd_params *b = &sc->S.building;
-    return b->diaphragm_law == BD_BILINEAR && hysteretic_force(&b->diaph[i]) > 0.0 && b->diaph[i].k > 0.0;
+    (void)i; /* one law for every diaphragm */
+    return sc->S.building.diaphragm_law == BD_BILINEAR;
 }
 
 void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], int i, sx_key *key)
 {
     const bd_spring *s = &sc->S.building.diaph[i];
-    const double *f = floor_block(sc, (double *)x, i), *df = floor_block(sc, (double *)dx, i);
+    const double *f = floor_states(sc, x, i), *df = floor_states(sc, dx, i);
     const double d = f[BD_Y] - f[BD_U], du = f[BD_W] - f[BD_V], ddu = df[BD_W] - df[BD_V];
     const double z = f[BD_ZD];
+    if (!yields(s)) return; /* the linear spring's key: the elastic branch, no constant */
     /* on a yield limit the motion a moment later picks the branch (as a wall's region) */
     key->branch[i] = bd_bilinear_branch(z, du + 1e-9 * ddu);
     key->F0[i] = key->branch[i] ? key->branch[i] : z - s->k * d / s->Fy; /* over (1 - alpha) Fy */
@@ -51,12 +61,14 @@ void sx_sync_hysteresis(sx_run *R)
         const bd_spring *s = &sc->S.building.diaph[i];
         double *f, d, d0, z;
         if (!sx_bilinear(sc, i)) continue;
-        f = floor_block(sc, R->x, i);
+        f = floor_states_to_set(sc, R->x, i);
         d = f[BD_Y] - f[BD_U], d0 = R->d_synced[i];
-        /* the work of F = k_b d + F0 (1 - alpha) Fy from d0 to d, without cancellation */
+        /* the work of F = k_b d + F0 (1 - alpha) Fy from d0 to d, without cancellation (the
+         * scene's energy counts a hysteretic spring by it, whether or not it can yield) */
         f[BD_WORK_D] += (d - d0) * (0.5 * branch_stiffness(s, key->branch[i]) * (d + d0) +
                                     key->F0[i] * hysteretic_force(s));
         R->d_synced[i] = d;
+        if (!yields(s)) continue; /* z does not enter its force */
         z = key->branch[i] ? key->branch[i] : key->F0[i] + s->k * d / s->Fy;
         f[BD_ZD] = fmax(-1.0, fmin(1.0, z)); /* an event leaves z a rounding past its limit */
     }
@@ -69,11 +81,12 @@ void sx_bilinear_entered(sx_run *R)
     int i;
     for (i = 0; i < sc->S.n_storeys; i++) {
         const bd_spring *s = &sc->S.building.diaph[i];
-        const double *f = floor_block(sc, R->x, i);
+        const double *f = floor_states(sc, R->x, i);
         sx_dline *L = R->dlines[i];
         R->ndlines[i] = 0;
         if (!sx_bilinear(sc, i)) continue;
         R->d_synced[i] = f[BD_Y] - f[BD_U];
+        if (!yields(s)) continue;
         if (key->branch[i]) { /* yielding: until the deformation's rate changes sign */
             L[0] = (sx_dline){SX_DEFORM_RATE, 0.0, (double)key->branch[i]};
             R->ndlines[i] = 1;

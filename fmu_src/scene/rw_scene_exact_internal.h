@@ -194,7 +194,7 @@ int sx_handle_events(sx_run *R);        /* the event update at R->t, then the re
 int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
 
 /* ---- bilinear diaphragms (rw_scene_exact_bilinear.c) ---- */
-/* does the exact engine take diaphragm i's law (linear, or bilinear with a yield force)? */
+/* is diaphragm i bilinear (its z and the work done on it are states the engine keeps)? */
 int sx_bilinear(const rw_scene *sc, int i);
 /* the branch and force constant of bilinear diaphragm i at the scene state x (rates dx) */
 void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], int i, sx_key *key);
