@@ -136,8 +136,9 @@ def _diaphragm(table, where, line, what):
         raise where.error(line, f"{what}.law = {law!r}: known {', '.join(SPRING_LAWS)}", _keys(what) + ["law"])
     hysteretic = law != "linear"
     if hysteretic != ("yield_force" in table):
-        raise where.error(line, f"{what}: yield_force is given with a hysteretic law (boucWen, boucWenPinched, "
-                          "bilinear) and only with one", _keys(what))
+        hysteretic_laws = ", ".join(law for law in SPRING_LAWS if law != "linear")
+        raise where.error(line, f"{what}: yield_force is given with a hysteretic law ({hysteretic_laws}) and only "
+                          "with one", _keys(what))
     given = [k for k in PINCHING_KEYS if k in table]
     if given and law != "boucWenPinched":
         raise where.error(line, f"{what}: {', '.join(given)} is the pinching of law = \"boucWenPinched\" only",

@@ -148,12 +148,13 @@ def history_csv(histories, path, t_collapse=(), walls=()):
             per_storey[f"{name}_{CUTOFF_HZ:g}Hz"] = filtered
     table = pd.DataFrame({"time": scene.t} | {history_column(name, i + 1): np.asarray(a[:, i], dtype=float)
                                               for i in range(n) for name, a in per_storey.items()})
+
+    def wall_columns(i):  # the columns of storey i's wall (the diaphragm's and the floor's are not)
+        return [history_column(name, i + 1) for name in per_storey if name in ("s1", "s2") or name.startswith("tie_force")]
     for i, t_c in enumerate(t_collapse):
-        blank_after_collapse(table, t_c, [history_column(name, i + 1) for name in per_storey
-                                          if name in ("s1", "s2") or name.startswith("tie_force")])
+        blank_after_collapse(table, t_c, wall_columns(i))
     for i in np.flatnonzero(~np.asarray(walls, dtype=bool)):  # a storey without a wall: no wall's history
-        table[[history_column(name, i + 1) for name in per_storey
-               if name in ("s1", "s2") or name.startswith("tie_force")]] = np.nan
+        table[wall_columns(i)] = np.nan
     table.rename(columns={"time": history_column("time")}).to_csv(path, index=False, float_format="%.9g", na_rep="")
 
 
