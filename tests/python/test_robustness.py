@@ -7,10 +7,12 @@ chaotic, and a single run's peak is not the answer there."""
 import pathlib
 
 import numpy as np
+import pandas as pd
 import pytest
 from scipy import optimize, stats
 
 import rockingwall as rw
+from rockingwall import assessment
 from rockingwall import ensemble as ens
 from rockingwall import limits
 from rockingwall.building.description import Diaphragm
@@ -209,6 +211,27 @@ def test_fits_without_a_maximum_say_so_instead_of_where_an_optimizer_stopped():
         fragility.fit(im, np.zeros(8, bool), what="0.6 Delta_u")
     est = fragility.fit_with_uncertainty(im, np.array([1, 1, 0, 0, 0, 1, 0, 1], bool), names)
     assert est.beta_90[1] == np.inf  # resamples of {a, b} only: the share does not rise, beta unbounded
+
+
+def test_a_fit_whose_data_do_not_overlap_has_no_bootstrap_interval():
+    """Twelve records whose collapses all lie between 0.3 and 0.5 g: the median is anywhere in
+    [0.3, 0.5]. fragility.csv gave median_5 = median_95 = 0.387 and beta_5 = beta_95 = 0, the
+    percentiles of the resamples' gap midpoints: a false certainty beside 'anywhere in'. Now the
+    interval is blank and the row says where the median is."""
+    im = np.tile([0.1, 0.2, 0.3, 0.5, 0.7], 12)
+    collapse_pga = np.repeat(np.linspace(0.31, 0.49, 12), 5)
+    names = np.repeat([f"r{i}" for i in range(12)], 5)
+    est = fragility.fit_with_uncertainty(im, im > collapse_pga, names)
+    assert est.fit.gap == pytest.approx((0.3, 0.5)) and est.fit.beta == 0
+    assert np.isnan(est.theta_90).all() and np.isnan(est.beta_90).all()
+    assert any("anywhere in [0.3, 0.5]" in w for w in est.warnings)
+    assert not any("bootstrap" in w for w in est.warnings)
+    cases = pd.DataFrame({"im": im, "record": names, "collapsed": im > collapse_pga})
+    row = assessment.fragilities(cases, [], column="storey").iloc[0]
+    assert np.isnan([row.median_5, row.median_95, row.beta_5, row.beta_95]).all()
+    assert (row.gap_lo, row.gap_hi) == pytest.approx((0.3, 0.5))
+    overlapping = fragility.fit_with_uncertainty(im, im > np.repeat(np.linspace(0.15, 0.6, 12), 5), names)
+    assert np.isfinite(overlapping.theta_90).all()  # data that overlap keep their interval
 
 
 def test_finding5_unbounded_intervals_are_inf_not_a_number_from_a_flat_likelihood():

@@ -126,7 +126,8 @@ MIN_RECORDS = 10  # below this the dispersion beta is poorly constrained (FEMA P
 @dataclasses.dataclass(frozen=True)
 class Estimate:
     """A fragility with its uncertainty: 90 % bootstrap intervals over the records (an end is
-    inf, or 0 for theta, where the bootstrap cannot bound it), and warnings where the data cannot
+    inf, or 0 for theta, where the bootstrap cannot bound it; NaN where the data do not overlap,
+    whose median is a gap, not an estimate with a spread), and warnings where the data cannot
     support the fit."""
     fit: Fragility | None
     theta_90: tuple = (np.nan, np.nan)
@@ -183,9 +184,9 @@ def fit_tables(levels, n, z, n_boot=200, seed=1, what="collapse"):
         return Estimate(None, n_records=n_records, warnings=tuple(notes + [no_estimate_message(status, what)]))
     gap = tuple(float(x) for x in np.exp(fits.gap[0])) if status == probit.SEPARATED else None
     mixed = MixedLevel.of(levels, n.sum(axis=0), z.sum(axis=0)) if gap else None
-    if gap:
-        notes.append(gap_message(gap, what, mixed))
     best = Fragility(float(fits.theta[0]), float(fits.beta[0]), int(n.sum()), gap, mixed)
+    if gap:  # no interval: the resamples' medians are the convention's points inside their gaps, not a spread
+        return Estimate(best, n_records=n_records, warnings=tuple(notes + [gap_message(gap, what, mixed)]))
     boot = fits.status[1:]
     used = (boot != probit.NONE) & (boot != probit.ALL) & (boot != probit.ONE_LEVEL)
     if used.sum() < 0.8 * n_boot or (boot[used] != probit.INTERIOR).sum() >= 0.05 * n_boot:
