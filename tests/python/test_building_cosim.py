@@ -12,6 +12,7 @@ and the energy stop of the coupled runs (rockingwall.coupling.energy_guard):
   and with the defaults (0) it does not decay at all.
 """
 import json
+import pathlib
 
 import numpy as np
 import pytest
@@ -139,3 +140,21 @@ def test_a_collapsed_wall_is_printed_as_its_collapse_not_as_peaks(capsys):
     assert couple_building.main(["--storeys", "2", "--record", "elcentro", "--scale", "0.1", "--t-end", "5"]) == 0
     lines = [l for l in capsys.readouterr().out.splitlines() if l.startswith("wall in storey")]
     assert len(lines) == 2 and all(" peak s1 " in l and "collapsed" not in l for l in lines)
+
+
+def test_couple_building_takes_the_building_and_the_record_as_building_does(capsys):
+    """`rockingwall building FILE.toml RECORD` against `couple-building --building FILE --record R`:
+    the same building in the two commands took two spellings. couple-building now takes the file
+    and the record as `building` does too (the options stay), and refuses one given both ways."""
+    path = str(pathlib.Path(__file__).resolve().parents[2] / "examples" / "two-storey-brick.toml")
+    a = couple_building.parse_args([path, "gaussian:0.03,1", "--pga", "0.1"])
+    assert (a.building, a.record) == (path, "gaussian:0.03,1")
+    a = couple_building.parse_args(["--building", path])
+    assert (a.building, a.record) == (path, "elcentro")
+    assert couple_building.parse_args(["--storeys", "2"]).building is None
+    with pytest.raises(SystemExit) as stop:
+        couple_building.parse_args([path, "--building", path])
+    assert stop.value.code == 2 and "the building is given twice" in capsys.readouterr().err
+    with pytest.raises(SystemExit):
+        couple_building.parse_args([path, "elcentro", "--record", "elcentro"])
+    assert "the record is given twice" in capsys.readouterr().err

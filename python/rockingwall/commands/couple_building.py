@@ -12,7 +12,7 @@ cause and the remedy, exit status 1, and nothing of it is printed as a result.
 ratio (docs/building-coupling.md says where the limit lies and how the coupling is made).
 
     rockingwall couple-building --storeys 2 --record elcentro --scale 0.5
-    rockingwall couple-building --building examples/two-storey-brick.toml --record elcentro --pga 0.3
+    rockingwall couple-building examples/two-storey-brick.toml elcentro --pga 0.3   # as `building` takes it
     rockingwall couple-building --limits --out results   # the stability limit's tables and plot
 """
 import argparse
@@ -39,7 +39,10 @@ def parse_args(argv):
     ap.add_argument("--hinge-law", default="dohertyHinge", choices=list(HINGE_LAWS))
     ap.add_argument("--diaphragm-law", type=int, default=2, choices=[0, 1, 2, 3],
                     help="0 linear, 1 Bouc-Wen, 2 Bouc-Wen with pinching (timber), 3 bilinear")
-    ap.add_argument("--record", default="elcentro", help="'elcentro', 'gaussian[:D,T]' or an .AT2/.csv file")
+    ap.add_argument("file", nargs="?", metavar="FILE.toml",
+                    help="the building file, as `rockingwall building FILE.toml RECORD` takes it (or --building)")
+    ap.add_argument("record_given", nargs="?", metavar="RECORD", help="the record (or --record)")
+    ap.add_argument("--record", help="'elcentro' (default), 'gaussian[:D,T]' or an .AT2/.csv file")
     ap.add_argument("--building", metavar="FILE.toml",
                     help="the building file (docs/your-building.md): the Building FMU's parameters from its storeys, "
                          "a RockingWall FMU per wall (instead of --storeys, --walls, --wall, --Kd, --diaphragm-law)")
@@ -59,7 +62,13 @@ def parse_args(argv):
                     help="folder for --limits' and --example's plot (default results/; docs/img: the document's)")
     ap.add_argument("--records-cache", help="folder of the converted FEMA P695 far-field records "
                                             "(default: the one `rockingwall sweep` uses)")
-    return ap.parse_args(argv)
+    a = ap.parse_args(argv)
+    for given, option in ((a.file, "building"), (a.record_given, "record")):
+        if given is not None and getattr(a, option) is not None:
+            ap.error(f"the {option} is given twice: {given!r} and --{option} {getattr(a, option)!r}")
+        setattr(a, option, getattr(a, option) if given is None else given)
+    a.record = a.record or "elcentro"
+    return a
 
 
 def _record(a):
