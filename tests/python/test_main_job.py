@@ -2,6 +2,7 @@
 paper's wall stands, and a collapse shown as a time in the table and as the end of its lines in
 the plot, never as a displacement."""
 import re
+from types import SimpleNamespace
 
 import pytest
 
@@ -44,3 +45,19 @@ def test_a_collapse_is_a_time_not_a_displacement(runs, figures):
     assert legend == ["s1 (mid-height)", "s2 (top)", f"collapsed at {run.t_collapse:.2f} s"]
     assert max(line.get_xdata()[-1] for line in panel.get_lines()) <= run.t_collapse
     assert "scene: the paper's" in fig._suptitle.get_text()
+
+
+def test_the_cases_far_from_the_paper_are_named_under_the_table(runs):
+    """The main job printed 0.0445 m beside the paper's 0.137 m, and a collapse beside the paper's
+    standing wall, without a word: a new user's first output read as a broken model. The table now
+    names the cases more than 25 % from the paper's s1 or collapsed where it stands, and says why
+    the difference is reported, not tuned away; only those, and only at the paper's scale."""
+    far = main_job.far_from_paper(runs, 0.5)
+    assert far == [f"{main_job.CASES[2][0]}: s1 -67 % from the paper's",
+                   f"{main_job.CASES[3][0]} collapses where the paper's wall stands"]
+    assert main_job.table(runs, 0.5)[-1].startswith("far from the paper: " + "; ".join(far))
+    assert main_job.far_from_paper(runs, 0.4) == [] and not main_job.table(runs, 0.4)[-1].startswith("far")
+    close = {label: SimpleNamespace(collapsed=False, peak_s1=1.2 * s1, peak_s2=0.0, impacts=1)
+             for label, _, _, s1, _ in main_job.CASES}
+    assert main_job.far_from_paper(close, 0.5) == []
+    assert not main_job.table(close, 0.5)[-1].startswith("far")

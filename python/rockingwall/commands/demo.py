@@ -3,8 +3,9 @@ exact engine (or --engine fmi2sim / fmpy: the FMU) as the simply supported wall 
 (K_d = 500, 50, 5 kN/m per metre of wall, the cases of the paper's Table 5.4 / Fig. 5.4), with
 the default hinge law (dohertyHinge).
 
-Prints the peak mid-height and top displacements beside the paper's, writes the time histories
-to a CSV and draws them (results/main_elcentro.csv, results/main_elcentro.png)."""
+Prints the peak mid-height and top displacements beside the paper's (naming the cases far from
+them), writes the time histories to a CSV and draws them (results/main_elcentro.csv,
+results/main_elcentro.png)."""
 import pathlib
 
 from .. import main_job
