@@ -34,7 +34,8 @@ def parse(value, si_unit, name="value"):
         return _finite(float(value), value, name)
     m = _NUMBER.match(str(value))
     if not m:
-        raise ValueError(f"{name}: cannot read {value!r} as a number with an optional unit")
+        shown = str(value).lower() if isinstance(value, bool) else repr(value)  # a TOML or JSON true, as written
+        raise ValueError(f"{name}: cannot read {shown} as a number with an optional unit")
     number, unit = _finite(float(m.group(1)), value, name), m.group(2)
     if not unit or _canonical(unit) == _canonical(si_unit or "1"):
         return number

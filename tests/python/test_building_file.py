@@ -103,6 +103,8 @@ def test_a_bilinear_diaphragm_is_read_echoed_and_run_on_the_exact_engine(tmp_pat
     # a damping ratio written as a percentage without its sign: the range ended in a unit '1'
     (lambda t: t.replace('mass = "200 kg/m", damping = 0.05', 'mass = "200 kg/m", damping = 5'), 13,
      'storey 2.diaphragm.damping = 5 is outside [0, 2] (a ratio: 5 % is 0.05 or "5 %")'),
+    # a TOML boolean is named as the file has it ('cannot read True' was Python's spelling)
+    (lambda t: t.replace('height = "3.6 m"', 'height = true'), 11, "storey 2.height: cannot read true as a number"),
 ])
 def test_a_bad_file_names_the_file_the_line_and_the_problem(edit, line, words):
     with pytest.raises(building_file.BuildingFileError) as err:
