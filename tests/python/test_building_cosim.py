@@ -13,12 +13,14 @@ and the energy stop of the coupled runs (rockingwall.coupling.energy_guard):
 """
 import json
 import pathlib
+import re
+import shlex
 
 import numpy as np
 import pytest
 from fmpy import simulate_fmu
 
-from rockingwall import paths, records
+from rockingwall import cli, paths, records
 from rockingwall.building import building_file, cosim, monolithic, scene as bs
 from rockingwall.commands import couple as couple_command
 from rockingwall.commands import couple_building
@@ -44,7 +46,11 @@ def test_the_assessors_building_past_the_limit_ends_with_the_error(repo, capsys)
     out, err = capsys.readouterr()
     assert status == 1
     assert "went unstable" in err and "storey 2" in err and "0.36 times" in err
-    assert f"`rockingwall building {path}`" in err
+    # the remedy runs the same building, record and intensity (it named the file alone: El Centro as given)
+    remedy = re.search(r"`(rockingwall building [^`]*)`", err).group(1)
+    assert remedy == f"rockingwall building {path} elcentro --pga 1e-06"
+    assert cli.main(shlex.split(remedy)[1:]) == 0
+    assert "storey 2" in capsys.readouterr().out
     fmu = paths.where("BuildingWithWalls.fmu")  # the one FMU an FMI user can take instead: where it is
     assert f"in an FMI tool {fmu} " in err and fmu.is_file()
     assert "peak" not in out and "collapsed" not in out and out == ""

@@ -16,6 +16,7 @@ ratio (docs/building-coupling.md says where the limit lies and how the coupling 
     rockingwall couple-building --limits --out results   # the stability limit's tables and plot
 """
 import argparse
+import shlex
 import sys
 
 import numpy as np
@@ -82,6 +83,14 @@ def _record(a):
     return rec.scaled(0.5 if a.scale is None else a.scale)
 
 
+def _remedy(a):
+    """The command that runs the same building, record and intensity in one integration (the building
+    file's name where there is one)."""
+    intensity = f" --pga {a.pga:g}" if a.pga is not None else f" --scale {a.scale:g}" if a.scale is not None else ""
+    building = shlex.quote(a.building) if a.building else "FILE.toml"
+    return f"`rockingwall building {building} {shlex.quote(a.record)}{intensity}`"
+
+
 def main(argv=None):
     a = parse_args(argv)
     try:
@@ -115,8 +124,8 @@ def main(argv=None):
         t_end = a.t_end or float(rec.t[-1])
         r = run(scene, rec, t_end, a.macro_step, a.order)
     except CouplingUnstable as exc:
-        remedy = f"`rockingwall building {a.building}`" if a.building else "`rockingwall building FILE.toml`"
-        print(f"couple-building: error: {str(exc).replace('`rockingwall building FILE.toml`', remedy)}", file=sys.stderr)
+        print(f"couple-building: error: {str(exc).replace('`rockingwall building FILE.toml`', _remedy(a))}",
+              file=sys.stderr)
         return 1
     except (ValueError, OSError, CouplingError) as exc:  # refused input: 2; a failed run or file: 1
         print(f"couple-building: error: {exc}", file=sys.stderr)
