@@ -81,7 +81,7 @@ def test_within_the_limit_co_simulation_equals_one_integration(tmp_path, capsys)
 
 
 def test_couple_stops_the_stiff_tie_at_the_old_step(build_dir, tmp_path, capsys):
-    out = tmp_path / "c.csv"
+    out = tmp_path / "new" / "deeper" / "c.csv"  # folders couple makes for its outputs: gone after the failure
     status = couple_command.main([f"--wall-fmu={build_dir / 'RockingWall.fmu'}",
                                   f"--diaphragm-fmu={build_dir / 'Diaphragm.fmu'}", f"--out={out}",
                                   f"--plot={tmp_path / 'c.png'}", "--set=b=0.23", "--set=h=3.2", "--set=W=14080",
@@ -92,6 +92,7 @@ def test_couple_stops_the_stiff_tie_at_the_old_step(build_dir, tmp_path, capsys)
     assert "went unstable" in captured.err and "--monolithic" in captured.err and "2.35e-05" in captured.err
     assert f"in an FMI tool {paths.where('BuildingWithWalls.fmu')})" in captured.err
     assert not out.exists() and not (tmp_path / "c.png").exists() and "peak" not in captured.out
+    assert not (tmp_path / "new").exists()  # they were left behind, empty
 
 
 def free_vibration(build_dir, cd):

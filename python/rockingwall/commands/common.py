@@ -210,6 +210,24 @@ def output_dir(path, option="--out"):
     return out
 
 
+def folders_to_make(path):
+    """The folders output_dir(path) would create, deepest first (remove_empty_folders after a failure)."""
+    missing, p = [], pathlib.Path(path).absolute()
+    while not p.exists() and p != p.parent:
+        missing.append(p)
+        p = p.parent
+    return missing
+
+
+def remove_empty_folders(folders):
+    """Removes the folders a failed command made that are still empty, deepest first: it leaves nothing."""
+    for folder in folders:
+        try:
+            folder.rmdir()
+        except OSError:  # not empty (something else wrote there), or gone: left as it is
+            continue
+
+
 def file_stem(name):
     """A record's name as a file name: letters, digits, '-', '_' and '.' kept, the rest '_'."""
     return "".join(c if c.isalnum() or c in "-_." else "_" for c in name).strip("_") or "record"

@@ -49,7 +49,7 @@ from ..coupling.wall_diaphragm import (MACRO_STEP_DEFAULT_MAX, MACRO_STEP_MIN, R
                                        check_options, macro_step, parse_settings, unstable_message,
                                        wall_start_values)
 from ..names import HINGE_LAWS as LAWS
-from .common import output_dir, scale_factor
+from .common import folders_to_make, output_dir, remove_empty_folders, scale_factor
 
 EXIT_FLAGGED = 3               # --strict: the run finished but a safety check failed
 
@@ -154,22 +154,25 @@ def summary_file(a):
     return pathlib.Path(a.summary or csv_file(a).with_suffix(".json"))
 
 
-def check_files(a):
+def check_files(a, made):
     """Before the run: the FMUs and the record are inputs the outputs never replace, the three
     outputs are three files, and their folders exist (created: a folder that cannot be made
-    fails here, not after the run)."""
+    fails here, not after the run). Returns the folders it made, deepest first, for a failed run
+    to remove (appended to `made` as they are made)."""
     outputs.protect(a.wall_fmu, "the wall FMU")
     outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
     outputs.protect(records.split_spec(a.record)[0], "the record")
     targets = {"--out": csv_file(a), "--plot": plot_file(a), "--summary": summary_file(a)}
     outputs.check_targets(list(targets.values()), "output")
     for option, target in targets.items():
+        new = folders_to_make(target.parent)
         output_dir(target.parent, option)
+        made[:0] = new  # a later target's folders may sit inside an earlier one's: deepest first
 
 
 def main(argv=None):
     a = parse_args(argv)
-    step_warning = None
+    step_warning, made = None, []  # made: the output folders made, removed again if the run fails
     try:
         if a.json:  # the child: one master here, its arrays to the parent
             check_options(a.t_end, a.macro_step, a.rtol)
@@ -180,12 +183,13 @@ def main(argv=None):
         if a.monolithic and a.master != "fmpy":
             raise ValueError("--monolithic runs one CVODE over both FMUs: it takes no --master")
         check_options(a.t_end, a.macro_step if a.macro_step is not None else min(a.t_end, 1e-3), a.rtol)
-        check_files(a)
+        check_files(a, made)
         limit, step_warning = resolve_macro_step(a)
         check_options(a.t_end, a.macro_step, a.rtol)
         masters = ["monolithic"] if a.monolithic else ["fmpy", "libcosim"] if a.master == "both" else [a.master]
         results = {m: isolation.run_child(m, a) for m in masters}
     except (ValueError, OSError, CouplingError) as exc:
+        remove_empty_folders(made)
         print(f"{isolation.ERROR}{exc}", file=sys.stderr)
         if step_warning:
             print(f"{isolation.PROG}: warning: {step_warning}", file=sys.stderr)
@@ -194,6 +198,7 @@ def main(argv=None):
         print(f"{isolation.PROG}: warning: {step_warning}", file=sys.stderr)
     unstable = unstable_masters(results, a)
     if unstable:
+        remove_empty_folders(made)
         print(f"{isolation.ERROR}{unstable}", file=sys.stderr)
         return 1
     r = results[masters[0]]
