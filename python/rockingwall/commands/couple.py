@@ -157,8 +157,8 @@ def summary_file(a):
 def check_files(a, made):
     """Before the run: the FMUs and the record are inputs the outputs never replace, the three
     outputs are three files, and their folders exist (created: a folder that cannot be made
-    fails here, not after the run). Returns the folders it made, deepest first, for a failed run
-    to remove (appended to `made` as they are made)."""
+    fails here, not after the run). The folders it makes go into `made`, deepest first, as they
+    are made (so a failure at the second target still knows the first's), for a failed run to remove."""
     outputs.protect(a.wall_fmu, "the wall FMU")
     outputs.protect(a.diaphragm_fmu, "the diaphragm FMU")
     outputs.protect(records.split_spec(a.record)[0], "the record")
