@@ -107,6 +107,14 @@ class Wall:
         """{+1: Delta_u moving toward +x (inward), -1: toward -x (outward)} [m]."""
         return self.statics()["Delta_u"]
 
+    def to_dict(self):
+        """The parameters for a JSON report, SI by the FMU's names as `params`, but `support` and
+        `hingeLaw` by their names (a code such as 4.0 reads as a number): Wall.make(**d) rebuilds the wall."""
+        p = dict(self.params)
+        p["support"] = names.SUPPORT_NAMES[int(p["support"])]
+        p["hingeLaw"] = names.HINGE_LAW_NAMES[int(p["hingeLaw"])]
+        return p
+
     def describe(self, with_kd=True):
         """One line for titles and reports; with_kd=False leaves K_d out (a study over several)."""
         p, table = self.params, parameter_table()

@@ -34,8 +34,12 @@ def test_run_equals_api_and_fmi2sim(pulse_at2, rockingwall_fmu):
     proc = cli("run", "--b", "230mm", "--h", "3.2", "--W", "14.08kN/m", "--psi", "0.2", "--Kd", "30kN/m/m",
                pulse_at2, "--json")
     assert proc.returncode == 0, proc.stderr
-    run = json.loads(proc.stdout)["runs"][0]
+    report = json.loads(proc.stdout)
+    run = report["runs"][0]
     api = rw.simulate(rw.Wall.make(**ENGINEER), rw.read_at2(pulse_at2))
+    # the wall by the names a reader and Wall.make know (it read "support": 3.0, "hingeLaw": 4.0)
+    assert (report["wall"]["support"], report["wall"]["hingeLaw"]) == ("flexibleTop", "dohertyHinge")
+    assert rw.Wall.make(**report["wall"]).params == api.wall.params
     by_fmi2sim = fmi2sim.run(rockingwall_fmu, ag=pulse_at2, stop_time=api.history.time.iloc[-1], rtol=1e-10,
                              sets=[(k, v) for k, v in ENGINEER.items()])["outputs"]
     # this pulse topples the wall: the JSON gives its collapse, not the state it collapsed at

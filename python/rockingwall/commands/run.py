@@ -64,7 +64,7 @@ def main(args):
         cc.write_atomic(png_path, lambda tmp, r=r: run_report.plot(r, tmp))
         print(f"wrote {csv_path} and {png_path}", file=sys.stderr)
     if args.json:
-        strict_json.dump({"wall": wall.params, "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
+        strict_json.dump({"wall": wall.to_dict(), "Delta_u_m": wall.delta_u, "scene": results[0].scene.to_dict(),
                           "notes": {"near_collapse": limits.NEAR_COLLAPSE_NOTE},
                           "runs": [dict(record=r.record, engine=r.engine, pga_g=r.pga_g, **r.peaks(),
                                         **({"ensemble": r.ensemble.to_dict()} if r.ensemble else {}),
