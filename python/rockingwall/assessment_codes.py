@@ -139,18 +139,36 @@ FLAG_OF = {"Z": "--nz-Z", "soil class": "--nz-soil", "R": "--nz-R", "N": "--nz-N
            "e_hinge": "eHingeRatio"}
 
 
+# each code's options that set the ground motion it checks against; the hazard 'pga' sets Z and a_g
+HAZARD_OPTIONS = {"nzsee": ("--nz-Z", "--nz-soil"), "ntc": ("--ntc-ag", "--ntc-F0", "--ntc-Tc", "--ntc-soil"),
+                  "asce41": ("--asce-SX1",)}
+SET_BY_PGA = ("--nz-Z", "--ntc-ag")
+
+
 def checks_by_hazard(wall, codes, values, pgas=(), given=()):
     """{None: CodeChecks} at the options' site, or with values['code_hazard'] 'pga' {pga_key(PGA):
     CodeChecks} for every PGA [g] in pgas; given: the options the user gave (a site's Z or a_g
-    clashes with the hazard 'pga')."""
+    clashes with the hazard 'pga'; a site line names the ground motion's options left at defaults)."""
     hazard = choice("--code-hazard", values["code_hazard"], HAZARDS)
     if hazard == "site":
-        return {None: check(wall, codes, values)}
-    clash = [flag for flag in ("--nz-Z", "--ntc-ag") if flag in given]
+        return {None: defaults_named(check(wall, codes, values), given)}
+    clash = [flag for flag in SET_BY_PGA if flag in given]
     if clash:
         raise ValueError(f"{clash[0]}: with --code-hazard pga each case's PGA sets the codes' ground motion; "
                          "give one or the other")
-    return {key: check(wall, codes, values, pga=key) for key in sorted({pga_key(p) for p in pgas})}
+    return {key: defaults_named(check(wall, codes, values, pga=key), given)
+            for key in sorted({pga_key(p) for p in pgas})}
+
+
+def defaults_named(checks, given):
+    """checks whose site lines (one per code, after the heights') name the options of the code's ground
+    motion the user left at their defaults: those are an example site's (docs/codes.md), not theirs."""
+    lines = list(checks.site[:1])
+    for code, line in zip(checks.results, checks.site[1:]):
+        left = [flag for flag in HAZARD_OPTIONS[code]
+                if flag not in given and not (checks.pga is not None and flag in SET_BY_PGA)]
+        lines.append(line + (f" ({', '.join(left)} not given: an example site's defaults, not yours)" if left else ""))
+    return dataclasses.replace(checks, site=lines)
 
 
 def nz_Z_for(pga, values):

@@ -223,3 +223,20 @@ def test_a_parapet_is_judged_by_its_top_and_a_wall_by_its_mid_height():
         checks = ac.checks_by_hazard(element, ["nzsee"], values)
         assert checks[None].results["nzsee"].verdict == "pass"
         assert ac.add_to_cases(cases, checks).nzsee_unconservative.iloc[0] == flagged
+
+
+def test_the_site_left_at_its_defaults_is_named(tmp_path, capsys):
+    """The codes' hazard options have defaults (docs/codes.md's example site): a report that gave
+    none printed 'Z = 0.4, soil C' as if they were the user's site. Each site line now names the
+    options of its code's ground motion left at their defaults; the hazard 'pga' sets Z and a_g."""
+    def site_lines(*args):
+        assert assess(tmp_path / str(len(list(tmp_path.iterdir()))), "--code", "nzsee", "ntc", "asce41", *args) == 0
+        return [line for line in capsys.readouterr().out.splitlines() if " site: " in line or "S_X1 =" in line]
+
+    nz, it, us = site_lines()
+    assert nz.endswith("(--nz-Z, --nz-soil not given: an example site's defaults, not yours)")
+    assert it.endswith("(--ntc-ag, --ntc-F0, --ntc-Tc, --ntc-soil not given: an example site's defaults, not yours)")
+    assert us.endswith("(--asce-SX1 not given: an example site's defaults, not yours)")
+    assert not any("not given" in line for line in site_lines(*SITE))
+    nz, it, us = site_lines("--code-hazard", "pga", "--nz-soil", "C")[:3]
+    assert "not given" not in nz and "(--ntc-F0, --ntc-Tc, --ntc-soil not given" in it and "--asce-SX1" in us
