@@ -88,8 +88,11 @@ def swept(model):
     """The scene of a sweep's runs of one model (its results' column): a storey of a building sweep
     (model 'building'), else the wall on its own under each run's K_d."""
     if model == "building":
+        # the results do not say whether the file's in-plane walls were rigid (its default), so name both
         return Scene("building", f"the wall in its building (the sweep's building file): {STACKED}; "
-                     "diaphragms with mass and damping (K_d: the diaphragm on top of the storey)", BUILDING_LEFT_OUT)
+                     "diaphragms with mass and damping (K_d: the diaphragm on top of the storey)",
+                     f"{BUILDING_LEFT_OUT}, and the in-plane walls' flexibility where the building file takes "
+                     "them as rigid (its default)")
     alone = paper({"support": SUPPORTS[model], "Kd": None}, kd_text="K_d (each run's)")
     return dataclasses.replace(alone, leaves_out=alone.leaves_out.split(" (")[0]
                                + " (rockingwall sweep --building FILE: the walls in their building)")

@@ -127,6 +127,8 @@ def test_ida_names_the_wall_and_the_scene_its_runs_ran_in(tmp_path, capsys):
         out = capsys.readouterr().out
         assert out.startswith("wall: house: storey 2 (building, dohertyHinge)\nscene: the wall in its building")
         assert "left out: the diaphragms' higher modes" in out
+        # the results cannot say whether the building's in-plane walls were rigid: it said nothing of them
+        assert "the in-plane walls' flexibility where the building file takes them as rigid (its default)" in out
     assert ida_command.main([str(path), "--wall", "3", "--out", str(tmp_path / "house")]) == 2
     assert "no successful runs with --wall 3" in capsys.readouterr().err
     fig, _ = ida.fragility_figure(ida.load(path, "2"))
