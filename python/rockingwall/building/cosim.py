@@ -27,9 +27,9 @@ def building_start_values(building):
         d = s.diaphragm
         if not d.stiffness > 0:
             raise ValueError(f"storey {i}: the Building FMU needs a diaphragm stiffness > 0 (the file gives 0)")
-        hysteretic = d.law != "linear"
-        real.update({f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"cd_{i}": d.dashpot,
-                     f"Fyd_{i}": d.yield_force if hysteretic else 1.0, f"alphad_{i}": d.post_yield if hysteretic else 1.0})
+        Fyd, alphad = d.spring_under(building.diaphragm_law)
+        real.update({f"md_{i}": d.mass, f"kd_{i}": d.stiffness, f"cd_{i}": d.dashpot, f"Fyd_{i}": Fyd,
+                     f"alphad_{i}": alphad})
         p = s.in_plane
         if p is None:
             real.update({f"m_{i}": RIGID_FLOOR_MASS, f"k_{i}": RIGID_STOREY_K,
@@ -37,7 +37,7 @@ def building_start_values(building):
         else:
             real.update({f"m_{i}": p.mass, f"k_{i}": p.stiffness,
                          f"cs_{i}": 2.0 * p.damping * math.sqrt(p.stiffness * p.mass)})
-    integer = {"nStoreys": n, "storeyLaw": 0, "diaphragmLaw": SPRING_LAWS[building.storeys[0].diaphragm.law]}
+    integer = {"nStoreys": n, "storeyLaw": 0, "diaphragmLaw": SPRING_LAWS[building.diaphragm_law]}
     return real, integer
 
 

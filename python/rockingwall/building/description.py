@@ -73,6 +73,18 @@ class Diaphragm:
         names; FMU_HYSTERESIS_NAMES maps them to the FMUs')."""
         return dict(BOUC_WEN_SHAPE, **(self.pinching or NO_PINCHING))
 
+    def spring_under(self, law):
+        """(yield force [N/m], post-yield ratio) of this diaphragm run under the building's `law` (the
+        solvers and FMUs take one law for every diaphragm): its own under its own law; a linear one
+        beside hysteretic ones post-yield 1, so that its force is k d exactly whatever its z does, and
+        a yield force of k x 1 m, so that its z (unused) is no stiff state; (1, 1) under the linear law,
+        which uses neither."""
+        if law == "linear":
+            return 1.0, 1.0
+        if self.law == law:
+            return self.yield_force, self.post_yield
+        return (self.stiffness * 1.0 if self.stiffness > 0 else 1.0), 1.0
+
     def yielding(self):
         """', yield force 1 kN/m, post-yield 0.1 (pinching ...)' of a hysteretic law, '' of a linear one:
         what the echo of the building adds to the law's name."""
@@ -128,15 +140,26 @@ class Building:
         rigid = [s.in_plane is None for s in self.storeys]
         if any(rigid) and not all(rigid):
             raise ValueError("in-plane walls: give them for every storey or for none (none: rigid)")
-        laws = {s.diaphragm.law for s in self.storeys}
+        laws = {s.diaphragm.law for s in self.storeys} - {"linear"}
         if len(laws) > 1:
-            raise ValueError(f"one diaphragm law for the whole building, not {sorted(laws)}")
-        if len({tuple(sorted(s.diaphragm.hysteresis().items())) for s in self.storeys}) > 1:
+            raise ValueError(f"one hysteretic diaphragm law for the whole building (the solvers and the FMUs take "
+                             f"one), not {' and '.join(sorted(laws))}; linear diaphragms may stand beside it")
+        if len({tuple(sorted(d.hysteresis().items())) for d in self.hysteretic_diaphragms()}) > 1:
             raise ValueError("one pinching for the whole building's diaphragms (the solver and the FMUs take one)")
 
+    def hysteretic_diaphragms(self):
+        return [s.diaphragm for s in self.storeys if s.diaphragm.law != "linear"]
+
+    @property
+    def diaphragm_law(self):
+        """The law every diaphragm runs under: the hysteretic one where a storey has it, else linear
+        (a linear diaphragm beside hysteretic ones runs under theirs: Diaphragm.spring_under)."""
+        hysteretic = self.hysteretic_diaphragms()
+        return hysteretic[0].law if hysteretic else "linear"
+
     def hysteresis(self):
-        """The diaphragms' one Bouc-Wen shape and pinching (Diaphragm.hysteresis)."""
-        return self.storeys[0].diaphragm.hysteresis()
+        """The diaphragms' one Bouc-Wen shape and pinching (Diaphragm.hysteresis): the hysteretic ones'."""
+        return (self.hysteretic_diaphragms() or [self.storeys[0].diaphragm])[0].hysteresis()
 
     def fmu_hysteresis(self):
         """hysteresis() by the Building FMUs' parameter names (FMU_HYSTERESIS_NAMES)."""

@@ -100,13 +100,12 @@ class BuildingResult:
                            "event_losses_J_per_m": self.event_losses_J_m, "residual_share": self.residual_share}}
 
 
-def storey_spec(wall_params, diaphragm, in_plane=None):
+def storey_spec(wall_params, diaphragm, in_plane=None, law=None):
     """One storey of the scene: the wall's parameters (None: no wall), its diaphragm (a
-    description.Diaphragm) and its in-plane walls (None: rigid)."""
+    description.Diaphragm) under the building's law (None: its own) and its in-plane walls (None: rigid)."""
     d = diaphragm
-    hysteretic = d.law != "linear"
-    values = dict(wall=wall_params, md=d.mass, kd=d.stiffness, cd=d.dashpot,
-                  Fyd=d.yield_force if hysteretic else 1.0, alphad=d.post_yield if hysteretic else 1.0)
+    Fyd, alphad = d.spring_under(law or d.law)
+    values = dict(wall=wall_params, md=d.mass, kd=d.stiffness, cd=d.dashpot, Fyd=Fyd, alphad=alphad)
     if in_plane is not None:
         values.update(m=in_plane.mass, k=in_plane.stiffness,
                       cs=2.0 * in_plane.damping * math.sqrt(in_plane.stiffness * in_plane.mass))
@@ -115,10 +114,11 @@ def storey_spec(wall_params, diaphragm, in_plane=None):
 
 def building_spec(building):
     """The scene solver's Spec of a description.Building."""
-    storeys = tuple(storey_spec(building.wall_parameters(i), s.diaphragm, s.in_plane)
+    law = building.diaphragm_law
+    storeys = tuple(storey_spec(building.wall_parameters(i), s.diaphragm, s.in_plane, law)
                     for i, s in enumerate(building.storeys))
     return scene_engine.Spec(storeys=storeys, rigid_in_plane=building.rigid_in_plane,
-                             diaphragm_law=building.storeys[0].diaphragm.law, **building.hysteresis())
+                             diaphragm_law=law, **building.hysteresis())
 
 
 def wall_under_diaphragm_spec(wall_params, diaphragm, tie):
