@@ -108,6 +108,9 @@ def main(args):
             cc.warn(message, args)  # --strict: refused before any run
     out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
     out.check(output_names(recs, codes))  # before the runs: no output replaces an input
+    note = slow_scene_note(study.building, len(lvs), ensemble)
+    if note:
+        print(f"rockingwall: note: {note}", file=sys.stderr)
     cases, outcomes = study.run(lvs, ensemble)
     if codes is not None:
         cases = code_view.add_to_cases(cases, codes)
@@ -124,6 +127,16 @@ def main(args):
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
                                    args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
+
+
+def slow_scene_note(building, n_cases, ensemble):
+    """What a study of a building with Bouc-Wen diaphragms will cost, said before its runs (None for
+    the others): CVODES takes seconds a run where the exact engine takes milliseconds."""
+    if building is None or building.diaphragm_law not in ("boucWen", "boucWenPinched"):
+        return None
+    runs = n_cases * (1 + (ensemble.size if ensemble else 0))
+    return (f"{runs} runs of a building with {building.diaphragm_law} diaphragms, on CVODES: seconds a run "
+            "(law = \"bilinear\" with the same yield force and post-yield runs on the exact engine in milliseconds)")
 
 
 def wall_study(args):
