@@ -24,7 +24,7 @@ import sys
 from tqdm import tqdm
 
 from .. import (assessment, assessment_building, assessment_codes, assessment_codes_building, assessment_report,
-               engine, intensity, limits, records, scenes, strict_json, units)
+               engine, intensity, limits, records, scene_engine, scenes, strict_json, units)
 from ..api import ENGINES, PARAPET_ON_CVODE
 from ..ensemble import DIAPHRAGM_FIELDS, FIELDS as SPREAD_FIELDS, HYSTERETIC_FIELDS
 from ..names import SUPPORTS
@@ -130,13 +130,19 @@ def main(args):
 
 
 def slow_scene_note(building, n_cases, ensemble):
-    """What a study of a building with Bouc-Wen diaphragms will cost, said before its runs (None for
-    the others): CVODES takes seconds a run where the exact engine takes milliseconds."""
-    if building is None or building.diaphragm_law not in ("boucWen", "boucWenPinched"):
+    """What a study of a building the exact engine does not cover will cost, said before its runs
+    (None where it covers it): CVODES takes seconds a run where the exact engine takes milliseconds."""
+    if building is None:
+        return None
+    from ..building import monolithic  # as building_study's building_file: only for --building
+    covered, why = scene_engine.exact_covers(monolithic.building_spec(building))
+    if covered:
         return None
     runs = n_cases * (1 + (ensemble.size if ensemble else 0))
-    return (f"{runs} runs of a building with {building.diaphragm_law} diaphragms, on CVODES: seconds a run "
-            "(law = \"bilinear\" with the same yield force and post-yield runs on the exact engine in milliseconds)")
+    law = building.diaphragm_law
+    remedy = ("law = \"bilinear\" with the same yield force and post-yield runs on the exact engine in milliseconds"
+              if law in ("boucWen", "boucWenPinched") else why)
+    return f"{runs} runs of a building with {law} diaphragms, on CVODES: seconds a run ({remedy})"
 
 
 def wall_study(args):
@@ -189,7 +195,7 @@ def building_study(args):
 
     def run(lvs, ensemble):
         return assessment_building.run_cases(building, lvs, states, ensemble)
-    hysteretic = any(s.diaphragm.law != "linear" for s in building.storeys)
+    hysteretic = building.diaphragm_law != "linear"
     varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
                  spread_fields=varied)
