@@ -28,7 +28,7 @@ FIRST_FIELDS = ("psi", "W", "b", "er", "Kd", "scale", "diaphragm_mass", "diaphra
 LATER_FIELDS = ("diaphragm_yield",)
 FIELDS = FIRST_FIELDS + LATER_FIELDS
 DIAPHRAGM_FIELDS = ("diaphragm_mass", "diaphragm_damping", "tie")  # scenes (b) and (c) only
-HYSTERETIC_FIELDS = ("diaphragm_yield",)  # a building's hysteretic diaphragms only
+HYSTERETIC_FIELDS = ("diaphragm_yield",)  # hysteretic diaphragms only
 TRUNCATE = 3.0
 FLIP_SHARE = 0.05   # a case is flagged when this share of the ensemble or more disagrees with its nominal run
 
@@ -168,16 +168,15 @@ def wall_members(params, record, ensemble, t_end):
 
 def diaphragm_members(params, diaphragm, tie, record, ensemble, t_end, with_tie_force=False):
     """The ensemble of a wall tied to a diaphragm with mass (scene b): the diaphragm's stiffness,
-    mass and damping and the tie perturbed too; one scene run per member, and with_tie_force one
-    more for each standing member's tie force (tie_force.sample, as the nominal run's; else NaN)."""
+    mass and damping (a hysteretic one's yield force) and the tie perturbed too; one scene run per
+    member, and with_tie_force one more for each standing member's tie force (tie_force.sample, as
+    the nominal run's; else NaN)."""
     factors = ensemble.factors()
     walls = member_walls(params, factors)
     runs = []
     for k in range(ensemble.size):
         wall = dict(params, **{name: float(v[k]) for name, v in walls.items() if name != "Kd"})
-        d = dataclasses.replace(diaphragm, stiffness=diaphragm.stiffness * factors["Kd"][k, 0],
-                                mass=diaphragm.mass * factors["diaphragm_mass"][k, 0],
-                                damping=min(2.0, diaphragm.damping * factors["diaphragm_damping"][k, 0]))
+        d = _member_diaphragm(diaphragm, {name: v[k, 0] for name, v in factors.items()})
         member_tie = tie * factors["tie"][k, 0]
         spec = monolithic.wall_under_diaphragm_spec(wall, d, member_tie)
         runs.append(_scene_run(spec, [wall], record, factors["scale"][k, 0], t_end, with_tie_force))
@@ -199,12 +198,8 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
         for i, s in enumerate(building.storeys):
             f = {name: v[k, i] for name, v in factors.items()}
             wall = _member_wall(s.wall, f) if s.wall else None
-            d = dataclasses.replace(s.diaphragm, stiffness=s.diaphragm.stiffness * f["Kd"],
-                                    mass=s.diaphragm.mass * f["diaphragm_mass"],
-                                    damping=min(2.0, s.diaphragm.damping * f["diaphragm_damping"]))
-            if d.law != "linear":
-                d = dataclasses.replace(d, yield_force=d.yield_force * f["diaphragm_yield"])
-            storeys.append(dataclasses.replace(s, wall=wall, diaphragm=d, tie=s.tie * f["tie"]))
+            storeys.append(dataclasses.replace(s, wall=wall, diaphragm=_member_diaphragm(s.diaphragm, f),
+                                               tie=s.tie * f["tie"]))
         member = dataclasses.replace(building, storeys=tuple(storeys))
         params = [member.wall_parameters(i) for i in range(n)]
         for i, p in enumerate(params):
@@ -213,6 +208,15 @@ def building_members(building, record, ensemble, t_end, with_tie_force=False):
         runs.append(_scene_run(monolithic.building_spec(member), params, record, factors["scale"][k, 0], t_end,
                                with_tie_force))
     return [_collect(runs, {k: np.array(v) for k, v in walls_per_storey[i].items()}, i) for i in range(n)]
+
+
+def _member_diaphragm(diaphragm, f):
+    """A member's diaphragm: its stiffness, mass and damping (at most 2) by the member's factors f,
+    a hysteretic one's yield force too."""
+    d = dataclasses.replace(diaphragm, stiffness=diaphragm.stiffness * f["Kd"],
+                            mass=diaphragm.mass * f["diaphragm_mass"],
+                            damping=min(2.0, diaphragm.damping * f["diaphragm_damping"]))
+    return d if d.law == "linear" else dataclasses.replace(d, yield_force=d.yield_force * f["diaphragm_yield"])
 
 
 def _member_wall(wall, f):

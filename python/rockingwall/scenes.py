@@ -47,9 +47,10 @@ def paper(params, kd_text=None):
 def diaphragm(diaphragm, tie):
     """Scene (b): the wall under a diaphragm with mass, its supports moving with the ground."""
     d = diaphragm
+    law = "" if d.law == "linear" else f" ({d.law}{d.yielding()})"
     return Scene("diaphragm",
                  f"a wall tied ({tie:.3g} N/m per m) to a diaphragm of {format_kd(d.stiffness)}, {d.mass:.4g} kg/m, "
-                 f"{100 * d.damping:.3g} % damping, whose supports (the in-plane walls) move with the ground",
+                 f"{100 * d.damping:.3g} % damping{law}, whose supports (the in-plane walls) move with the ground",
                  "the floor's motion below the wall and the in-plane walls' flexibility: right for a single "
                  "storey or a top storey on rigid in-plane walls (a multi-storey building: rockingwall building FILE)")
 

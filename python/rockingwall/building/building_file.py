@@ -6,9 +6,8 @@ import re
 import tomllib
 import warnings
 
-from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, PINCHING_TIMBER, TIE_DEFAULT, Building,
-                          Diaphragm,
-                          InPlaneWalls, Storey, WallLayer, parse_quantity)
+from .description import (DAMPING_DEFAULT, E_R_DEFAULT, HINGE_LAW_DEFAULT, PINCHING_TIMBER, POST_YIELD_DEFAULT,
+                          TIE_DEFAULT, Building, Diaphragm, InPlaneWalls, Storey, WallLayer, parse_quantity)
 from ..names import HINGE_LAWS, SPRING_LAWS
 from ..wall import PlausibilityWarning
 from . import file_checks
@@ -148,7 +147,8 @@ def _diaphragm(table, where, line, what):
                      mass=_quantity(table, "mass", "kg/m", where, line, what),
                      damping=_quantity(table, "damping", "1", where, line, what, DAMPING_DEFAULT), law=law,
                      yield_force=_quantity(table, "yield_force", "N/m", where, line, what, math.inf),
-                     post_yield=_quantity(table, "post_yield", "1", where, line, what, 1.0 if not hysteretic else 0.1),
+                     post_yield=_quantity(table, "post_yield", "1", where, line, what,
+                                          POST_YIELD_DEFAULT if hysteretic else 1.0),
                      pinching=pinching if law == "boucWenPinched" else None)
 
 

@@ -19,6 +19,7 @@ from ..names import hinge_law_code
 
 TIE_DEFAULT = 1e8          # N/m per m: a stiff tie (docs/your-building.md: 1e9 moves peaks by about 1 %)
 DAMPING_DEFAULT = 0.05     # of critical, on the diaphragm's own mass and spring
+POST_YIELD_DEFAULT = 0.1   # a hysteretic diaphragm's post-yield stiffness ratio when none is given
 HINGE_LAW_DEFAULT = "dohertyHinge"
 E_R_DEFAULT = 0.86
 MAX_STOREYS = 5

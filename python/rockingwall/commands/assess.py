@@ -73,7 +73,7 @@ class Study:
     """What the command runs: run(levels, ensemble) -> (cases, outcomes); the limit states (per
     storey for a building), the report's head lines, the scene, the plots' title, the group column,
     the wall (None for a building), the building (None for a wall), the inputs an ensemble
-    perturbs in this scene."""
+    perturbs in this scene, and for a scene off the exact engine what its runs cost."""
     run: object
     states: list
     head: list
@@ -83,6 +83,7 @@ class Study:
     wall: object = None
     building: object = None
     spread_fields: tuple = SPREAD_FIELDS
+    slow_note: object = None  # slow_note(runs per scene): what CVODES will cost, or None
 
 
 def output_names(recs, codes):
@@ -108,7 +109,7 @@ def main(args):
             cc.warn(message, args)  # --strict: refused before any run
     out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
     out.check(output_names(recs, codes))  # before the runs: no output replaces an input
-    note = slow_scene_note(study.building, len(lvs), ensemble)
+    note = study.slow_note(len(lvs) * (1 + (ensemble.size if ensemble else 0))) if study.slow_note else None
     if note:
         print(f"rockingwall: note: {note}", file=sys.stderr)
     cases, outcomes = study.run(lvs, ensemble)
@@ -129,20 +130,17 @@ def main(args):
     return 0  # the report last: a closed pipe cannot lose the files
 
 
-def slow_scene_note(building, n_cases, ensemble):
-    """What a study of a building the exact engine does not cover will cost, said before its runs
-    (None where it covers it): CVODES takes seconds a run where the exact engine takes milliseconds."""
-    if building is None:
-        return None
-    from ..building import monolithic  # as building_study's building_file: only for --building
-    covered, why = scene_engine.exact_covers(monolithic.building_spec(building))
+def slow_scene_note(spec, runs, what, bilinear):
+    """What a study of a scene the exact engine does not cover will cost, said before its runs
+    (None where it covers it): CVODES takes seconds a run where the exact engine takes
+    milliseconds. spec: the scene solver's Spec; what: the scene with its law ('a building with
+    boucWen diaphragms'); bilinear: how the user asks for the bilinear law, which the exact engine runs."""
+    covered, why = scene_engine.exact_covers(spec)
     if covered:
         return None
-    runs = n_cases * (1 + (ensemble.size if ensemble else 0))
-    law = building.diaphragm_law
-    remedy = ("law = \"bilinear\" with the same yield force and post-yield runs on the exact engine in milliseconds"
-              if law in ("boucWen", "boucWenPinched") else why)
-    return f"{runs} runs of a building with {law} diaphragms, on CVODES: seconds a run ({remedy})"
+    if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
+        why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
+    return f"{runs} runs of {what}, on CVODES: seconds a run ({why})"
 
 
 def wall_study(args):
@@ -173,16 +171,27 @@ def wall_study(args):
 
     def run(lvs, ensemble):
         return assessment.run_cases(walls, lvs, args, states, ensemble, diaphragm, tie)
+    hysteretic = diaphragm is not None and diaphragm.law != "linear"
     varied = tuple(f for f in SPREAD_FIELDS  # a massless or absent spring has no diaphragm to perturb
                    if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd")
-                   and f not in HYSTERETIC_FIELDS)  # (its diaphragm is linear)
+                   and (hysteretic or f not in HYSTERETIC_FIELDS))
     return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall,
-                 spread_fields=varied)
+                 spread_fields=varied, slow_note=_diaphragm_slow_note(wall, diaphragm, tie, len(kds)))
+
+
+def _diaphragm_slow_note(wall, diaphragm, tie, n_kd):
+    """Scene (b)'s Study.slow_note; None for the paper's scene (the exact engine, or fmi2sim by choice)."""
+    if diaphragm is None:
+        return None
+    from ..building import monolithic  # the scene solver: only for a diaphragm with mass
+    spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
+    what = f"a wall under a {diaphragm.law} diaphragm"
+    return lambda runs: slow_scene_note(spec, runs * n_kd, what, "--diaphragm-law bilinear")
 
 
 def building_study(args):
-    from ..building import building_file
-    if cc.wall_given(args) or args.diaphragm_mass or args.tie or args.kd_values:
+    from ..building import building_file, monolithic
+    if cc.wall_given(args) or cc.diaphragm_given(args) or args.kd_values:
         raise ValueError("--building FILE describes the walls and diaphragms: give no wall, diaphragm or --kd-values "
                          "options")
     if args.engine != "exact":
@@ -197,8 +206,9 @@ def building_study(args):
         return assessment_building.run_cases(building, lvs, states, ensemble)
     hysteretic = building.diaphragm_law != "linear"
     varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
+    spec, what = monolithic.building_spec(building), f"a building with {building.diaphragm_law} diaphragms"
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
-                 spread_fields=varied)
+                 spread_fields=varied, slow_note=lambda runs: slow_scene_note(spec, runs, what, 'law = "bilinear"'))
 
 
 def write_files(out, cases, frag, recs, states, im_name, study):

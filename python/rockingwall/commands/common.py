@@ -6,8 +6,9 @@ import sys
 import warnings
 
 from .. import bounds, intensity, outputs, records, units
-from ..building.description import DAMPING_DEFAULT, TIE_DEFAULT, Diaphragm
-from ..names import SUPPORTS
+from ..building.building_file import RANGES
+from ..building.description import DAMPING_DEFAULT, POST_YIELD_DEFAULT, TIE_DEFAULT, Diaphragm
+from ..names import SPRING_LAWS, SUPPORTS
 from ..wall import PlausibilityWarning, Wall
 
 WALL_FLAGS = {  # flag -> parameter; values may carry units ('30kN/m/m', '230mm')
@@ -102,18 +103,33 @@ def add_diaphragm_arguments(parser):
     g.add_argument("--diaphragm-damping",
                    help=f"its damping ratio, e.g. 0.05 or 5%% (default {DAMPING_DEFAULT:g}); its stiffness is --Kd")
     g.add_argument("--tie", help=f"the wall-to-diaphragm connection [N/m per m] (default {TIE_DEFAULT:g})")
+    g.add_argument("--diaphragm-law", choices=list(SPRING_LAWS), default="linear",
+                   help="its force law (default linear); bilinear runs on the exact engine, the Bouc-Wen laws on "
+                        "CVODES (seconds a run); boucWenPinched takes timber's pinching (docs/your-building.md)")
+    g.add_argument("--diaphragm-yield", help="a hysteretic diaphragm's yield force per metre of wall, e.g. 2kN/m")
+    g.add_argument("--diaphragm-post-yield",
+                   help=f"its post-yield stiffness ratio in [0, 1] (default {POST_YIELD_DEFAULT:g})")
+
+
+DIAPHRAGM_OPTIONS = ("diaphragm_mass", "diaphragm_damping", "tie", "diaphragm_yield", "diaphragm_post_yield")
+
+
+def diaphragm_given(args):
+    """Whether any diaphragm option is given (a building file describes its own)."""
+    return any(getattr(args, name) is not None for name in DIAPHRAGM_OPTIONS) or args.diaphragm_law != "linear"
 
 
 def diaphragm_from_args(args, wall):
-    """(Diaphragm or None, tie [N/m per m]) from --diaphragm-mass, --diaphragm-damping, --tie and
-    the wall's K_d as the diaphragm's stiffness."""
+    """(Diaphragm or None, tie [N/m per m]) from the diaphragm options and the wall's K_d as the
+    diaphragm's stiffness; the same ranges as the building file's."""
     tie = units.parse(args.tie, "N/m2", "--tie") if args.tie else TIE_DEFAULT
     damping = (units.parse(args.diaphragm_damping, "1", "--diaphragm-damping") if args.diaphragm_damping is not None
                else DAMPING_DEFAULT)
     if args.diaphragm_mass is None:
-        for given, option in ((args.tie, "--tie"), (args.diaphragm_damping, "--diaphragm-damping")):
-            if given is not None:
-                raise ValueError(f"{option} is of a diaphragm with mass: give --diaphragm-mass too")
+        given = [f"--{name.replace('_', '-')}" for name in DIAPHRAGM_OPTIONS if getattr(args, name) is not None]
+        if given or args.diaphragm_law != "linear":
+            option = given[0] if given else f"--diaphragm-law {args.diaphragm_law}"
+            raise ValueError(f"{option} is of a diaphragm with mass: give --diaphragm-mass too")
         return None, tie
     if int(wall.params["support"]) != SUPPORTS["flexibleTop"]:
         raise ValueError("--diaphragm-mass: a diaphragm holds the wall's top (support flexibleTop)")
@@ -124,7 +140,34 @@ def diaphragm_from_args(args, wall):
                      (1 <= tie <= 1e12, f"--tie {tie:g} N/m per m: must be in [1, 1e12] N/m per m")):
         if not ok:
             raise ValueError(what)
-    return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=damping), tie
+    return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=damping, **_diaphragm_law(args)), tie
+
+
+def _diaphragm_law(args):
+    """The Diaphragm fields of --diaphragm-law, --diaphragm-yield and --diaphragm-post-yield."""
+    law = args.diaphragm_law
+    if law == "linear":
+        for given, option in ((args.diaphragm_yield, "--diaphragm-yield"),
+                              (args.diaphragm_post_yield, "--diaphragm-post-yield")):
+            if given is not None:
+                raise ValueError(f"{option} is of a hysteretic diaphragm: give --diaphragm-law too "
+                                 f"({', '.join(k for k in SPRING_LAWS if k != 'linear')})")
+        return {}
+    if args.diaphragm_yield is None:
+        raise ValueError(f"--diaphragm-law {law}: give its yield force too (--diaphragm-yield, e.g. 2kN/m)")
+    yield_force = _in_range(units.parse(args.diaphragm_yield, "N/m", "--diaphragm-yield"), "yield_force",
+                            "--diaphragm-yield", " N/m")
+    post_yield = (_in_range(units.parse(args.diaphragm_post_yield, "1", "--diaphragm-post-yield"), "post_yield",
+                            "--diaphragm-post-yield", "") if args.diaphragm_post_yield is not None
+                  else POST_YIELD_DEFAULT)
+    return {"law": law, "yield_force": yield_force, "post_yield": post_yield}
+
+
+def _in_range(value, key, option, unit):
+    low, high = RANGES[key]
+    if not low <= value <= high:
+        raise ValueError(f"{option} {value:g}{unit}: must be in [{low:g}, {high:g}]{unit}")
+    return value
 
 
 def add_record_arguments(parser, many=False):

@@ -44,7 +44,7 @@ def targets(out, recs):
 
 def main(args):
     if args.building:
-        if cc.wall_given(args) or args.diaphragm_mass or args.tie:
+        if cc.wall_given(args) or cc.diaphragm_given(args):
             raise ValueError("--building FILE describes the walls and diaphragms: give no wall or diaphragm options")
         return run_building(args.building, args)
     wall = cc.wall_from_args(args)
