@@ -24,7 +24,7 @@ import sys
 from tqdm import tqdm
 
 from .. import (assessment, assessment_building, assessment_codes, assessment_codes_building, assessment_report,
-               engine, intensity, limits, records, scene_engine, scenes, strict_json, units)
+               engine, intensity, limits, records, scenes, strict_json, units)
 from ..api import ENGINES, PARAPET_ON_CVODE
 from ..ensemble import DIAPHRAGM_FIELDS, FIELDS as SPREAD_FIELDS, HYSTERETIC_FIELDS
 from ..names import SUPPORTS
@@ -109,9 +109,8 @@ def main(args):
             cc.warn(message, args)  # --strict: refused before any run
     out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
     out.check(output_names(recs, codes))  # before the runs: no output replaces an input
-    note = study.slow_note(len(lvs) * (1 + (ensemble.size if ensemble else 0))) if study.slow_note else None
-    if note:
-        print(f"rockingwall: note: {note}", file=sys.stderr)
+    if study.slow_note:
+        cc.note(study.slow_note(len(lvs) * (1 + (ensemble.size if ensemble else 0))))
     cases, outcomes = study.run(lvs, ensemble)
     if codes is not None:
         cases = code_view.add_to_cases(cases, codes)
@@ -128,19 +127,6 @@ def main(args):
     print(assessment_report.report(study.head, states, cases, frag, im_name, args.table,
                                    args.sa_period, study.column, study.scene_text))
     return 0  # the report last: a closed pipe cannot lose the files
-
-
-def slow_scene_note(spec, runs, what, bilinear):
-    """What a study of a scene the exact engine does not cover will cost, said before its runs
-    (None where it covers it): CVODES takes seconds a run where the exact engine takes
-    milliseconds. spec: the scene solver's Spec; what: the scene with its law ('a building with
-    boucWen diaphragms'); bilinear: how the user asks for the bilinear law, which the exact engine runs."""
-    covered, why = scene_engine.exact_covers(spec)
-    if covered:
-        return None
-    if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
-        why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
-    return f"{runs} runs of {what}, on CVODES: seconds a run ({why})"
 
 
 def wall_study(args):
@@ -176,17 +162,7 @@ def wall_study(args):
                    if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd")
                    and (hysteretic or f not in HYSTERETIC_FIELDS))
     return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall,
-                 spread_fields=varied, slow_note=_diaphragm_slow_note(wall, diaphragm, tie, len(kds)))
-
-
-def _diaphragm_slow_note(wall, diaphragm, tie, n_kd):
-    """Scene (b)'s Study.slow_note; None for the paper's scene (the exact engine, or fmi2sim by choice)."""
-    if diaphragm is None:
-        return None
-    from ..building import monolithic  # the scene solver: only for a diaphragm with mass
-    spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
-    what = f"a wall under a {diaphragm.law} diaphragm"
-    return lambda runs: slow_scene_note(spec, runs * n_kd, what, "--diaphragm-law bilinear")
+                 spread_fields=varied, slow_note=cc.diaphragm_slow_note(wall, diaphragm, tie, len(kds)))
 
 
 def building_study(args):
@@ -208,7 +184,7 @@ def building_study(args):
     varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
     spec, what = monolithic.building_spec(building), f"a building with {building.diaphragm_law} diaphragms"
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
-                 spread_fields=varied, slow_note=lambda runs: slow_scene_note(spec, runs, what, 'law = "bilinear"'))
+                 spread_fields=varied, slow_note=lambda runs: cc.slow_scene_note(spec, runs, what, 'law = "bilinear"'))
 
 
 def write_files(out, cases, frag, recs, states, im_name, study):

@@ -170,6 +170,37 @@ def _in_range(value, key, option, unit):
     return value
 
 
+def slow_scene_note(spec, runs, what, bilinear):
+    """What the runs of a scene the exact engine does not cover will cost, said before they start
+    (None where it covers it): CVODES takes seconds a run where the exact engine takes
+    milliseconds. spec: the scene solver's Spec; what: the scene with its law ('a building with
+    boucWen diaphragms'); bilinear: how the user asks for the bilinear law, which the exact engine runs."""
+    from .. import scene_engine  # the scene solver's library: only for the scenes it runs
+    covered, why = scene_engine.exact_covers(spec)
+    if covered:
+        return None
+    if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
+        why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
+    return f"{runs} run{'' if runs == 1 else 's'} of {what}, on CVODES: seconds a run ({why})"
+
+
+def diaphragm_slow_note(wall, diaphragm, tie, per_case=1):
+    """slow_scene_note of a wall under `diaphragm` as a function of the number of cases (each
+    `per_case` runs); None for the paper's scene (the exact engine, or fmi2sim by choice)."""
+    if diaphragm is None:
+        return None
+    from ..building import monolithic  # the scene solver: only for a diaphragm with mass
+    spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
+    what = f"a wall under a {diaphragm.law} diaphragm"
+    return lambda cases: slow_scene_note(spec, cases * per_case, what, "--diaphragm-law bilinear")
+
+
+def note(message):
+    """A note on stderr, before the work it is about (nothing for None)."""
+    if message:
+        print(f"rockingwall: note: {message}", file=sys.stderr)
+
+
 def add_record_arguments(parser, many=False):
     parser.add_argument("records" if many else "record", nargs="*" if many else "?",
                         default=["elcentro"] if many else "elcentro",
