@@ -83,7 +83,7 @@ class Study:
     wall: object = None
     building: object = None
     spread_fields: tuple = SPREAD_FIELDS
-    slow_note: object = None  # slow_note(runs per scene): what CVODES will cost, or None
+    slow_note: object = None  # slow_note(levels, ensemble): what CVODES will cost, or None
 
 
 def output_names(recs, codes):
@@ -110,7 +110,7 @@ def main(args):
     out = OutputFolder(cc.output_dir(args.out), "rockingwall assess")
     out.check(output_names(recs, codes))  # before the runs: no output replaces an input
     if study.slow_note:
-        cc.note(study.slow_note(len(lvs) * (1 + (ensemble.size if ensemble else 0))))
+        cc.note(study.slow_note(len(lvs), ensemble))
     cases, outcomes = study.run(lvs, ensemble)
     if codes is not None:
         cases = code_view.add_to_cases(cases, codes)
@@ -182,9 +182,12 @@ def building_study(args):
         return assessment_building.run_cases(building, lvs, states, ensemble)
     hysteretic = building.diaphragm_law != "linear"
     varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
-    spec, what = monolithic.building_spec(building), f"a building with {building.diaphragm_law} diaphragms"
+
+    def slow_note(cases, ensemble):
+        return cc.slow_scene_note(monolithic.building_spec(building), cases, ensemble,
+                                  f"a building with {building.diaphragm_law} diaphragms", 'law = "bilinear"')
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
-                 spread_fields=varied, slow_note=lambda runs: cc.slow_scene_note(spec, runs, what, 'law = "bilinear"'))
+                 spread_fields=varied, slow_note=slow_note)
 
 
 def write_files(out, cases, frag, recs, states, im_name, study):

@@ -170,10 +170,11 @@ def _in_range(value, key, option, unit):
     return value
 
 
-def slow_scene_note(spec, runs, what, bilinear):
+def slow_scene_note(spec, cases, ensemble, what, bilinear):
     """What the runs of a scene the exact engine does not cover will cost, said before they start
     (None where it covers it): CVODES takes seconds a run where the exact engine takes
-    milliseconds. spec: the scene solver's Spec; what: the scene with its law ('a building with
+    milliseconds. spec: the scene solver's Spec; cases: how many it runs, each once and once per
+    member of `ensemble` (None: no ensemble); what: the scene with its law ('a building with
     boucWen diaphragms'); bilinear: how the user asks for the bilinear law, which the exact engine runs."""
     from .. import scene_engine  # the scene solver's library: only for the scenes it runs
     covered, why = scene_engine.exact_covers(spec)
@@ -181,18 +182,21 @@ def slow_scene_note(spec, runs, what, bilinear):
         return None
     if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
         why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
+    runs = cases * (1 + (ensemble.size if ensemble else 0))
     return f"{runs} run{'' if runs == 1 else 's'} of {what}, on CVODES: seconds a run ({why})"
 
 
-def diaphragm_slow_note(wall, diaphragm, tie, per_case=1):
-    """slow_scene_note of a wall under `diaphragm` as a function of the number of cases (each
-    `per_case` runs); None for the paper's scene (the exact engine, or fmi2sim by choice)."""
+def diaphragm_slow_note(wall, diaphragm, tie, scenes_per_case=1):
+    """slow_scene_note of a wall under `diaphragm` as a function (cases, ensemble), each case run
+    for `scenes_per_case` diaphragms (assess's K_d values); None for the paper's scene (the exact
+    engine, or fmi2sim by choice)."""
     if diaphragm is None:
         return None
     from ..building import monolithic  # the scene solver: only for a diaphragm with mass
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
     what = f"a wall under a {diaphragm.law} diaphragm"
-    return lambda cases: slow_scene_note(spec, cases * per_case, what, "--diaphragm-law bilinear")
+    return lambda cases, ensemble: slow_scene_note(spec, cases * scenes_per_case, ensemble, what,
+                                                   "--diaphragm-law bilinear")
 
 
 def note(message):

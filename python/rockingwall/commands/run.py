@@ -55,9 +55,9 @@ def main(args):
     ensemble = cc.ensemble_from_args(args)
     recs = [cc.record_from_args(spec, args) for spec in args.records]
     files = targets(cc.output_dir(args.out), recs) if args.out else []
-    slow_note = cc.diaphragm_slow_note(wall, diaphragm, tie, 1 + (ensemble.size if ensemble else 0))
+    slow_note = cc.diaphragm_slow_note(wall, diaphragm, tie)
     if slow_note:
-        cc.note(slow_note(len(recs)))
+        cc.note(slow_note(len(recs), ensemble))
     results = [simulate(wall, rec, engine=args.engine, stop_time=args.stop_time, tail=args.tail, rtol=args.rtol,
                         diaphragm=diaphragm, tie=tie, ensemble=ensemble)
                for rec in tqdm(recs, desc="records", unit="record", file=sys.stderr, delay=2)]
