@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 
 from . import bounds, fmi2sim, limits, names, paths, robustness, scenes, scratch
+from . import ensemble as ens
 from . import engine as engine_module  # `engine` is simulate()'s argument
 from .building import floor_acc, monolithic, reports
 from .building.description import TIE_DEFAULT
@@ -139,10 +140,24 @@ def _sensitivity(wall, record, t_end, peak_s1, peak_s2, collapsed):
                                        [peaks(r.peak_s1, r.peak_s2, r.collapsed) for r in scaled])
 
 
+# what a run of a wall under a diaphragm with mass checks beside its peaks: the sensitivity to the
+# record's scale and the tie force (each its own runs: monolithic.respond_runs)
+DIAPHRAGM_CHECKS = dict(filter_floor=False, check_sensitivity=True, tie_forces=True)
+
+
+def under_diaphragm_runs(ensemble=None, states=()):
+    """(fewest, most) scene runs of one simulate() of a wall under a diaphragm with mass: its own
+    (DIAPHRAGM_CHECKS) and, with an ensemble, its members' (their tie forces too where one of the
+    limit states `states` is on F_top)."""
+    size = ensemble.size if ensemble is not None else 0
+    own, member = monolithic.respond_runs(**DIAPHRAGM_CHECKS), ens.member_runs(limits.ask_tie_force(states))
+    return tuple(n + size * m for n, m in zip(own, member))
+
+
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
-    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid, filter_floor=False,
-                                   check_sensitivity=True, tie_forces=True)
+    result, h = monolithic.respond(spec, [wall.params], record, t_end=t_end, rtol=rtol, t_out=grid,
+                                   **DIAPHRAGM_CHECKS)
     (s,) = result.storeys
     history = pd.DataFrame({"time": grid, "ag": np.interp(grid, record.t, record.ag), "s1": h.scene.s1[:, 0],
                             "s2": h.scene.s2[:, 0], "diaphragm": h.scene.diaphragm[:, 0],

@@ -26,14 +26,32 @@ def storey_states(building, limit_texts):
     return [limits.parse_all(limit_texts, wall) if wall else None for wall in storey_walls(building)]
 
 
+def case_runs(states, ensemble=None):
+    """(fewest, most) scene runs of one case of run_cases: its nominal run (and its tie-force run,
+    where a limit state asks for one) and its members'."""
+    tie_forces = asks_tie_forces(states)
+    size = ensemble.size if ensemble is not None else 0
+    nominal = monolithic.respond_runs(**_nominal_checks(tie_forces))
+    return tuple(n + size * m for n, m in zip(nominal, ens.member_runs(tie_forces)))
+
+
+def _nominal_checks(tie_forces):
+    return dict(filter_floor=False, tie_forces=tie_forces)
+
+
+def asks_tie_forces(states):
+    """Whether any storey's limit states are on F_top (one more run each, where asked for)."""
+    return any(limits.ask_tie_force(st) for st in states if st)
+
+
 def run_cases(building, lvs, states, ensemble=None):
     """One row per record at an intensity level (lvs: assessment.levels()) and storey, and the
     ensemble outcomes of each row."""
     walls = storey_walls(building)
-    tie_forces = any(limits.ask_tie_force(st) for st in states if st)  # one more run each, where asked for
+    tie_forces = asks_tie_forces(states)
 
     def one(lv):
-        result, _ = monolithic.simulate_building(building, lv.record, filter_floor=False, tie_forces=tie_forces)
+        result, _ = monolithic.simulate_building(building, lv.record, **_nominal_checks(tie_forces))
         members = (ens.building_members(building, lv.record, ensemble, float(lv.record.t[-1]), tie_forces)
                    if ensemble is not None else [None] * len(walls))
         rows = []

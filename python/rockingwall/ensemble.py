@@ -227,13 +227,22 @@ def _member_wall(wall, f):
                                overburden=wall.overburden * f["psi"], e_r=float(np.clip(wall.e_r + f["er"], 0.0, 1.0)))
 
 
+def member_runs(with_tie_force=False):
+    """(fewest, most) scene runs of one member of scene (b) or (c) (monolithic.respond_runs)."""
+    return monolithic.respond_runs(**_member_checks(with_tie_force))
+
+
+def _member_checks(with_tie_force):
+    return dict(filter_floor=False, tie_forces=with_tie_force)
+
+
 def _scene_run(spec, params, record, scale, t_end, with_tie_force=False):
     """(peak_s1, peak_s2, peak_F_top, collapsed, t_collapse) per storey, or None for a run that
     failed (the solver refused it or its energy balance did not close). with_tie_force: the
     standing walls' tie forces from a second run (tie_force.sample), else NaN."""
     member = dataclasses.replace(record, ag=record.ag * float(scale))
     try:
-        result, _ = monolithic.respond(spec, params, member, t_end=t_end, filter_floor=False, tie_forces=with_tie_force)
+        result, _ = monolithic.respond(spec, params, member, t_end=t_end, **_member_checks(with_tie_force))
     except (BuildingError, RuntimeError):
         return None
     return [(s.peak_s1_m, s.peak_s2_m, s.tie_force_or_nan, s.collapsed,

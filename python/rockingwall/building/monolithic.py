@@ -201,6 +201,15 @@ def sampled(spec, record, t_end, rtol, solver, floor, ties):
             tie_force.sample(spec, record, t_end, rtol, solver) if ties else None)
 
 
+def respond_runs(check_sensitivity=False, filter_floor=True, tie_forces=False):
+    """(fewest, most) scene runs respond makes with these options: the main run, the sensitivity
+    check's two, and the dense run for the floors or the ties, which floor_acc.sample_histories
+    repeats at a finer sampling up to floor_acc.REFINEMENTS times."""
+    dense = bool(filter_floor or tie_forces)
+    fewest = 1 + len(SENSITIVITY_SCALES) * bool(check_sensitivity) + dense
+    return fewest, fewest + floor_acc.REFINEMENTS * dense
+
+
 def respond(spec, wall_params_list, record, t_end=None, rtol=1e-8, t_out=None, solver=None, check_sensitivity=False,
             filter_floor=True, executor=None, tie_forces=False):
     """Runs a Spec under a record: (BuildingResult, Histories).

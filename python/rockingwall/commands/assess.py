@@ -162,7 +162,7 @@ def wall_study(args):
                    if (diaphragm is not None or f not in DIAPHRAGM_FIELDS) and (has_spring or f != "Kd")
                    and (hysteretic or f not in HYSTERETIC_FIELDS))
     return Study(run, states, head, scene, wall.describe(with_kd=False), assessment.KD_COLUMN, wall,
-                 spread_fields=varied, slow_note=cc.diaphragm_slow_note(wall, diaphragm, tie, len(kds)))
+                 spread_fields=varied, slow_note=cc.diaphragm_slow_note(wall, diaphragm, tie, len(kds), states))
 
 
 def building_study(args):
@@ -184,7 +184,8 @@ def building_study(args):
     varied = tuple(f for f in SPREAD_FIELDS if hysteretic or f not in HYSTERETIC_FIELDS)
 
     def slow_note(cases, ensemble):
-        return cc.slow_scene_note(monolithic.building_spec(building), cases, ensemble,
+        runs = tuple(cases * n for n in assessment_building.case_runs(states, ensemble))
+        return cc.slow_scene_note(monolithic.building_spec(building), runs,
                                   f"a building with {building.diaphragm_law} diaphragms", 'law = "bilinear"')
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
                  spread_fields=varied, slow_note=slow_note)

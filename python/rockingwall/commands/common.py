@@ -170,33 +170,40 @@ def _in_range(value, key, option, unit):
     return value
 
 
-def slow_scene_note(spec, cases, ensemble, what, bilinear):
+def slow_scene_note(spec, runs, what, bilinear):
     """What the runs of a scene the exact engine does not cover will cost, said before they start
     (None where it covers it): CVODES takes seconds a run where the exact engine takes
-    milliseconds. spec: the scene solver's Spec; cases: how many it runs, each once and once per
-    member of `ensemble` (None: no ensemble); what: the scene with its law ('a building with
-    boucWen diaphragms'); bilinear: how the user asks for the bilinear law, which the exact engine runs."""
+    milliseconds. spec: the scene solver's Spec; runs: (fewest, most) of them (most: where every
+    dense run is refined); what: the scene with its law ('a building with boucWen diaphragms');
+    bilinear: how the user asks for the bilinear law, which the exact engine runs."""
     from .. import scene_engine  # the scene solver's library: only for the scenes it runs
     covered, why = scene_engine.exact_covers(spec)
     if covered:
         return None
     if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
         why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
-    runs = cases * (1 + (ensemble.size if ensemble else 0))
-    return f"{runs} run{'' if runs == 1 else 's'} of {what}, on CVODES: seconds a run ({why})"
+    fewest, most = runs
+    count = f"{fewest} run{'' if fewest == 1 else 's'}" if fewest == most else f"{fewest} to {most} runs"
+    return f"{count} of {what}, on CVODES: seconds a run ({why})"
 
 
-def diaphragm_slow_note(wall, diaphragm, tie, scenes_per_case=1):
+def diaphragm_slow_note(wall, diaphragm, tie, scenes_per_case=1, states=()):
     """slow_scene_note of a wall under `diaphragm` as a function (cases, ensemble), each case run
-    for `scenes_per_case` diaphragms (assess's K_d values); None for the paper's scene (the exact
+    for `scenes_per_case` diaphragms (assess's K_d values) with its checks and its members
+    (api.under_diaphragm_runs; `states`: the limit states); None for the paper's scene (the exact
     engine, or fmi2sim by choice)."""
     if diaphragm is None:
         return None
-    from ..building import monolithic  # the scene solver: only for a diaphragm with mass
+    from .. import api  # the scene solver: only for a diaphragm with mass
+    from ..building import monolithic
     spec = monolithic.wall_under_diaphragm_spec(wall.params, diaphragm, tie)
     what = f"a wall under a {diaphragm.law} diaphragm"
-    return lambda cases, ensemble: slow_scene_note(spec, cases * scenes_per_case, ensemble, what,
-                                                   "--diaphragm-law bilinear")
+
+    def note_for(cases, ensemble):
+        per_case = api.under_diaphragm_runs(ensemble, states)
+        return slow_scene_note(spec, tuple(cases * scenes_per_case * n for n in per_case), what,
+                               "--diaphragm-law bilinear")
+    return note_for
 
 
 def note(message):
