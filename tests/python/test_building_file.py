@@ -252,8 +252,9 @@ def test_an_implausible_number_is_warned_with_its_line_and_refused_with_strict(t
 
 @pytest.mark.parametrize("option, value, said", [
     ("--diaphragm-damping", "5", "--diaphragm-damping 5: must be in [0, 2] (a ratio: 5 % is 0.05 or 5%)"),
-    ("--tie", "0.5", "--tie 0.5 N/m per m: must be in [1, 1e12] N/m per m"),
-    ("--diaphragm-mass", "2e8kg/m", "--diaphragm-mass 2e+08 kg/m: must be in (0, 1e7) kg/m"),
+    ("--tie", "0.5", "--tie 0.5 N/m per m: must be in [1, 1e+12] N/m per m"),
+    ("--diaphragm-mass", "2e8kg/m", "--diaphragm-mass 2e+08 kg/m: must be in [1e-06, 1e+07] kg/m"),
+    ("--diaphragm-mass", "1e-7kg/m", "--diaphragm-mass 1e-07 kg/m: must be in [1e-06, 1e+07] kg/m"),
 ])
 def test_a_diaphragm_option_out_of_range_is_named_alone(option, value, said, capsys):
     """One of --diaphragm-mass, --diaphragm-damping and --tie out of range was refused with all three
@@ -261,3 +262,19 @@ def test_a_diaphragm_option_out_of_range_is_named_alone(option, value, said, cap
     args = ["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-mass", "200kg/m", "gaussian"]
     assert cli.main(args + [option, value]) == 2
     assert capsys.readouterr().err.strip() == f"rockingwall: error: {said}"
+
+
+@pytest.mark.parametrize("key, option, unit", [("mass", "--diaphragm-mass", "kg/m"), ("damping", "--diaphragm-damping", ""),
+                                               ("tie", "--tie", "N/m/m")])
+def test_the_diaphragm_options_take_the_building_files_ranges(key, option, unit, capsys):
+    """The command line took a diaphragm mass in (0, 1e7) kg/m where the building file takes
+    [1e-6, 1e7]: a mass of 1e-7 ran from the command line and 1e7 was refused, the file the other
+    way round. The command line now takes each end of the file's range (building_file.RANGES) and
+    refuses a step past it."""
+    args = ["run", "--wall", "paper1", "--Kd", "50kN/m/m", "--diaphragm-mass", "200kg/m", "gaussian", "--pga", "0.01",
+            "--stop-time", "0.05", "--json"]
+    low, high = building_file.RANGES[key]
+    for value, ok in ((low, True), (high, True), (low * (1 - 1e-3) if low else -1e-3, False), (high * (1 + 1e-3), False)):
+        code = cli.main(args + [option, f"{value!r}{unit}"])
+        capsys.readouterr()
+        assert code == (0 if ok else 2), (option, value)

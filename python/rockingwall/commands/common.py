@@ -133,13 +133,10 @@ def diaphragm_from_args(args, wall):
         return None, tie
     if int(wall.params["support"]) != SUPPORTS["flexibleTop"]:
         raise ValueError("--diaphragm-mass: a diaphragm holds the wall's top (support flexibleTop)")
-    mass = units.parse(args.diaphragm_mass, "kg/m", "--diaphragm-mass")
-    for ok, what in ((0 < mass < 1e7, f"--diaphragm-mass {mass:g} kg/m: must be in (0, 1e7) kg/m"),
-                     (0 <= damping <= 2, f"--diaphragm-damping {damping:g}: must be in [0, 2] (a ratio: 5 % is "
-                                         "0.05 or 5%)"),
-                     (1 <= tie <= 1e12, f"--tie {tie:g} N/m per m: must be in [1, 1e12] N/m per m")):
-        if not ok:
-            raise ValueError(what)
+    mass = _in_range(units.parse(args.diaphragm_mass, "kg/m", "--diaphragm-mass"), "mass", "--diaphragm-mass",
+                     " kg/m")
+    _in_range(damping, "damping", "--diaphragm-damping", "", " (a ratio: 5 % is 0.05 or 5%)")
+    _in_range(tie, "tie", "--tie", " N/m per m")
     return Diaphragm(stiffness=wall.params["Kd"], mass=mass, damping=damping, **_diaphragm_law(args)), tie
 
 
@@ -163,10 +160,11 @@ def _diaphragm_law(args):
     return {"law": law, "yield_force": yield_force, "post_yield": post_yield}
 
 
-def _in_range(value, key, option, unit):
+def _in_range(value, key, option, unit, hint=""):
+    """value, if within the building file's range for `key`."""
     low, high = RANGES[key]
     if not low <= value <= high:
-        raise ValueError(f"{option} {value:g}{unit}: must be in [{low:g}, {high:g}]{unit}")
+        raise ValueError(f"{option} {value:g}{unit}: must be in [{low:g}, {high:g}]{unit}{hint}")
     return value
 
 
