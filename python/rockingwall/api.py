@@ -149,9 +149,7 @@ def under_diaphragm_runs(ensemble=None, states=()):
     """(fewest, most) scene runs of one simulate() of a wall under a diaphragm with mass: its own
     (DIAPHRAGM_CHECKS) and, with an ensemble, its members' (their tie forces too where one of the
     limit states `states` is on F_top)."""
-    size = ensemble.size if ensemble is not None else 0
-    own, member = monolithic.respond_runs(**DIAPHRAGM_CHECKS), ens.member_runs(limits.ask_tie_force(states))
-    return tuple(n + size * m for n, m in zip(own, member))
+    return ens.with_members(monolithic.respond_runs(**DIAPHRAGM_CHECKS), ensemble, limits.ask_tie_force(states))
 
 
 def _under_diaphragm(wall, record, t_end, grid, rtol, diaphragm, tie):

@@ -30,9 +30,7 @@ def case_runs(states, ensemble=None):
     """(fewest, most) scene runs of one case of run_cases: its nominal run (and its tie-force run,
     where a limit state asks for one) and its members'."""
     tie_forces = asks_tie_forces(states)
-    size = ensemble.size if ensemble is not None else 0
-    nominal = monolithic.respond_runs(**_nominal_checks(tie_forces))
-    return tuple(n + size * m for n, m in zip(nominal, ens.member_runs(tie_forces)))
+    return ens.with_members(monolithic.respond_runs(**_nominal_checks(tie_forces)), ensemble, tie_forces)
 
 
 def _nominal_checks(tie_forces):

@@ -227,9 +227,12 @@ def _member_wall(wall, f):
                                overburden=wall.overburden * f["psi"], e_r=float(np.clip(wall.e_r + f["er"], 0.0, 1.0)))
 
 
-def member_runs(with_tie_force=False):
-    """(fewest, most) scene runs of one member of scene (b) or (c) (monolithic.respond_runs)."""
-    return monolithic.respond_runs(**_member_checks(with_tie_force))
+def with_members(own, ensemble, with_tie_force=False):
+    """(fewest, most) scene runs of a case of scene (b) or (c): its own `own` (fewest, most) and
+    each member's of `ensemble` (None: none; monolithic.respond_runs of a member's checks)."""
+    size = ensemble.size if ensemble is not None else 0
+    member = monolithic.respond_runs(**_member_checks(with_tie_force))
+    return tuple(n + size * m for n, m in zip(own, member))
 
 
 def _member_checks(with_tie_force):
