@@ -14,7 +14,9 @@ its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
   stiffness times 1 m, post-yield ratio 0.1), which only CVODES solves, at rtol 1e-8 and 1e-6, with
   its method (Adams) and with BDF; the same scene with bilinear diaphragms on the exact engine,
   beside CVODES on the law's rate form; and `rockingwall building`'s four runs of the Bouc-Wen
-  scene under the record (wall-clock), one after another and on threads.
+  scene under the record (wall-clock), one after another and on threads;
+- light roofs: the house with its roof's mass down to the building file's least, 1e-6 kg/m (a mode
+  of 1e7 rad/s), on the exact engine, beside the 200-kg/m roof.
 Each scene: the exact engine (the best CPU time of 5 calls in-process) and CVODES (rtol 1e-8, one
 call), their peaks' largest relative difference, and the floor: the arithmetic the exact engine's
 method cannot skip at the steps and events it counted. Per record interval one exact propagation
@@ -113,6 +115,27 @@ def print_bilinear(t, ag, calls):
     print("peaks: the largest relative difference of peak s1, s2 of CVODES against the exact engine")
 
 
+def light_roof(tie, mass):
+    """the house with its roof's mass taken to `mass` kg/m at the same damping ratio"""
+    spec = house(tie)
+    roof = spec.storeys[1]
+    roof = dataclasses.replace(roof, md=mass, cd=roof.cd * np.sqrt(mass / roof.md))
+    return dataclasses.replace(spec, storeys=(spec.storeys[0], roof))
+
+
+def print_light_roofs(t, ag, calls):
+    """the house as its roof's mass goes to the building file's least (1e-6 kg/m, a mode of 1e7
+    rad/s): the exact engine's time (best of `calls`) beside the 200-kg/m roof's"""
+    print("house, the stiff tie, the roof's mass to 1e-6 kg/m: the exact engine (best of calls)")
+    print(f"{'roof [kg/m]':>11} | {'exact ms':>8} {'x 200':>6} | {'steps':>7} {'events':>6}")
+    base = None
+    for mass in (200.0, 1e-2, 1e-4, 1e-6):
+        spec = light_roof(TIES[0], mass)
+        run, cpu = best_time(lambda: se.run(spec, t, ag, engine="exact"), calls)
+        base = base or cpu
+        print(f"{mass:>11g} | {cpu * 1e3:8.1f} {cpu / base:6.1f} | {run.steps:7d} {run.events:6d}")
+
+
 def print_building_runs(t, ag):
     """`rockingwall building`'s four runs under one record (the main one, the sensitivity check's two,
     the floors' and the ties' sampled one) on the hysteretic two-storey scene: wall-clock seconds
@@ -201,6 +224,7 @@ def main(argv=None):
           "events; peaks: the largest relative difference of peak s1, s2 against CVODES at rtol 1e-8")
     print_hysteretic(t, ag)
     print_bilinear(t, ag, a.calls)
+    print_light_roofs(t, ag, a.calls)
     print_building_runs(t, ag)
 
 

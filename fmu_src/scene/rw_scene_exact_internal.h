@@ -148,7 +148,7 @@ typedef struct {
  * `storey` inside it is bounded by `bound`; it is resolved on the exact series only if the peak
  * reached elsewhere stays under that bound (rw_scene_exact_peaks.c) */
 typedef struct {
-    double bound, h;
+    double bound, h, t1; /* t1: where the step ends (the rounding its halves' tables share) */
     int storey, kind, region;
     double xa0[SX_MAX_NA];
 } sx_doubt;
@@ -289,6 +289,9 @@ void sx_watch_lines(sx_run *R);
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
 /* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
+/* the modes' bound on |storey i's peak quantity `kind`| over a step of length h from xa0 if it may
+ * rise over that quantity's peak inside the step, else 0 (INFINITY: the region has no usable modes) */
+double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], int storey, int kind);
 /* the largest |value| of storey i's peak quantity `kind` over [0, 1] of a series, if over best */
 double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, int storey, int kind, double best);
 /* the work of the ground and of the dashpots over [0, u] of a series */

@@ -56,6 +56,33 @@ static double condition(const sx_region *r, const double *Vr, const double *Winv
     return nv * nw;
 }
 
+/* An eigenvector's length is dgeev's choice (unit 2-norm), and with modes of far apart speeds (a
+ * diaphragm of a few grams per metre: 1e7 rad/s beside the walls' 5) it leaves a slow mode's column
+ * of Vr large and its row of Winv small, and their norms' product (the condition) a billion where
+ * the basis is a few thousand. Each mode's column and row are scaled by the power of 2 that balances
+ * them: the coordinates' arithmetic is the same to the bit, and the condition the basis's own. */
+static void balance_modes(const sx_region *r, const double *wi, double *Vr, double *Winv)
+{
+    const int n = r->n;
+    int i, j, k;
+    for (j = 0; j < n; j++) {
+        const int last = j + (wi[j] != 0.0); /* a pair's two columns take one scale */
+        double col = 0.0, row = 0.0, d;
+        for (k = j; k <= last; k++)
+            for (i = 0; i < n; i++) {
+                col = fmax(col, fabs(Vr[i * n + k]) / r->scale[i]);
+                row = fmax(row, fabs(Winv[k * n + i]) * r->scale[i]);
+            }
+        d = col > 0.0 && row > 0.0 ? ldexp(1.0, (int)lround(0.5 * log2(row / col))) : 1.0;
+        for (k = j; k <= last; k++)
+            for (i = 0; i < n; i++) {
+                Vr[i * n + k] *= d;
+                Winv[k * n + i] /= d;
+            }
+        j = last;
+    }
+}
+
 /* the modal forcing of a column of Aa (the constant's or ag's) */
 static void modal_forcing(const sx_region *r, const sx_modes *m, int col, double complex *g)
 {
@@ -95,6 +122,7 @@ void sx_modes_build(sx_region *r)
     for (i = 0; i < n; i++)
         for (j = 0; j < n; j++) Winv[i * n + j] = i == j;
     if (sx_lu_solve(n, LU, Winv, n)) return;
+    balance_modes(r, wi, Vr, Winv);
     sx_transpose(n, n, Winv, m->Winv_cols);
     m->cond = condition(r, Vr, Winv);
     if (!(m->cond < SX_MODES_COND)) return;

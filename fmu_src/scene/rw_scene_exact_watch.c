@@ -300,6 +300,15 @@ static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double
     return 0;
 }
 
+double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], int storey, int kind)
+{
+    sx_lopoly P[SX_MAX_F], p;
+    storey_polys S[RW_SCENE_MAX_STOREYS];
+    if (!sx_modes_polys(r, h, xa0, P)) return INFINITY;
+    storey_view(R, r, P, S);
+    return quantity(R, storey, &S[storey], kind, &p) ? may_rise_to(&p, *sx_peak_of(R->res, storey, kind)) : 0.0;
+}
+
 /* the crossings first: a peak that may rise costs a doubt, not a halving */
 int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[])
 {
