@@ -62,6 +62,10 @@ typedef struct {
     int valid;       /* decomposed, and well enough conditioned to bound with */
     int count;
     int first[SX_MAX_N], pair[SX_MAX_N];
+    /* a nearly defective real pair kept as a block (rw_scene_exact_blocks.c): its two columns as a
+     * pair's, its motion y' = B y + forcing in them (B row-major), abs_lam and growth its ||B|| */
+    int block[SX_MAX_N];
+    double B[SX_MAX_N][4];
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
     double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
     /* functional f's share a of mode k by mode, the functionals contiguous (Re a, Im a, |a|): the
@@ -271,6 +275,14 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of);
  * fast modes' quasi-static part, with the slow modes' remainder and the fast modes' free motion as
  * the tail); 0 if the region has no usable modes */
 int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
+
+/* ---- nearly defective pairs of modes (rw_scene_exact_blocks.c) ---- */
+/* dgeev's basis Vr (row-major; eigenvalues wr + i wi) with its balanced inverse Winv: the real
+ * pair whose own condition is the worst made a block (blocked: 1 and 2 at its columns, moved to
+ * the end); 1 if one was, 0 if none can be */
+int sx_block_worst_pair(const sx_region *r, double *wr, double *wi, int *blocked, double *Vr, const double *Winv);
+/* the block at columns a, a + 1: B = Winv(rows a, a + 1) A Vr(columns a, a + 1), row-major */
+void sx_block_matrix(const sx_region *r, const double *Vr, const double *Winv, int a, double B[4]);
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
 /* the quiet test on given polynomials of the functionals over a step of length h from xa0 in the

@@ -61,12 +61,12 @@ static double condition(const sx_region *r, const double *Vr, const double *Winv
  * of Vr large and its row of Winv small, and their norms' product (the condition) a billion where
  * the basis is a few thousand. Each mode's column and row are scaled by the power of 2 that balances
  * them: the coordinates' arithmetic is the same to the bit, and the condition the basis's own. */
-static void balance_modes(const sx_region *r, const double *wi, double *Vr, double *Winv)
+static void balance_modes(const sx_region *r, const double *wi, const int *blocked, double *Vr, double *Winv)
 {
     const int n = r->n;
     int i, j, k;
     for (j = 0; j < n; j++) {
-        const int last = j + (wi[j] != 0.0); /* a pair's two columns take one scale */
+        const int last = j + (wi[j] != 0.0 || blocked[j] == 1); /* a pair's or block's columns take one scale */
         double col = 0.0, row = 0.0, d;
         for (k = j; k <= last; k++)
             for (i = 0; i < n; i++) {
@@ -110,32 +110,59 @@ static void shares(const sx_region *r, sx_modes *m, const double *Vr)
         }
 }
 
+/* Winv = Vr^-1, both balanced, and their condition: 0, or 1 if Vr is singular */
+static int inverse_basis(const sx_region *r, const double *wi, const int *blocked, double *Vr, double *Winv,
+                         double *cond)
+{
+    const int n = r->n;
+    double LU[SX_MAX_N * SX_MAX_N];
+    int i, j;
+    memcpy(LU, Vr, sizeof(double) * (size_t)(n * n));
+    for (i = 0; i < n; i++)
+        for (j = 0; j < n; j++) Winv[i * n + j] = i == j;
+    if (sx_lu_solve(n, LU, Winv, n)) return 1;
+    balance_modes(r, wi, blocked, Vr, Winv);
+    *cond = condition(r, Vr, Winv);
+    return 0;
+}
+
+/* mode k from column i (a real eigenvalue, a complex pair, or a block: its two columns as a
+ * pair's): the column the next mode starts after */
+static int add_mode(const sx_region *r, sx_modes *m, int i, const double *wr, const double *wi, const int *blocked,
+                    const double *Vr, const double *Winv)
+{
+    const int k = m->count++;
+    m->first[k] = i;
+    m->pair[k] = wi[i] != 0.0 || blocked[i];
+    m->block[k] = blocked[i] != 0;
+    if (m->block[k]) {
+        double *B = m->B[k];
+        sx_block_matrix(r, Vr, Winv, i, B);
+        m->lam[k] = m->inv_lam[k] = 0.0; /* bounded as a slow mode is, with ||B|| (Frobenius) for |lam| */
+        m->abs_lam[k] = m->growth[k] = sqrt(B[0] * B[0] + B[1] * B[1] + B[2] * B[2] + B[3] * B[3]);
+        return i + 1;
+    }
+    m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
+    m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
+    m->abs_lam[k] = hypot(wr[i], wi[i]);
+    m->growth[k] = wr[i] > 0.0 ? wr[i] : 0.0;
+    return m->pair[k] ? i + 1 : i;
+}
+
 void sx_modes_build(sx_region *r)
 {
     sx_modes *m = &r->modes;
     const int n = r->n;
-    double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], LU[SX_MAX_N * SX_MAX_N], Winv[SX_MAX_N * SX_MAX_N];
-    int i, j;
+    double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], Winv[SX_MAX_N * SX_MAX_N];
+    int blocked[SX_MAX_N] = {0}, i;
     memset(m, 0, sizeof *m);
-    if (decompose(r, wr, wi, Vr)) return;
-    memcpy(LU, Vr, sizeof(double) * (size_t)(n * n));
-    for (i = 0; i < n; i++)
-        for (j = 0; j < n; j++) Winv[i * n + j] = i == j;
-    if (sx_lu_solve(n, LU, Winv, n)) return;
-    balance_modes(r, wi, Vr, Winv);
-    sx_transpose(n, n, Winv, m->Winv_cols);
-    m->cond = condition(r, Vr, Winv);
+    if (decompose(r, wr, wi, Vr) || inverse_basis(r, wi, blocked, Vr, Winv, &m->cond)) return;
+    /* nearly defective pairs as blocks, the worst first, while the basis is too ill-conditioned */
+    while (!(m->cond < SX_MODES_COND) && sx_block_worst_pair(r, wr, wi, blocked, Vr, Winv))
+        if (inverse_basis(r, wi, blocked, Vr, Winv, &m->cond)) return;
     if (!(m->cond < SX_MODES_COND)) return;
-    for (i = 0; i < n; i++) {
-        const int k = m->count++;
-        m->first[k] = i;
-        m->pair[k] = wi[i] != 0.0;
-        m->lam[k] = wr[i] + I * wi[i]; /* the first of a pair has the positive imaginary part */
-        m->inv_lam[k] = m->lam[k] != 0.0 ? 1.0 / m->lam[k] : 0.0;
-        m->abs_lam[k] = hypot(wr[i], wi[i]);
-        m->growth[k] = wr[i] > 0.0 ? wr[i] : 0.0;
-        if (m->pair[k]) i++;
-    }
+    sx_transpose(n, n, Winv, m->Winv_cols);
+    for (i = 0; i < n; i++) i = add_mode(r, m, i, wr, wi, blocked, Vr, Winv);
     modal_forcing(r, m, r->n + 2, m->g0);
     modal_forcing(r, m, r->n, m->g1);
     shares(r, m, Vr);
@@ -161,6 +188,20 @@ static double mag(double complex z) { return sqrt(creal(z) * creal(z) + cimag(z)
 /* |Re z| + |Im z| >= |z|: a size for the margins, without a square root */
 static double size_of(double complex z) { return fabs(creal(z)) + fabs(cimag(z)); }
 
+/* a slow mode's quadratic z0 + d1 tau + d2 tau^2/2 over the step and its remainder, from wh = the
+ * mode's rate times h and grow = its growth over the step */
+static mode_step quadratic(double complex z0, double complex d1, double complex d2, double wh, double grow, double h)
+{
+    const double r3 = wh * mag(d2) * grow * h * h;
+    mode_step s;
+    s.c[0] = z0;
+    s.c[1] = d1 * h;
+    s.c[2] = 0.5 * d2 * h * h;
+    s.bound = r3 * (1.0 / 6.0);
+    s.dbound = 0.5 * r3;
+    return s;
+}
+
 /* The two ways to bound a mode over a step, whichever is tighter: a fast mode's quasi-static part
  * (exact while the input is linear) with its free oscillation, which keeps its size (times the
  * growth e^(Re lam h)) as a band; a slow mode's quadratic z0 + z'(0) tau + z''(0) tau^2/2 with the
@@ -170,13 +211,7 @@ static mode_step mode_over(const sx_modes *m, int k, double complex z0, double a
     const double complex lam = m->lam[k], b0 = m->g0[k] + m->g1[k] * ag0, b1 = m->g1[k] * slope;
     const double grow = m->growth[k] > 0.0 ? exp(m->growth[k] * h) : 1.0, wh = m->abs_lam[k] * h;
     const double complex d1 = lam * z0 + b0, d2 = lam * d1 + b1;
-    const double r3 = wh * mag(d2) * grow * h * h;
-    mode_step s;
-    s.c[0] = z0;
-    s.c[1] = d1 * h;
-    s.c[2] = 0.5 * d2 * h * h;
-    s.bound = r3 * (1.0 / 6.0);
-    s.dbound = 0.5 * r3;
+    mode_step s = quadratic(z0, d1, d2, wh, grow, h);
     if (wh > 0.5) {
         const double complex il = m->inv_lam[k], qs = -(b0 + b1 * il) * il;
         const double band = mag(z0 - qs) * grow;
@@ -189,6 +224,23 @@ static mode_step mode_over(const sx_modes *m, int k, double complex z0, double a
         }
     }
     return s;
+}
+
+/* a block over the step: y' = B y + b0 + b1 t in its two real coordinates (z = y_a - i y_b, as a
+ * pair's), its quadratic in time with the remainder ||B|| ||y''(0)|| e^(||B|| h) tau^3/6 in the
+ * 2-norm (y^(3) = B y'' while the input is linear), which bounds each functional's share through
+ * the share's modulus as a pair's does */
+static double complex apply_block(const double B[4], double complex z)
+{
+    const double a = creal(z), b = -cimag(z);
+    return (B[0] * a + B[1] * b) - I * (B[2] * a + B[3] * b);
+}
+
+static mode_step block_over(const sx_modes *m, int k, double complex z0, double ag0, double slope, double h)
+{
+    const double complex b0 = m->g0[k] + m->g1[k] * ag0, b1 = m->g1[k] * slope;
+    const double complex d1 = apply_block(m->B[k], z0) + b0, d2 = apply_block(m->B[k], d1) + b1;
+    return quadratic(z0, d1, d2, m->abs_lam[k] * h, exp(m->abs_lam[k] * h), h);
 }
 
 int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F])
@@ -208,7 +260,7 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
     }
     for (k = 0; k < m->count; k++) {
         const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
-        const mode_step s = mode_over(m, k, z0, ag0, slope, h);
+        const mode_step s = m->block[k] ? block_over(m, k, z0, ag0, slope, h) : mode_over(m, k, z0, ag0, slope, h);
         const double cr0 = creal(s.c[0]), cr1 = creal(s.c[1]), cr2 = creal(s.c[2]);
         const double ci0 = cimag(s.c[0]), ci1 = cimag(s.c[1]), ci2 = cimag(s.c[2]);
         const double mode_size = size_of(s.c[0]) + size_of(s.c[1]) + size_of(s.c[2]) + s.bound;
