@@ -12,19 +12,28 @@
 #include <math.h>
 #include <string.h>
 
-#define REFINE_ITERATIONS 3
+#define REFINE_ITERATIONS 6
+/* a mode is nearly defective when its own condition is past this (a sound one's is a few hundred:
+ * blocking it would only take its band away) */
+#define DEFECTIVE_CONDITION 1e4
+/* the plane is taken as invariant when A moves it out of itself by at most this share of ||A||
+ * (in the balanced norm): rounding (what is left couples the block to the other modes, and their
+ * bounds take it, sx_block_coupling), against a plane that is part of a larger cluster (two walls'
+ * mechanisms at once: four eigenvalues at 0) */
+#define INVARIANCE_TOL 1e-9
 
-/* column j's largest entry in the balanced norm, and row j's of the inverse: their product is
- * mode j's own condition */
-static double own_condition(const sx_region *r, const double *Vr, const double *Winv, int j)
+/* columns j..last's largest entry in the balanced norm times rows j..last's of the inverse: the
+ * mode's own condition (a pair's jointly: one column may hold the large part and the other row) */
+static double own_condition(const sx_region *r, const double *Vr, const double *Winv, int j, int last)
 {
     const int n = r->n;
     double col = 0.0, row = 0.0;
-    int i;
-    for (i = 0; i < n; i++) {
-        col = fmax(col, fabs(Vr[i * n + j]) / r->scale[i]);
-        row = fmax(row, fabs(Winv[j * n + i]) * r->scale[i]);
-    }
+    int i, k;
+    for (k = j; k <= last; k++)
+        for (i = 0; i < n; i++) {
+            col = fmax(col, fabs(Vr[i * n + k]) / r->scale[i]);
+            row = fmax(row, fabs(Winv[k * n + i]) * r->scale[i]);
+        }
     return col * row;
 }
 
@@ -40,11 +49,12 @@ static int worst_pair(const sx_region *r, const double *wr, const double *wi, co
     *worst = *partner = -1;
     for (j = 0; j < n; j++) {
         const int pair = wi[j] != 0.0;
-        const double c = fmax(own_condition(r, Vr, Winv, j), pair ? own_condition(r, Vr, Winv, j + 1) : 0.0);
+        const double c = own_condition(r, Vr, Winv, j, j + pair);
         if (!blocked[j] && c > most) most = c, *worst = j, *partner = pair ? j + 1 : -1;
         j += pair;
     }
-    if (*worst < 0 || *partner >= 0) return *worst >= 0;
+    if (*worst < 0 || most < DEFECTIVE_CONDITION) return 0;
+    if (*partner >= 0) return 1;
     for (j = 0; j < n; j++)
         if (j != *worst && wi[j] == 0.0 && !blocked[j] && fabs(wr[j] - wr[*worst]) < nearest)
             nearest = fabs(wr[j] - wr[*worst]), *partner = j;
@@ -113,6 +123,31 @@ static int refine(const sx_region *r, const double *wr, const double *wi, int a,
     return 0;
 }
 
+/* how far A takes the orthonormal plane (x, y) out of itself, over ||A||, in the balanced norm:
+ * the largest entry of S^-1 (A X - X B) with B = X~^T S^-1 A X (X~ = S^-1 X orthonormal) */
+static double invariance_residual(const sx_region *r, const double *x, const double *y)
+{
+    const int n = r->n;
+    double AX[SX_MAX_N * 2], B[4] = {0.0, 0.0, 0.0, 0.0}, worst = 0.0;
+    int i, j, c;
+    for (i = 0; i < n; i++)
+        for (c = 0; c < 2; c++) {
+            const double *v = c ? y : x;
+            double sum = 0.0;
+            for (j = 0; j < n; j++) sum += r->Aa[i * r->na + j] * v[j];
+            AX[2 * i + c] = sum / r->scale[i];
+        }
+    for (i = 0; i < n; i++)
+        for (c = 0; c < 2; c++) {
+            B[c] += x[i] / r->scale[i] * AX[2 * i + c];
+            B[2 + c] += y[i] / r->scale[i] * AX[2 * i + c];
+        }
+    for (i = 0; i < n; i++)
+        for (c = 0; c < 2; c++)
+            worst = fmax(worst, fabs(AX[2 * i + c] - (x[i] * B[c] + y[i] * B[2 + c]) / r->scale[i]));
+    return worst / r->norm;
+}
+
 int sx_block_worst_pair(const sx_region *r, double *wr, double *wi, int *blocked, double *Vr, const double *Winv)
 {
     const int n = r->n;
@@ -121,7 +156,7 @@ int sx_block_worst_pair(const sx_region *r, double *wr, double *wi, int *blocked
     if (!worst_pair(r, wr, wi, blocked, Vr, Winv, &worst, &partner)) return 0;
     move_to_end(n, worst, partner, wr, wi, blocked, Vr);
     for (i = 0; i < n; i++) x[i] = Vr[i * n + n - 2], y[i] = Vr[i * n + n - 1];
-    if (refine(r, wr, wi, n - 2, x, y)) return 0;
+    if (refine(r, wr, wi, n - 2, x, y) || !(invariance_residual(r, x, y) <= INVARIANCE_TOL)) return 0;
     for (i = 0; i < n; i++) Vr[i * n + n - 2] = x[i], Vr[i * n + n - 1] = y[i];
     blocked[n - 2] = 1, blocked[n - 1] = 2;
     return 1;
@@ -142,4 +177,31 @@ void sx_block_matrix(const sx_region *r, const double *Vr, const double *Winv, i
             B[2 * i + c] = 0.0;
             for (j = 0; j < n; j++) B[2 * i + c] += Winv[(a + i) * n + j] * AV[2 * j + c];
         }
+}
+
+void sx_block_coupling(const sx_region *r, const double *Vr, const double *Winv, sx_modes *m)
+{
+    const int n = r->n;
+    int b, k, i, j, c;
+    for (k = 0; k < m->count; k++) m->coupling[k] = 0.0;
+    for (b = 0; b < m->count; b++) {
+        double AX[SX_MAX_N * 2], E[SX_MAX_N * 2];
+        if (!m->block[b]) continue;
+        for (i = 0; i < n; i++)
+            for (c = 0; c < 2; c++) {
+                AX[2 * i + c] = 0.0;
+                for (j = 0; j < n; j++) AX[2 * i + c] += r->Aa[i * r->na + j] * Vr[j * n + m->first[b] + c];
+            }
+        for (i = 0; i < n; i++)
+            for (c = 0; c < 2; c++) {
+                E[2 * i + c] = 0.0;
+                for (j = 0; j < n; j++) E[2 * i + c] += Winv[i * n + j] * AX[2 * j + c];
+            }
+        for (k = 0; k < m->count; k++) {
+            double sq = 0.0;
+            if (k == b) continue;
+            for (i = m->first[k]; i <= m->first[k] + m->pair[k]; i++) sq += E[2 * i] * E[2 * i] + E[2 * i + 1] * E[2 * i + 1];
+            m->coupling[k] += sqrt(sq);
+        }
+    }
 }

@@ -64,8 +64,9 @@ typedef struct {
     int first[SX_MAX_N], pair[SX_MAX_N];
     /* a nearly defective real pair kept as a block (rw_scene_exact_blocks.c): its two columns as a
      * pair's, its motion y' = B y + forcing in them (B row-major), abs_lam and growth its ||B|| */
-    int block[SX_MAX_N];
+    int block[SX_MAX_N], blocks;
     double B[SX_MAX_N][4];
+    double coupling[SX_MAX_N]; /* how hard the blocks' motion drives mode k (sx_block_coupling) */
     double complex lam[SX_MAX_N], inv_lam[SX_MAX_N], g0[SX_MAX_N], g1[SX_MAX_N];
     double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
     /* functional f's share a of mode k by mode, the functionals contiguous (Re a, Im a, |a|): the
@@ -283,6 +284,9 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
 int sx_block_worst_pair(const sx_region *r, double *wr, double *wi, int *blocked, double *Vr, const double *Winv);
 /* the block at columns a, a + 1: B = Winv(rows a, a + 1) A Vr(columns a, a + 1), row-major */
 void sx_block_matrix(const sx_region *r, const double *Vr, const double *Winv, int a, double B[4]);
+/* each mode's coupling to the blocks: the 2-norm of its rows of Winv A Vr(a block's columns),
+ * summed over the blocks (the blocks' planes are invariant to rounding only) */
+void sx_block_coupling(const sx_region *r, const double *Vr, const double *Winv, sx_modes *m);
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
 /* the quiet test on given polynomials of the functionals over a step of length h from xa0 in the

@@ -135,6 +135,7 @@ static int add_mode(const sx_region *r, sx_modes *m, int i, const double *wr, co
     m->first[k] = i;
     m->pair[k] = wi[i] != 0.0 || blocked[i];
     m->block[k] = blocked[i] != 0;
+    m->blocks += m->block[k];
     if (m->block[k]) {
         double *B = m->B[k];
         sx_block_matrix(r, Vr, Winv, i, B);
@@ -166,6 +167,7 @@ void sx_modes_build(sx_region *r)
     modal_forcing(r, m, r->n + 2, m->g0);
     modal_forcing(r, m, r->n, m->g1);
     shares(r, m, Vr);
+    if (m->blocks) sx_block_coupling(r, Vr, Winv, m);
     m->valid = 1;
 }
 
@@ -243,15 +245,39 @@ static mode_step block_over(const sx_modes *m, int k, double complex z0, double 
     return quadratic(z0, d1, d2, m->abs_lam[k] * h, exp(m->abs_lam[k] * h), h);
 }
 
+/* the largest size the blocks' coordinates reach over the step, summed over the blocks */
+static double blocks_reach(const sx_modes *m, const double y[], double ag0, double slope, double h)
+{
+    double reach = 0.0;
+    int k;
+    for (k = 0; k < m->count; k++)
+        if (m->block[k]) {
+            const mode_step s = block_over(m, k, y[m->first[k]] - I * y[m->first[k] + 1], ag0, slope, h);
+            reach += size_of(s.c[0]) + size_of(s.c[1]) + size_of(s.c[2]) + s.bound;
+        }
+    return reach;
+}
+
+/* mode k driven by the blocks' rounding (a force of at most coupling x reach): what that adds to
+ * its motion over the step, and to its rate */
+static void driven(const sx_modes *m, int k, double reach, double h, mode_step *s)
+{
+    const double force = m->coupling[k] * reach, grow = m->growth[k] > 0.0 ? exp(m->growth[k] * h) : 1.0;
+    s->bound += force * h * grow;
+    s->dbound += force * (1.0 + m->abs_lam[k] * h) * grow;
+}
+
 int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F])
 {
     const sx_modes *m = &r->modes;
     const double ag0 = xa0[r->n], slope = xa0[r->n + 1];
     double y[SX_MAX_N], size[SX_MAX_F], c0[SX_MAX_F], c1[SX_MAX_F], c2[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F];
     const int nf = r->nf;
+    double reach = 0.0;
     int f, k;
     if (!m->valid) return 0;
     sx_matvec_cols(r->n, r->n, m->Winv_cols, xa0, y);
+    if (m->blocks) reach = blocks_reach(m, y, ag0, slope, h);
     for (f = 0; f < nf; f++) { /* the functionals' own terms in ag and the constant */
         c0[f] = r->F[f][r->n] * ag0 + r->F[f][r->n + 2];
         c1[f] = r->F[f][r->n] * slope * h;
@@ -260,7 +286,8 @@ int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P
     }
     for (k = 0; k < m->count; k++) {
         const double complex z0 = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
-        const mode_step s = m->block[k] ? block_over(m, k, z0, ag0, slope, h) : mode_over(m, k, z0, ag0, slope, h);
+        mode_step s = m->block[k] ? block_over(m, k, z0, ag0, slope, h) : mode_over(m, k, z0, ag0, slope, h);
+        if (m->blocks) driven(m, k, reach, h, &s);
         const double cr0 = creal(s.c[0]), cr1 = creal(s.c[1]), cr2 = creal(s.c[2]);
         const double ci0 = cimag(s.c[0]), ci1 = cimag(s.c[1]), ci2 = cimag(s.c[2]);
         const double mode_size = size_of(s.c[0]) + size_of(s.c[1]) + size_of(s.c[2]) + s.bound;
