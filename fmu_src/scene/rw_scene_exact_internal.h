@@ -241,6 +241,10 @@ double sx_region_energy(const sx_region *r, const double x[]);
  * rounding of the record's times); NULL if its memory could not be had (the caller takes the
  * step on the exact series instead) */
 sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
+/* exp(Aa h / 2^k) by columns for k = 0..levels, each na x na in Et in turn: the shortest from its
+ * table, the others by squaring it as sx_step_of squares a long table's; 0, or 1 if that table
+ * could not be had */
+int sx_halves_of(sx_region *r, double h, int levels, double tol, long stamp, double *Et);
 /* that rounding at time t */
 #define SX_TIME_TOL(t) (16.0 * DBL_EPSILON * fmax(fabs(t), 1.0))
 /* the Taylor series of the augmented state over a step of length L <= the region's limit */

@@ -9,6 +9,7 @@
  * so far for much of a record: it is what halved most intervals (docs/scenes.md). */
 #include "rw_scene_exact_internal.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -41,23 +42,55 @@ static void on_series(sx_run *R, const sx_region *r, const sx_doubt *d, const do
     }
 }
 
-/* The doubt's piece [0, h] from xa0, whose bound is over the peak: halved while it is longer than
- * the exact series' steps, each half's exact ends taken as peaks and the half dropped where the
- * modes' bound over it no longer rises over the peak. A fast mode (a diaphragm of a few grams per
- * metre) makes the series' steps a ten-thousandth of the record's: the halves find the peak in
- * a few dozen bounds where the series would take that many steps per interval. */
-static void resolve_piece(sx_run *R, sx_region *r, const sx_doubt *d, const double xa0[], double h, int level)
+/* the propagators over a doubt's halves, exp(Aa h / 2^k) for k = 0..levels (by columns), of the
+ * last doubt's region and length: the next doubts, mostly of the same record intervals, take them
+ * as they are. Built for them rather than as step tables: a doubt goes down some twenty halvings
+ * under a fast mode, which the tables' few slots would build again at every doubt. */
+typedef struct {
+    int region, levels;
+    double h;
+    double *Et;
+} halves;
+
+/* the halvings a piece of length h takes before the exact series' steps take it */
+static int levels_of(const sx_region *r, double h)
 {
+    int k = 0;
+    while (k < 40 && ldexp(h, -k) > 2.0 * sx_hmax(r)) k++;
+    return k;
+}
+
+/* the chain for doubt d: kept, or built (0: none could be) */
+static const halves *chain_for(sx_run *R, halves *c, const sx_doubt *d)
+{
+    sx_region *r = &R->regions[d->region];
+    const size_t nn = (size_t)(r->na * r->na);
+    const int levels = levels_of(r, d->h);
+    double *Et;
+    if (c->region == d->region && c->levels == levels && fabs(c->h - d->h) <= SX_TIME_TOL(d->t1)) return c;
+    c->region = -1;
+    if (!(Et = (double *)realloc(c->Et, (size_t)(levels + 1) * nn * sizeof(double)))) return NULL;
+    c->Et = Et;
+    if (sx_halves_of(r, d->h, levels, SX_TIME_TOL(d->t1), R->stamp, c->Et)) return NULL;
+    c->region = d->region, c->levels = levels, c->h = d->h;
+    return c;
+}
+
+/* The doubt's piece `level` [0, h] from xa0, whose bound is over the peak: halved while it is
+ * longer than the exact series' steps, each half's exact ends taken as peaks and the half dropped
+ * where the modes' bound over it no longer rises over the peak. A fast mode (a diaphragm of a few
+ * grams per metre) makes the series' steps a ten-thousandth of the record's: the halves find the
+ * peak in a few dozen bounds where the series would take that many steps per interval. */
+static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const double xa0[], double h, int level)
+{
+    const sx_region *r = &R->regions[d->region];
     double mid[SX_MAX_NA];
     const double half = 0.5 * h;
-    const sx_step *st;
-    if (h <= 2.0 * sx_hmax(r) || level >= 40 || !r->modes.valid ||
-        !(st = sx_step_of(r, half, ldexp(SX_TIME_TOL(d->t1), -level - 1), R->stamp)))
-        return on_series(R, r, d, xa0, h);
-    sx_matvec_cols(r->na, r->na, st->Et, xa0, mid);
+    if (!c || level >= c->levels || !r->modes.valid) return on_series(R, r, d, xa0, h);
+    sx_matvec_cols(r->na, r->na, c->Et + (size_t)(level + 1) * (size_t)(r->na * r->na), xa0, mid);
     sx_watch_peaks_at(R, r, mid); /* the motion's own values: they may settle the halves */
-    if (sx_watch_peak_bound(R, r, half, xa0, d->storey, d->kind) > 0.0) resolve_piece(R, r, d, xa0, half, level + 1);
-    if (sx_watch_peak_bound(R, r, half, mid, d->storey, d->kind) > 0.0) resolve_piece(R, r, d, mid, half, level + 1);
+    if (sx_watch_peak_bound(R, r, half, xa0, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, xa0, half, level + 1);
+    if (sx_watch_peak_bound(R, r, half, mid, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, mid, half, level + 1);
 }
 
 static int larger_bound_first(const void *a, const void *b)
@@ -68,6 +101,7 @@ static int larger_bound_first(const void *a, const void *b)
 
 void sx_settle_doubts(sx_run *R, int region)
 {
+    halves chain = {-1, 0, 0.0, NULL};
     int k, kept = 0;
     if (region < 0) qsort(R->doubts, (size_t)R->ndoubts, sizeof *R->doubts, larger_bound_first);
     for (k = 0; k < R->ndoubts; k++) {
@@ -76,8 +110,9 @@ void sx_settle_doubts(sx_run *R, int region)
             R->doubts[kept++] = *d;
             continue;
         }
-        if (d->bound > *sx_peak_of(R->res, d->storey, d->kind)) resolve_piece(R, &R->regions[d->region], d, d->xa0, d->h, 0);
+        if (d->bound > *sx_peak_of(R->res, d->storey, d->kind)) resolve_piece(R, chain_for(R, &chain, d), d, d->xa0, d->h, 0);
     }
+    free(chain.Et);
     R->ndoubts = kept;
 }
 

@@ -277,3 +277,21 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
     st->h = h;
     return st;
 }
+
+int sx_halves_of(sx_region *r, double h, int levels, double tol, long stamp, double *Et)
+{
+    const int na = r->na;
+    const size_t nn = (size_t)(na * na);
+    double E[SX_MAX_NA * SX_MAX_NA], E2[SX_MAX_NA * SX_MAX_NA];
+    const sx_step *st = sx_step_of(r, ldexp(h, -levels), ldexp(tol, -levels), stamp);
+    int k;
+    if (!st) return 1;
+    memcpy(E, st->E, sizeof(double) * nn);
+    sx_transpose(na, na, E, Et + (size_t)levels * nn);
+    for (k = levels - 1; k >= 0; k--) { /* squared as a long table's E is (doubled) */
+        matmul(na, E, E, E2);
+        memcpy(E, E2, sizeof(double) * nn);
+        sx_transpose(na, na, E, Et + (size_t)k * nn);
+    }
+    return 0;
+}
