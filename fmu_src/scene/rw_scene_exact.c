@@ -15,9 +15,6 @@
 int rw_scene_exact_covers(const rw_scene_spec *spec, char *msg, size_t n)
 {
     int i;
-    if (spec->building.diaphragm_law != BD_ELASTIC && spec->building.diaphragm_law != BD_BILINEAR)
-        return snprintf(msg, n, "the exact engine takes linear and bilinear diaphragms only (diaphragm law %d is "
-                        "a smooth hysteresis, Bouc-Wen)", spec->building.diaphragm_law), RW_SCENE_UNSUPPORTED;
     if (!spec->rigid_in_plane && spec->building.storey_law != BD_ELASTIC)
         return snprintf(msg, n, "the exact engine takes linear in-plane walls only (storey law %d is hysteretic)",
                         spec->building.storey_law), RW_SCENE_UNSUPPORTED;
@@ -56,6 +53,7 @@ static int entered(sx_run *R)
 {
     sx_region *r = current(R);
     r->e_const = energy(R, R->t) - sx_region_energy(r, R->x);
+    R->work_hysteretic = 0.0;
     sx_bilinear_entered(R);
     return RW_SCENE_OK;
 }
@@ -122,6 +120,7 @@ int sx_handle_events(sx_run *R)
     if (R->t != R->last_event_t) R->same_instant = 0;
     R->last_event_t = R->t;
     sx_sync_hysteresis(R); /* the region left: its diaphragms' z and work */
+    R->z_next_valid = 0;   /* the rates jump: the Bouc-Wen fits start afresh */
     do {
         const double before = energy(R, R->t);
         flags = rw_scene_event_update(&R->sc, R->t, ag, R->x);
@@ -149,7 +148,7 @@ static void observe(sx_run *R, double t)
 {
     rw_scene_result *res = R->res;
     const sx_region *r = current(R);
-    const double e = sx_region_energy(r, R->x) + r->e_const;
+    const double e = sx_region_energy(r, R->x) + r->e_const + R->work_hysteretic;
     const double residual = e - res->energy_start - R->work_ground + R->work_damping + R->losses;
     track(&res->max_residual, residual);
     track(&res->max_work, R->work_ground);
@@ -219,12 +218,12 @@ static void free_run(sx_run *R)
 }
 
 /* how many regions the cache holds: SX_REGIONS, fewer where the largest region's tables would
- * take more than SX_CACHE_BYTES (every storey with a wall and a floor) */
+ * take more than SX_CACHE_BYTES (every storey with a wall, a floor and a z chain) */
 static int region_capacity(const rw_scene_spec *spec)
 {
-    const double na = 2.0 * 4.0 * spec->n_storeys + 3.0, n = na - 3.0;
-    const double per = (double)sizeof(sx_region) +
-                       8.0 * (2.0 * na * na + SX_STEPS * (4.0 * na * na + n * na + 2.0 * na + 4.0 * spec->n_storeys * (SX_LO + 1) * na));
+    const double N = spec->n_storeys, n = 2.0 * 4.0 * N, na = n + 3.0 + 3.0 * N;
+    const double rows = 4.0 * N * (SX_LO + 1) + N * SX_Z_NODES; /* the functionals' and z chains' */
+    const double per = (double)sizeof(sx_region) + 8.0 * (2.0 * na * na + SX_STEPS * (4.0 * na * na + (n + 2.0 + rows) * na));
     const double fit = SX_CACHE_BYTES / per;
     return fit >= SX_REGIONS ? SX_REGIONS : (fit < 8.0 ? (SX_REGIONS < 8 ? SX_REGIONS : 8) : (int)fit);
 }

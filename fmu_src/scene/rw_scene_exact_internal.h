@@ -1,9 +1,12 @@
 /* The exact scene engine's shared pieces (rw_scene_exact*.c): a scene's linear region, its exact
  * propagators over a step length, polynomial tools and the run's state. Internal, not installed.
  *
- * Augmented state xa = (x, ag, ag', 1) of length na = n + 3, x = (X, X') the region's n = 2 ndof
- * first-order states: xa' = Aa xa exactly while the record is linear, so the motion over a step
- * of length h is xa(u h) = sum_k X_k u^k with X_{k+1} = h/(k+1) Aa X_k (u in [0, 1]). */
+ * Augmented state xa = (x, ag, ag', 1, z chains) of length na = n + 3 + 3 nz, x = (X, X') the
+ * region's n = 2 ndof first-order states: xa' = Aa xa exactly while the record is linear, so the
+ * motion over a step of length h is xa(u h) = sum_k X_k u^k with X_{k+1} = h/(k+1) Aa X_k (u in
+ * [0, 1]). A Bouc-Wen diaphragm's hysteretic variable enters as a quadratic over each step, the
+ * chain (z, z', z'') with z''' = 0, fitted to the law along the exact motion
+ * (rw_scene_exact_bouc_wen.c). */
 #ifndef RW_SCENE_EXACT_INTERNAL_H
 #define RW_SCENE_EXACT_INTERNAL_H
 
@@ -15,7 +18,12 @@
 
 #define SX_MAX_DOF (4 * RW_SCENE_MAX_STOREYS) /* per storey: a wall's q1, q2, the floor, the diaphragm */
 #define SX_MAX_N (2 * SX_MAX_DOF)
-#define SX_MAX_NA (SX_MAX_N + 3)
+#define SX_MAX_Z RW_SCENE_MAX_STOREYS /* Bouc-Wen diaphragms: each a chain of 3 inputs (z, z', z'') */
+#define SX_MAX_NA (SX_MAX_N + 3 + 3 * SX_MAX_Z)
+#ifndef SX_BW_HMAX
+#define SX_BW_HMAX 1e-3 /* the longest step a Bouc-Wen diaphragm's fit takes [s] */
+#endif
+#define SX_Z_NODES 4 /* a Bouc-Wen fit's nodes past the step's start: u = 1/4, 1/2, 3/4, 1 */
 #define SX_MAX_F (5 * RW_SCENE_MAX_STOREYS)     /* watched linear functionals of the state */
 #define SX_MAX_TERMS (4 * RW_SCENE_MAX_STOREYS) /* rank-one terms of the viscous dissipation */
 #define SX_LO 6          /* degree of the quiet test's polynomials */
@@ -97,6 +105,8 @@ typedef struct {
     double *wg;   /* 2 x na: the momentum's integrals over the step of E(tau) and tau E(tau) */
     double *rows; /* (nf (SX_LO+1)) x na by columns: functional f's Taylor coefficients l.(Aa h)^k/k!
                      in row f (SX_LO+1) + k */
+    double *zrows; /* (nz SX_Z_NODES) x na: Bouc-Wen diaphragm k's deformation rate at u = (j+1)/4
+                      in row k SX_Z_NODES + j, e_k.exp(Aa u h) */
     double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
 } sx_step;
 
@@ -106,6 +116,9 @@ typedef struct {
     int ndof, n, na, nf;
     int pos[SX_MAX_DOF], vel[SX_MAX_DOF]; /* each DOF's displacement and velocity in the scene state */
     int wall_dof[RW_SCENE_MAX_STOREYS], floor_dof[RW_SCENE_MAX_STOREYS], diaph_dof[RW_SCENE_MAX_STOREYS];
+    int nz, z_storey[SX_MAX_Z];  /* the Bouc-Wen diaphragms' z chains: chain k at columns sx_z_col */
+    int z_pos[SX_MAX_Z];         /* chain k's z in the scene state */
+    double hcap;                 /* the longest step a Bouc-Wen fit takes (INFINITY: none) */
     double *Aa;                /* na x na, row-major */
     double *Aa_cols;           /* the same by columns, for the series' products */
     double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */
@@ -175,6 +188,11 @@ typedef struct {
     double d_synced[RW_SCENE_MAX_STOREYS]; /* a bilinear diaphragm's deformation where its work and
                                               z were last brought up to date (sx_sync_hysteresis) */
     double work_ground, work_damping, losses;
+    double z_nodes[SX_MAX_Z][SX_Z_NODES + 1]; /* the last Bouc-Wen fit's deformation rates at its nodes */
+    double z_next[SX_MAX_Z][2]; /* z' and z'' where the last fitted step ended: the next fit's guess */
+    int z_next_valid;           /* ... unless an event came between */
+    double work_hysteretic; /* the Bouc-Wen diaphragms' hysteretic work since the region was entered
+                               (the region's quadratic energy holds their alpha k part only) */
     size_t hint, next_out;
     double last_event_t;
     int same_instant;
@@ -208,6 +226,23 @@ void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], in
 void sx_sync_hysteresis(sx_run *R);
 /* the indicators of the current region's bilinear diaphragms, and where their work starts */
 void sx_bilinear_entered(sx_run *R);
+
+/* ---- Bouc-Wen diaphragms (rw_scene_exact_bouc_wen.c) ---- */
+/* is diaphragm i a smooth hysteresis (Bouc-Wen, pinched or not), whose force (1 - alpha) Fy z
+ * enters the region as the z chain's input? */
+int sx_bouc_wen(const rw_scene *sc, int i);
+/* does it yield (a z chain: its hysteretic force not zero)? */
+int sx_bouc_wen_chain(const rw_scene *sc, int i);
+/* the first column of chain k */
+static inline int sx_z_col(const sx_region *r, int k) { return r->n + 3 + 3 * k; }
+/* the law's z over a step of length h from xa0 (its z chains' values set, their rates a guess):
+ * the chains' quadratics fitted by Picard rounds along the exact motion from the table of h (st)
+ * or, for st NULL, the exact series; 0, or 1 if the rounds did not settle */
+int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[]);
+/* the Bouc-Wen diaphragms' z and work brought to the state xa at u in (0, 1] of the fitted step from
+ * xa0 (s its series, or NULL for u = 1 on a table: the fit's own nodes) */
+void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u, double h,
+                         const sx_series *s);
 
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */

@@ -13,6 +13,7 @@ typedef struct {
     int nd;
     double M[SX_MAX_DOF * SX_MAX_DOF], C[SX_MAX_DOF * SX_MAX_DOF], K[SX_MAX_DOF * SX_MAX_DOF];
     double f[SX_MAX_DOF], b[SX_MAX_DOF];
+    double fz[SX_MAX_Z][SX_MAX_DOF]; /* the force of each z chain's z (a Bouc-Wen diaphragm's hysteretic share) */
 } lti;
 
 static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc->collapsed[i]; }
@@ -90,8 +91,15 @@ static void layout(const rw_scene *sc, const sx_key *key, sx_region *r)
         if (!sc->S.rigid_in_plane) r->floor_dof[i] = add_dof(r, fb + BD_U, fb + BD_V);
         r->diaph_dof[i] = add_dof(r, fb + BD_Y, fb + BD_W);
     }
+    r->nz = 0;
+    for (i = 0; i < N; i++)
+        if (sx_bouc_wen_chain(sc, i)) {
+            r->z_pos[r->nz] = RW_NX * N + BD_STATES_PER_FLOOR * i + BD_ZD;
+            r->z_storey[r->nz++] = i;
+        }
     r->n = 2 * r->ndof;
-    r->na = r->n + 3;
+    r->na = r->n + 3 + 3 * r->nz;
+    r->hcap = r->nz ? SX_BW_HMAX : INFINITY;
 }
 
 /* ---- assembly ---- */
@@ -139,6 +147,16 @@ static void wall(const rw_scene *sc, const sx_region *r, const sx_key *key, int 
     }
 }
 
+/* a Bouc-Wen diaphragm's hysteretic force (1 - alpha) Fy z on DOF p (sign: -1 on the diaphragm,
+ * +1 on its floor), from its z chain */
+static void chain_force(const rw_scene *sc, const sx_region *r, lti *s, int i, int p, double sign)
+{
+    const bd_spring *d = &sc->S.building.diaph[i];
+    int k;
+    for (k = 0; k < r->nz; k++)
+        if (r->z_storey[k] == i) s->fz[k][p] += sign * (1.0 - d->alpha) * d->Fy;
+}
+
 static void building(const rw_scene *sc, const sx_region *r, lti *s)
 {
     const bd_params *b = &sc->S.building;
@@ -148,14 +166,17 @@ static void building(const rw_scene *sc, const sx_region *r, lti *s)
         const bd_spring *d = &b->diaph[i];
         /* the diaphragm's spring on the region's branch, F = k_b (y - u) + F0 (a bilinear one's;
          * Rayleigh's a1 on the initial stiffness, as building_physics.c takes it) */
-        const double k_b = r->key.branch[i] ? d->alpha * d->k : d->k, F0 = r->key.F0[i] * (1.0 - d->alpha) * d->Fy;
+        const double k_b = r->key.branch[i] || sx_bouc_wen(sc, i) ? d->alpha * d->k : d->k;
+        const double F0 = r->key.F0[i] * (1.0 - d->alpha) * d->Fy;
         add(s->M, s->nd, y, y, b->md[i]);
         add_b(s, y, -b->md[i]);
         add(s->C, s->nd, y, y, b->a0 * b->md[i]);
         spring(s, y, u, k_b, b->a1 * d->k + b->cd[i]);
         s->f[y] -= F0;
+        chain_force(sc, r, s, i, y, -1.0);
         if (u < 0) continue;
         s->f[u] += F0;
+        chain_force(sc, r, s, i, u, 1.0);
         add(s->M, s->nd, u, u, b->m[i]);
         add_b(s, u, -b->m[i]);
         add(s->C, s->nd, u, u, b->a0 * b->m[i]);
@@ -163,12 +184,13 @@ static void building(const rw_scene *sc, const sx_region *r, lti *s)
     }
 }
 
-/* Aa = [[0, I, 0, 0, 0], [-M^-1 K, -M^-1 C, M^-1 b, 0, M^-1 f], [0.. 1 ..], 0, 0] */
+/* Aa = [[0, I, 0, 0, 0, 0], [-M^-1 K, -M^-1 C, M^-1 b, 0, M^-1 f, M^-1 fz], [0.. 1 ..], 0, 0,
+ * the z chains' shifts] */
 static int augmented(const lti *s, sx_region *r)
 {
-    const int nd = s->nd, n = r->n, na = r->na, w = 2 * nd + 2;
-    double Mc[SX_MAX_DOF * SX_MAX_DOF], B[SX_MAX_DOF * (2 * SX_MAX_DOF + 2)];
-    int i, j;
+    const int nd = s->nd, n = r->n, na = r->na, w = 2 * nd + 2 + r->nz;
+    double Mc[SX_MAX_DOF * SX_MAX_DOF], B[SX_MAX_DOF * (2 * SX_MAX_DOF + 2 + SX_MAX_Z)];
+    int i, j, k;
     memcpy(Mc, s->M, sizeof(double) * (size_t)(nd * nd));
     for (i = 0; i < nd; i++) {
         for (j = 0; j < nd; j++) {
@@ -177,6 +199,7 @@ static int augmented(const lti *s, sx_region *r)
         }
         B[i * w + 2 * nd] = s->b[i];
         B[i * w + 2 * nd + 1] = s->f[i];
+        for (k = 0; k < r->nz; k++) B[i * w + 2 * nd + 2 + k] = s->fz[k][i];
     }
     if (sx_lu_solve(nd, Mc, B, w)) return 1;
     memset(r->Aa, 0, sizeof(double) * (size_t)(na * na));
@@ -186,8 +209,14 @@ static int augmented(const lti *s, sx_region *r)
         for (j = 0; j < 2 * nd; j++) row[j] = B[i * w + j];
         row[n] = B[i * w + 2 * nd];
         row[n + 2] = B[i * w + 2 * nd + 1];
+        for (k = 0; k < r->nz; k++) row[sx_z_col(r, k)] = B[i * w + 2 * nd + 2 + k];
     }
     r->Aa[n * na + n + 1] = 1.0; /* ag' = slope */
+    for (k = 0; k < r->nz; k++) { /* z' and z'' the chain's next entries */
+        const int c = sx_z_col(r, k);
+        r->Aa[c * na + c + 1] = 1.0;
+        r->Aa[(c + 1) * na + c + 2] = 1.0;
+    }
     return 0;
 }
 
@@ -356,7 +385,9 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const s
     functionals(sc, r);
     energy_rows(sc, r);
     collapse_forms(sc, key, r);
-    if (sibling && sibling->modes.valid && same_first_order(r, sibling)) sx_modes_adopt(r, &sibling->modes);
+    if (r->nz) r->modes.valid = 0; /* no slow steps: each step is the z fit's (their bounds do not
+                                       take the chains' forcing) */
+    else if (sibling && sibling->modes.valid && same_first_order(r, sibling)) sx_modes_adopt(r, &sibling->modes);
     else sx_modes_build(r);
     return RW_SCENE_OK;
 }
@@ -383,6 +414,11 @@ void sx_gather(const sx_region *r, const double x[], double ag, double slope, do
     xa[r->n] = ag;
     xa[r->n + 1] = slope;
     xa[r->n + 2] = 1.0;
+    for (k = 0; k < r->nz; k++) { /* z now, its rates unknown until fitted */
+        const int c = sx_z_col(r, k);
+        xa[c] = x[r->z_pos[k]];
+        xa[c + 1] = xa[c + 2] = 0.0;
+    }
 }
 
 double sx_region_energy(const sx_region *r, const double x[])

@@ -13,7 +13,7 @@
 
 double sx_hmax(const sx_region *r)
 {
-    return r->norm > 0.0 ? SX_RHO / r->norm : INFINITY;
+    return fmin(r->norm > 0.0 ? SX_RHO / r->norm : INFINITY, r->hcap);
 }
 
 /* max_i |v_i| / S_i over the first-order states */
@@ -126,6 +126,31 @@ static void exponential(const sx_region *r, sx_step *st)
     }
 }
 
+/* each z chain's diaphragm deformation rate at the nodes u = (j+1)/4: its row times exp(Aa u h),
+ * summed to the table's degree (u h is no longer than h) */
+static void z_rows(const sx_region *r, sx_step *st)
+{
+    const int na = r->na, nd = r->ndof;
+    double cur[SX_MAX_NA], next[SX_MAX_NA];
+    int k, j, m, c;
+    for (k = 0; k < r->nz; k++) {
+        const int i = r->z_storey[k];
+        for (j = 0; j < SX_Z_NODES; j++) {
+            double *out = st->zrows + (size_t)((k * SX_Z_NODES + j) * na);
+            const double uh = st->h * (j + 1) / SX_Z_NODES;
+            memset(cur, 0, sizeof(double) * (size_t)na);
+            cur[nd + r->diaph_dof[i]] = 1.0;
+            if (r->floor_dof[i] >= 0) cur[nd + r->floor_dof[i]] = -1.0;
+            memcpy(out, cur, sizeof(double) * (size_t)na);
+            for (m = 0; m < st->deg; m++) {
+                row_step(r, cur, m, uh, next);
+                for (c = 0; c < na; c++) out[c] += next[c];
+                memcpy(cur, next, sizeof(double) * (size_t)na);
+            }
+        }
+    }
+}
+
 /* the functionals' rows l.(Aa h)^k/k! for k <= SX_LO, and the momentum's work integrals */
 static void rows(const sx_region *r, sx_step *st)
 {
@@ -138,6 +163,7 @@ static void rows(const sx_region *r, sx_step *st)
         for (k = 0; k < SX_LO; k++) row_step(r, out + k * na, k, st->h, out + (k + 1) * na);
     }
     sx_transpose(r->nf * D, na, by_rows, st->rows);
+    z_rows(r, st);
     memcpy(cur, r->mom, sizeof(double) * (size_t)na);
     memset(st->wg, 0, sizeof(double) * (size_t)(2 * na));
     for (k = 0; k <= st->deg; k++) {
@@ -230,17 +256,19 @@ static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
 }
 
 /* a slot's memory, the first time it is built: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na),
- * rows (nf (SX_LO+1) x na); 0, or 1 if none could be had */
+ * rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na); 0, or 1 if none could be had */
 static int table_memory(const sx_region *r, sx_step *st)
 {
     const size_t nn = (size_t)(r->na * r->na);
     if (st->mem) return 0;
-    st->mem = (double *)malloc(sizeof(double) * (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1)) * r->na)));
+    st->mem = (double *)malloc(sizeof(double) *
+                               (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * SX_Z_NODES) * r->na)));
     if (!st->mem) return 1;
     st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdt = st->Et + nn;
     st->T = st->Wdt + nn;
     st->wg = st->T + r->n * r->na;
     st->rows = st->wg + 2 * r->na;
+    st->zrows = st->rows + r->nf * (SX_LO + 1) * r->na;
     return 0;
 }
 

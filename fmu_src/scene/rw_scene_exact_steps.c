@@ -6,6 +6,7 @@
 
 #include <limits.h>
 #include <math.h>
+#include <stdio.h>
 
 static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
 
@@ -28,6 +29,16 @@ static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const d
     R->res->steps++;
 }
 
+/* a Bouc-Wen fit that did not settle ends the run (the step is the series', within its limit: the
+ * rounds contract there unless the diaphragm is far stiffer than its mass can follow) */
+static int fit_failed(sx_run *R)
+{
+    snprintf(R->res->message, sizeof R->res->message,
+             "the Bouc-Wen diaphragms' fit did not settle at t = %.9g s (a diaphragm too stiff for its mass?)", R->t);
+    R->error = RW_SCENE_SOLVER;
+    return -1;
+}
+
 /* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
  * at an event (handled here) */
 static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slope)
@@ -36,15 +47,17 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
         sx_region *r = current(R);
         const int parts = sx_parts(r, t1 - R->t);
         const double L = (t1 - R->t) / parts;
-        double xa[SX_MAX_NA], wg, wd, u;
+        double xa0[SX_MAX_NA], xa[SX_MAX_NA], wg, wd, u;
         sx_series s;
-        sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa);
-        sx_series_of(r, xa, L, &s);
+        sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
+        if (r->nz && sx_bouc_wen_fit(R, r, NULL, L, xa0)) return fit_failed(R);
+        sx_series_of(r, xa0, L, &s);
         u = sx_watch_step(R, r, &s);
         sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
         R->work_ground += wg;
         R->work_damping += wd;
         sx_series_at(r, &s, fmin(u, 1.0), xa);
+        if (r->nz) sx_bouc_wen_advance(R, r, xa0, xa, fmin(u, 1.0), L, &s);
         sx_scatter(r, xa, R->x);
         R->res->steps++;
         if (u > 1.0) {
@@ -69,10 +82,12 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
     if (!st || st->is_long) return 0; /* no memory, or a length at the limit, doubled: no polynomial rows */
     sx_gather(r, R->x, ag0, slope, xa0);
+    if (r->nz && sx_bouc_wen_fit(R, r, st, h, xa0)) return 0; /* not settled: the series tries */
     st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
     quiet = sx_watch_quiet(R, r, st, xa0, xa1);
     st->used = R->stamp;
     if (!quiet) return 0;
+    if (r->nz) sx_bouc_wen_advance(R, r, xa0, xa1, 1.0, h, NULL);
     table_step(R, r, st, xa0, xa1, t1);
     return 1;
 }

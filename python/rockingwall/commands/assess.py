@@ -186,7 +186,7 @@ def building_study(args):
     def slow_note(cases, ensemble):
         runs = tuple(cases * n for n in assessment_building.case_runs(states, ensemble))
         return cc.slow_scene_note(monolithic.building_spec(building), runs,
-                                  f"a building with {building.diaphragm_law} diaphragms", 'law = "bilinear"')
+                                  f"a building with {building.diaphragm_law} diaphragms")
     return Study(run, states, head, scene, building.name, assessment_building.STOREY_COLUMN, building=building,
                  spread_fields=varied, slow_note=slow_note)
 

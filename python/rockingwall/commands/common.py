@@ -104,8 +104,8 @@ def add_diaphragm_arguments(parser):
                    help=f"its damping ratio, e.g. 0.05 or 5%% (default {DAMPING_DEFAULT:g}); its stiffness is --Kd")
     g.add_argument("--tie", help=f"the wall-to-diaphragm connection [N/m per m] (default {TIE_DEFAULT:g})")
     g.add_argument("--diaphragm-law", choices=list(SPRING_LAWS), default="linear",
-                   help="its force law (default linear); bilinear runs on the exact engine, the Bouc-Wen laws on "
-                        "CVODES (seconds a run); boucWenPinched takes timber's pinching (docs/your-building.md)")
+                   help="its force law (default linear); all of them run on the exact engine; boucWenPinched "
+                        "takes timber's pinching (docs/your-building.md)")
     g.add_argument("--diaphragm-yield", help="a hysteretic diaphragm's yield force per metre of wall, e.g. 2kN/m")
     g.add_argument("--diaphragm-post-yield",
                    help=f"its post-yield stiffness ratio in [0, 1] (default {POST_YIELD_DEFAULT:g})")
@@ -168,18 +168,16 @@ def _in_range(value, key, option, unit, hint=""):
     return value
 
 
-def slow_scene_note(spec, runs, what, bilinear):
+def slow_scene_note(spec, runs, what):
     """What the runs of a scene the exact engine does not cover will cost, said before they start
     (None where it covers it): CVODES takes seconds a run where the exact engine takes
     milliseconds. spec: the scene solver's Spec; runs: (fewest, most) of them (most: where every
-    dense run is refined); what: the scene with its law ('a building with boucWen diaphragms');
-    bilinear: how the user asks for the bilinear law, which the exact engine runs."""
+    dense run is refined); what: the scene ('a building with linear diaphragms'); the note gives
+    the exact engine's reason."""
     from .. import scene_engine  # the scene solver's library: only for the scenes it runs
     covered, why = scene_engine.exact_covers(spec)
     if covered:
         return None
-    if spec.diaphragm_law in ("boucWen", "boucWenPinched"):
-        why = f"{bilinear} with the same yield force and post-yield runs on the exact engine in milliseconds"
     fewest, most = runs
     count = f"{fewest} run{'' if fewest == 1 else 's'}" if fewest == most else f"{fewest} to {most} runs"
     return f"{count} of {what}, on CVODES: seconds a run ({why})"
@@ -199,8 +197,7 @@ def diaphragm_slow_note(wall, diaphragm, tie, scenes_per_case=1, states=()):
 
     def note_for(cases, ensemble):
         per_case = api.under_diaphragm_runs(ensemble, states)
-        return slow_scene_note(spec, tuple(cases * scenes_per_case * n for n in per_case), what,
-                               "--diaphragm-law bilinear")
+        return slow_scene_note(spec, tuple(cases * scenes_per_case * n for n in per_case), what)
     return note_for
 
 
