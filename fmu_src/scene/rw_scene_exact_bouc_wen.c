@@ -156,6 +156,7 @@ static double set_chain(const sx_region *r, int k, double h, double z0, double z
 
 int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[])
 {
+    double last;
     int k, round;
     for (k = 0; k < r->nz; k++) { /* a first guess: the last step's quadratic carried on, or after an
                                       event the law's rate at the start, held */
@@ -164,7 +165,7 @@ int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, 
         c[1] = R->z_next_valid ? R->z_next[k][0] : z_rate(R, i, c[0], deformation_rate(r, i, xa0));
         c[2] = R->z_next_valid ? R->z_next[k][1] : 0.0;
     }
-    for (round = 0; round < SX_BW_ROUNDS; round++) {
+    for (round = 0, last = INFINITY; round < SX_BW_ROUNDS; round++) {
         double change = 0.0;
         rates_at_nodes(r, st, h, xa0, R->z_nodes);
         for (k = 0; k < r->nz; k++) {
@@ -177,6 +178,8 @@ int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, 
             change = fmax(change, set_chain(r, k, h, z0, zh, z1, xa0));
         }
         if (change <= SX_BW_SETTLED) return 0;
+        if (round >= 2 && change > 0.5 * last) return 1; /* not contracting: a shorter step will */
+        last = change;
     }
     return 1;
 }

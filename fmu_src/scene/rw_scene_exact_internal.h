@@ -23,6 +23,7 @@
 #ifndef SX_BW_HMAX
 #define SX_BW_HMAX 1e-3 /* the longest step a Bouc-Wen diaphragm's fit takes [s] */
 #endif
+#define SX_BW_HMIN 1e-9 /* the shortest step it halves to where its rounds do not settle [s] */
 #define SX_Z_NODES 4 /* a Bouc-Wen fit's nodes past the step's start: u = 1/4, 1/2, 3/4, 1 */
 #define SX_MAX_F (5 * RW_SCENE_MAX_STOREYS)     /* watched linear functionals of the state */
 #define SX_MAX_TERMS (4 * RW_SCENE_MAX_STOREYS) /* rank-one terms of the viscous dissipation */
@@ -118,7 +119,8 @@ typedef struct {
     int wall_dof[RW_SCENE_MAX_STOREYS], floor_dof[RW_SCENE_MAX_STOREYS], diaph_dof[RW_SCENE_MAX_STOREYS];
     int nz, z_storey[SX_MAX_Z];  /* the Bouc-Wen diaphragms' z chains: chain k at columns sx_z_col */
     int z_pos[SX_MAX_Z];         /* chain k's z in the scene state */
-    double hcap;                 /* the longest step a Bouc-Wen fit takes (INFINITY: none) */
+    double hcap;                 /* the longest step a Bouc-Wen fit takes (INFINITY: none), halved
+                                    where its rounds did not settle */
     double *Aa;                /* na x na, row-major */
     double *Aa_cols;           /* the same by columns, for the series' products */
     double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */

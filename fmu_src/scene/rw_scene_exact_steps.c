@@ -29,14 +29,20 @@ static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const d
     R->res->steps++;
 }
 
-/* a Bouc-Wen fit that did not settle ends the run (the step is the series', within its limit: the
- * rounds contract there unless the diaphragm is far stiffer than its mass can follow) */
-static int fit_failed(sx_run *R)
+/* a Bouc-Wen fit that did not settle over a step of length L: the region's steps are halved from
+ * here on (the rounds contract by about (1 - alpha) k h^2 / m_d: a light diaphragm on a soft
+ * linear share, alpha k and the tie, whose own mode does not limit the steps); 1 where they are
+ * already shorter than anything a record needs, and the run ends */
+static int fit_failed(sx_run *R, sx_region *r, double L)
 {
+    if (L > SX_BW_HMIN) {
+        r->hcap = 0.5 * L;
+        return 0;
+    }
     snprintf(R->res->message, sizeof R->res->message,
-             "the Bouc-Wen diaphragms' fit did not settle at t = %.9g s (a diaphragm too stiff for its mass?)", R->t);
+             "the Bouc-Wen diaphragms' fit did not settle at t = %.9g s over steps of %.3g s", R->t, L);
     R->error = RW_SCENE_SOLVER;
-    return -1;
+    return 1;
 }
 
 /* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
@@ -50,7 +56,10 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
         double xa0[SX_MAX_NA], xa[SX_MAX_NA], wg, wd, u;
         sx_series s;
         sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
-        if (r->nz && sx_bouc_wen_fit(R, r, NULL, L, xa0)) return fit_failed(R);
+        if (r->nz && sx_bouc_wen_fit(R, r, NULL, L, xa0)) {
+            if (fit_failed(R, r, L)) return -1;
+            continue; /* again in shorter parts */
+        }
         sx_series_of(r, xa0, L, &s);
         u = sx_watch_step(R, r, &s);
         sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
@@ -82,7 +91,8 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
     if (!st || st->is_long) return 0; /* no memory, or a length at the limit, doubled: no polynomial rows */
     sx_gather(r, R->x, ag0, slope, xa0);
-    if (r->nz && sx_bouc_wen_fit(R, r, st, h, xa0)) return 0; /* not settled: the series tries */
+    if (r->nz && sx_bouc_wen_fit(R, r, st, h, xa0)) return 0; /* not settled: the series tries, in
+                                                                  shorter parts if it must */
     st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
     quiet = sx_watch_quiet(R, r, st, xa0, xa1);
     st->used = R->stamp;
