@@ -13,8 +13,9 @@
  * A round contracts by about (1 - alpha) k h^2 / m_d, the diaphragm's own (omega h)^2: the steps
  * the series converge over keep it under 1, and the fit's cap on the step (SX_BW_HMAX) far under.
  * The error is the quadratic's and RK4's, of high order in h (measured in docs/scenes.md). The work done
- * on the spring, which the scene's energy counts, advances with the motion: alpha k's part exactly,
- * the hysteretic part by Simpson's rule on the nodes. */
+ * on the spring, which the scene's energy counts, advances with the motion, exactly: alpha k's part
+ * from the ends, the hysteretic part as the integral of z's quadratic times the exact deformation
+ * rate (the table's work rows, or the series' polynomial). */
 #include "rw_scene_exact_internal.h"
 
 #include <math.h>
@@ -154,9 +155,9 @@ static double set_chain(const sx_region *r, int k, double h, double z0, double z
     return change;
 }
 
-int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[])
+int sx_bouc_wen_fit(const sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[])
 {
-    double last;
+    double nodes[SX_MAX_Z][SX_Z_NODES + 1], last;
     int k, round;
     for (k = 0; k < r->nz; k++) { /* a first guess: the last step's quadratic carried on, or after an
                                       event the law's rate at the start, held */
@@ -167,10 +168,10 @@ int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, 
     }
     for (round = 0, last = INFINITY; round < SX_BW_ROUNDS; round++) {
         double change = 0.0;
-        rates_at_nodes(r, st, h, xa0, R->z_nodes);
+        rates_at_nodes(r, st, h, xa0, nodes);
         for (k = 0; k < r->nz; k++) {
             const int i = r->z_storey[k];
-            const double *d = R->z_nodes[k], z0 = xa0[sx_z_col(r, k)];
+            const double *d = nodes[k], z0 = xa0[sx_z_col(r, k)];
             double c[SX_Z_NODES + 1], zh, z1;
             newton_form(d, c);
             zh = z_quarter(R, i, d, c, z_quarter(R, i, d, c, z0, 0, h), 1, h);
@@ -203,34 +204,42 @@ static void linear_work(sx_run *R, const sx_region *r, const double xa0[], const
     }
 }
 
-/* the deformation rates at the nodes u j/4 of [0, u] on the series s */
-static void rates_on_part(const sx_region *r, const sx_series *s, double u, double d[SX_MAX_Z][SX_Z_NODES + 1])
+/* the integral over [0, u] of the step of the chain's z times the deformation rate [m]: on the
+ * series, the product of z's quadratic in u with the rate's polynomial; on the table, its work rows */
+static double z_times_rate(const sx_region *r, int k, const double xa0[], double u, const sx_step *st,
+                           const sx_series *s)
 {
-    double v[SX_MAX_NA];
-    int j, k;
-    for (j = 0; j <= SX_Z_NODES; j++) {
-        sx_series_at(r, s, u * j / SX_Z_NODES, v);
-        for (k = 0; k < r->nz; k++) d[k][j] = deformation_rate(r, r->z_storey[k], v);
+    const double *c = xa0 + sx_z_col(r, k);
+    double sum = 0.0;
+    int j;
+    if (s) {
+        double z[SX_MAX_DEG + 1], d[SX_MAX_DEG + 1], zd[2 * SX_MAX_DEG + 2];
+        for (j = 0; j <= s->deg; j++) {
+            z[j] = j == 0 ? c[0] : (j == 1 ? c[1] * s->L : (j == 2 ? 0.5 * c[2] * s->L * s->L : 0.0));
+            d[j] = deformation_rate(r, r->z_storey[k], s->X + (size_t)j * (size_t)r->na);
+        }
+        sx_poly_product(z, d, s->deg, zd);
+        return s->L * sx_poly_integral(zd, 2 * s->deg, u);
     }
+    {
+        const double *w = st->zwork + (size_t)(3 * k * r->na);
+        for (j = 0; j < r->na; j++) sum += (c[0] * w[j] + c[1] * w[r->na + j] + 0.5 * c[2] * w[2 * r->na + j]) * xa0[j];
+    }
+    return sum;
 }
 
-void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u, double h,
-                         const sx_series *s)
+void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u,
+                         const sx_step *st, const sx_series *s)
 {
-    double d[SX_MAX_Z][SX_Z_NODES + 1];
-    int k, j;
+    const double h = s ? s->L : st->h;
+    int k;
     linear_work(R, r, xa0, xa);
-    if (!r->nz) return;
-    if (s) rates_on_part(r, s, u, d);
-    else memcpy(d, R->z_nodes, sizeof d);
     for (k = 0; k < r->nz; k++) {
         const int i = r->z_storey[k];
         const bd_spring *sp = &R->sc.S.building.diaph[i];
         const double *c = xa0 + sx_z_col(r, k);
-        double *f_states = floor_states(&R->sc, R->x, i), f[SX_Z_NODES + 1], work;
-        for (j = 0; j <= SX_Z_NODES; j++) f[j] = chain_at(c, u * j / SX_Z_NODES, h) * d[k][j];
-        /* the hysteretic force's work by Simpson's rule on the two halves of [0, u h] */
-        work = (1.0 - sp->alpha) * sp->Fy * u * h / 12.0 * (f[0] + 4.0 * f[1] + 2.0 * f[2] + 4.0 * f[3] + f[4]);
+        const double work = (1.0 - sp->alpha) * sp->Fy * z_times_rate(r, k, xa0, u, st, s);
+        double *f_states = floor_states(&R->sc, R->x, i);
         f_states[BD_WORK_D] += work;
         f_states[BD_ZD] = fmax(-1.0, fmin(1.0, chain_at(c, u, h)));
         R->work_hysteretic += work;

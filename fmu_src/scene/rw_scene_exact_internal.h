@@ -108,6 +108,8 @@ typedef struct {
                      in row f (SX_LO+1) + k */
     double *zrows; /* (nz SX_Z_NODES) x na: Bouc-Wen diaphragm k's deformation rate at u = (j+1)/4
                       in row k SX_Z_NODES + j, e_k.exp(Aa u h) */
+    double *zwork; /* (nz 3) x na: its integrals over the step of tau^m e_k.exp(Aa tau), m = 0, 1, 2,
+                      in row 3 k + m (the hysteretic force's work, exactly) */
     double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
 } sx_step;
 
@@ -190,7 +192,6 @@ typedef struct {
     double d_synced[RW_SCENE_MAX_STOREYS]; /* a bilinear diaphragm's deformation where its work and
                                               z were last brought up to date (sx_sync_hysteresis) */
     double work_ground, work_damping, losses;
-    double z_nodes[SX_MAX_Z][SX_Z_NODES + 1]; /* the last Bouc-Wen fit's deformation rates at its nodes */
     double z_next[SX_MAX_Z][2]; /* z' and z'' where the last fitted step ended: the next fit's guess */
     int z_next_valid;           /* ... unless an event came between */
     double work_hysteretic; /* the Bouc-Wen diaphragms' hysteretic work since the region was entered
@@ -240,11 +241,11 @@ static inline int sx_z_col(const sx_region *r, int k) { return r->n + 3 + 3 * k;
 /* the law's z over a step of length h from xa0 (its z chains' values set, their rates a guess):
  * the chains' quadratics fitted by Picard rounds along the exact motion from the table of h (st)
  * or, for st NULL, the exact series; 0, or 1 if the rounds did not settle */
-int sx_bouc_wen_fit(sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[]);
+int sx_bouc_wen_fit(const sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[]);
 /* the Bouc-Wen diaphragms' z and work brought to the state xa at u in (0, 1] of the fitted step from
- * xa0 (s its series, or NULL for u = 1 on a table: the fit's own nodes) */
-void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u, double h,
-                         const sx_series *s);
+ * xa0: on its series s, or for s NULL (u = 1) on its table st */
+void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u,
+                         const sx_step *st, const sx_series *s);
 
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */

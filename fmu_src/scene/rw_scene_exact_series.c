@@ -126,21 +126,46 @@ static void exponential(const sx_region *r, sx_step *st)
     }
 }
 
-/* each z chain's diaphragm deformation rate at the nodes u = (j+1)/4: its row times exp(Aa u h),
- * summed to the table's degree (u h is no longer than h) */
+/* chain k's rate row e_k (its diaphragm's deformation rate over xa) */
+static void rate_row(const sx_region *r, int k, double *row)
+{
+    const int i = r->z_storey[k], nd = r->ndof;
+    memset(row, 0, sizeof(double) * (size_t)r->na);
+    row[nd + r->diaph_dof[i]] = 1.0;
+    if (r->floor_dof[i] >= 0) row[nd + r->floor_dof[i]] = -1.0;
+}
+
+/* the integrals of tau^m e_k.exp(Aa tau) over [0, h], m = 0, 1, 2: sum over the series' terms
+ * r_n = e_k.(Aa h)^n/n! of r_n h^(m+1) / (n + m + 1) */
+static void z_work_rows(const sx_region *r, sx_step *st, int k)
+{
+    const int na = r->na;
+    const double hp[3] = {st->h, st->h * st->h, st->h * st->h * st->h};
+    double cur[SX_MAX_NA], next[SX_MAX_NA], *w = st->zwork + (size_t)(3 * k * na);
+    int n, m, c;
+    rate_row(r, k, cur);
+    memset(w, 0, sizeof(double) * (size_t)(3 * na));
+    for (n = 0; n <= st->deg; n++) {
+        for (m = 0; m < 3; m++)
+            for (c = 0; c < na; c++) w[m * na + c] += cur[c] * hp[m] / (n + m + 1);
+        row_step(r, cur, n, st->h, next);
+        memcpy(cur, next, sizeof(double) * (size_t)na);
+    }
+}
+
+/* each z chain's diaphragm deformation rate at the nodes u = (j+1)/4, its row times exp(Aa u h)
+ * summed to the table's degree (u h is no longer than h), and its work rows */
 static void z_rows(const sx_region *r, sx_step *st)
 {
-    const int na = r->na, nd = r->ndof;
+    const int na = r->na;
     double cur[SX_MAX_NA], next[SX_MAX_NA];
     int k, j, m, c;
     for (k = 0; k < r->nz; k++) {
-        const int i = r->z_storey[k];
+        z_work_rows(r, st, k);
         for (j = 0; j < SX_Z_NODES; j++) {
             double *out = st->zrows + (size_t)((k * SX_Z_NODES + j) * na);
             const double uh = st->h * (j + 1) / SX_Z_NODES;
-            memset(cur, 0, sizeof(double) * (size_t)na);
-            cur[nd + r->diaph_dof[i]] = 1.0;
-            if (r->floor_dof[i] >= 0) cur[nd + r->floor_dof[i]] = -1.0;
+            rate_row(r, k, cur);
             memcpy(out, cur, sizeof(double) * (size_t)na);
             for (m = 0; m < st->deg; m++) {
                 row_step(r, cur, m, uh, next);
@@ -256,19 +281,20 @@ static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
 }
 
 /* a slot's memory, the first time it is built: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na),
- * rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na); 0, or 1 if none could be had */
+ * rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na), zwork (3 nz x na); 0, or 1 if none could be had */
 static int table_memory(const sx_region *r, sx_step *st)
 {
     const size_t nn = (size_t)(r->na * r->na);
     if (st->mem) return 0;
     st->mem = (double *)malloc(sizeof(double) *
-                               (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * SX_Z_NODES) * r->na)));
+                               (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * (SX_Z_NODES + 3)) * r->na)));
     if (!st->mem) return 1;
     st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdt = st->Et + nn;
     st->T = st->Wdt + nn;
     st->wg = st->T + r->n * r->na;
     st->rows = st->wg + 2 * r->na;
     st->zrows = st->rows + r->nf * (SX_LO + 1) * r->na;
+    st->zwork = st->zrows + r->nz * SX_Z_NODES * r->na;
     return 0;
 }
 

@@ -40,8 +40,8 @@ def peaks(r):
 @pytest.mark.parametrize("tie", [1e8, 1e6])
 def test_bouc_wen_agrees_with_cvodes(strong, tie):
     """Every peak within 2e-5 of CVODES at rtol 1e-11, the same impacts and collapses; the
-    diaphragms yield (both past the yield displacement, one past twice it); the balance closes to 1e-9 of the
-    work. Before, the exact engine refused the law."""
+    diaphragms yield (both past the yield displacement, one past twice it); the balance closes to
+    1e-11 of the work (the hysteretic force's work integrated exactly). Before, the exact engine refused the law."""
     t, ag = strong
     spec = hysteretic(tie)
     exact = se.run(spec, t, ag, engine="exact")
@@ -50,17 +50,18 @@ def test_bouc_wen_agrees_with_cvodes(strong, tie):
     assert list(exact.impacts) == list(ref.impacts) and list(exact.collapsed) == list(ref.collapsed)
     assert min(exact.impacts) > 0
     assert max(exact.peak_diaphragm) > 2 * 0.02 and min(exact.peak_diaphragm) > 0.02
-    assert exact.max_residual <= 1e-9 * exact.max_work
+    assert exact.max_residual <= 1e-11 * exact.max_work
 
 
 def test_the_pinched_law_agrees_with_cvodes(strong):
-    """Foliente's pinching (timber) on the same scene: peaks within 2e-5 of CVODES at rtol 1e-11."""
+    """Foliente's pinching (timber) on the same scene: peaks within 2e-5 of CVODES at rtol 1e-11, the
+    balance closed to 1e-11 of the work."""
     t, ag = strong
     spec = hysteretic(1e6, "boucWenPinched", pinch_size=0.5, pinch_width=0.3, pinch_centre=0.0)
     exact = se.run(spec, t, ag, engine="exact")
     ref = se.run(spec, t, ag, engine="cvode", rtol=1e-11)
     assert peaks(exact) == pytest.approx(peaks(ref), rel=2e-5)
-    assert exact.max_residual <= 1e-9 * exact.max_work
+    assert exact.max_residual <= 1e-11 * exact.max_work
 
 
 def test_small_z_is_the_linear_diaphragm(strong):

@@ -1,6 +1,6 @@
 """The exact scene engine against CVODES on random scenes: 1 to 3 storeys, rigid and flexible
 in-plane walls, random walls (semiRigidHinge, dohertyHinge), ties, diaphragms (linear, and in a
-second set bilinear, yielding) and storeys in plausible ranges, under a Gaussian displacement pulse
+second set bilinear, in a third Bouc-Wen, yielding) and storeys in plausible ranges, under a Gaussian displacement pulse
 or the first seconds of El Centro 1940.
 
 The oracle is CVODES at rtol 1e-12, checked by CVODES at rtol 1e-10: where those two part (a
@@ -14,6 +14,7 @@ from rockingwall import records, scene_engine as se
 
 SEEDS = range(20)
 BILINEAR_SEEDS = range(8)
+BOUC_WEN_SEEDS = range(8)
 DT_OUT = 0.01
 
 
@@ -36,12 +37,13 @@ def random_scene(rng, law="linear"):
     for i in range(rng.integers(1, 4)):
         md, kd = rng.uniform(50.0, 400.0), 10 ** rng.uniform(3.5, 5.5)
         m, k = rng.uniform(800.0, 3000.0), 10 ** rng.uniform(6.5, 8.0)
-        hysteresis = dict(Fyd=kd * rng.uniform(0.002, 0.03), alphad=rng.uniform(0.0, 0.3)) if law == "bilinear" else {}
+        hysteresis = dict(Fyd=kd * rng.uniform(0.002, 0.03), alphad=rng.uniform(0.0, 0.3)) if law != "linear" else {}
         storeys.append(se.StoreySpec(wall=random_wall(rng) if i == 0 or rng.random() < 0.8 else None, md=md, kd=kd,
                                      cd=rng.uniform(0.0, 0.1) * 2 * np.sqrt(kd * md), m=m, k=k,
                                      cs=rng.uniform(0.0, 0.05) * 2 * np.sqrt(k * m), **hysteresis))
+    shape = dict(n_bw=float(rng.choice([1.0, 2.0])), beta=rng.uniform(0.2, 0.8)) if law == "boucWen" else {}
     return se.Spec(storeys=tuple(storeys), rigid_in_plane=bool(rng.integers(0, 2)),
-                   rayleigh_a0=rng.choice([0.0, rng.uniform(0.0, 0.3)]), diaphragm_law=law)
+                   rayleigh_a0=rng.choice([0.0, rng.uniform(0.0, 0.3)]), diaphragm_law=law, **shape)
 
 
 def random_record(rng):
@@ -87,13 +89,31 @@ def test_random_scenes_agree_with_cvodes(outcomes):
     agree_with_cvodes(outcomes)
 
 
+@pytest.fixture(scope="module")
+def bouc_wen_outcomes():
+    return runs(BOUC_WEN_SEEDS, 3000, "boucWen")
+
+
 def test_random_bilinear_scenes_agree_with_cvodes(bilinear_outcomes):
     """Bilinear diaphragms that yield: the exact engine's branches against CVODES's rate form."""
     agree_with_cvodes(bilinear_outcomes)
+    hysteretic_checks(bilinear_outcomes)
+
+
+def test_random_bouc_wen_scenes_agree_with_cvodes(bouc_wen_outcomes):
+    """Bouc-Wen diaphragms (n 1 or 2, random beta) that yield: the exact engine's fitted z against
+    CVODES's rate form."""
+    agree_with_cvodes(bouc_wen_outcomes)
+    hysteretic_checks(bouc_wen_outcomes)
+
+
+def hysteretic_checks(outcomes):
+    """at least half the scenes yield somewhere; every run on the exact engine, its balance closed to
+    1e-10 of the work"""
     yielded = [np.any(exact.peak_diaphragm > np.array([s.Fyd / s.kd for s in spec.storeys]))
-               for _, spec, exact, *_ in bilinear_outcomes]
+               for _, spec, exact, *_ in outcomes]
     assert sum(yielded) >= len(yielded) // 2, yielded
-    for seed, _, exact, *_ in bilinear_outcomes:
+    for seed, _, exact, *_ in outcomes:
         assert exact.engine == "exact" and exact.max_residual <= 1e-10 * max(exact.max_work, 1e-6), seed
 
 
