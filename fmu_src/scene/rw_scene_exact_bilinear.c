@@ -47,8 +47,11 @@ void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], in
     key->F0[i] = key->branch[i] ? key->branch[i] : z - s->k * d / s->Fy; /* over (1 - alpha) Fy */
 }
 
-/* the spring's stiffness on the region's branch */
-static double branch_stiffness(const bd_spring *s, int branch) { return branch ? s->alpha * s->k : s->k; }
+double sx_linear_stiffness(const rw_scene *sc, const sx_key *key, int i)
+{
+    const bd_spring *s = &sc->S.building.diaph[i];
+    return key->branch[i] || sx_bouc_wen(sc, i) ? s->alpha * s->k : s->k;
+}
 
 void sx_sync_hysteresis(sx_run *R)
 {
@@ -60,15 +63,16 @@ void sx_sync_hysteresis(sx_run *R)
     for (i = 0; i < sc->S.n_storeys; i++) {
         const bd_spring *s = &sc->S.building.diaph[i];
         double *f, d, d0, z;
-        if (!sx_bilinear(sc, i)) continue;
+        if (!sx_bilinear(sc, i) && !sx_bouc_wen(sc, i)) continue;
         f = floor_states_to_set(sc, R->x, i);
         d = f[BD_Y] - f[BD_U], d0 = R->d_synced[i];
         /* the work of F = k_b d + F0 (1 - alpha) Fy from d0 to d, without cancellation (the
          * scene's energy counts a hysteretic spring by it, whether or not it can yield) */
-        f[BD_WORK_D] += (d - d0) * (0.5 * branch_stiffness(s, key->branch[i]) * (d + d0) +
-                                    key->F0[i] * hysteretic_force(s));
+        f[BD_WORK_D] += (d - d0) * (0.5 * sx_linear_stiffness(sc, key, i) * (d + d0) + key->F0[i] * hysteretic_force(s));
         R->d_synced[i] = d;
-        if (!yields(s)) continue; /* z does not enter its force */
+        /* z does not enter its force; a Bouc-Wen spring's z and hysteretic work are its steps'
+         * (rw_scene_exact_bouc_wen.c) */
+        if (!sx_bilinear(sc, i) || !yields(s)) continue;
         z = key->branch[i] ? key->branch[i] : key->F0[i] + s->k * d / s->Fy;
         f[BD_ZD] = fmax(-1.0, fmin(1.0, z)); /* an event leaves z a rounding past its limit */
     }
@@ -84,9 +88,9 @@ void sx_bilinear_entered(sx_run *R)
         const double *f = floor_states(sc, R->x, i);
         sx_dline *L = R->dlines[i];
         R->ndlines[i] = 0;
-        if (!sx_bilinear(sc, i)) continue;
+        if (!sx_bilinear(sc, i) && !sx_bouc_wen(sc, i)) continue;
         R->d_synced[i] = f[BD_Y] - f[BD_U];
-        if (!yields(s)) continue;
+        if (!sx_bilinear(sc, i) || !yields(s)) continue;
         if (key->branch[i]) { /* yielding: until the deformation's rate changes sign */
             L[0] = (sx_dline){SX_DEFORM_RATE, 0.0, (double)key->branch[i]};
             R->ndlines[i] = 1;

@@ -13,9 +13,10 @@
  * A round contracts by about (1 - alpha) k h^2 / m_d, the diaphragm's own (omega h)^2: the steps
  * the series converge over keep it under 1, and the fit's cap on the step (SX_BW_HMAX) far under.
  * The error is the quadratic's and RK4's, of high order in h (measured in docs/scenes.md). The work done
- * on the spring, which the scene's energy counts, advances with the motion, exactly: alpha k's part
- * from the ends, the hysteretic part as the integral of z's quadratic times the exact deformation
- * rate (the table's work rows, or the series' polynomial). */
+ * on the spring, which the scene's energy counts, is kept exactly: alpha k's part, a function of the
+ * deformation alone, where the bilinear law's work is brought up to date (sx_sync_hysteresis); the
+ * hysteretic part with each step, as the integral of z's quadratic times the exact deformation rate
+ * (the table's work rows, or the series' polynomial). */
 #include "rw_scene_exact_internal.h"
 
 #include <math.h>
@@ -42,12 +43,7 @@ int sx_bouc_wen_chain(const rw_scene *sc, int i)
     return sx_bouc_wen(sc, i) && (1.0 - s->alpha) * s->Fy > 0.0 && s->k > 0.0;
 }
 
-/* storey i's diaphragm deformation and its rate at an augmented state */
-static double deformation(const sx_region *r, int i, const double xa[])
-{
-    return xa[r->diaph_dof[i]] - (r->floor_dof[i] >= 0 ? xa[r->floor_dof[i]] : 0.0);
-}
-
+/* storey i's diaphragm deformation rate at an augmented state */
 static double deformation_rate(const sx_region *r, int i, const double xa[])
 {
     const int nd = r->ndof;
@@ -192,18 +188,6 @@ static double chain_at(const double *c, double u, double h)
     return c[0] + tau * (c[1] + 0.5 * tau * c[2]);
 }
 
-/* alpha k's work from xa0 to xa, of every Bouc-Wen spring (with a z chain or not) */
-static void linear_work(sx_run *R, const sx_region *r, const double xa0[], const double xa[])
-{
-    rw_scene *sc = &R->sc;
-    int i;
-    for (i = 0; i < sc->S.n_storeys; i++) {
-        const bd_spring *sp = &sc->S.building.diaph[i];
-        const double d0 = deformation(r, i, xa0), d1 = deformation(r, i, xa);
-        if (sx_bouc_wen(sc, i)) floor_states(sc, R->x, i)[BD_WORK_D] += 0.5 * sp->alpha * sp->k * (d1 - d0) * (d1 + d0);
-    }
-}
-
 /* the integral over [0, u] of the step of the chain's z times the deformation rate [m]: on the
  * series, the product of z's quadratic in u with the rate's polynomial; on the table, its work rows */
 static double z_times_rate(const sx_region *r, int k, const double xa0[], double u, const sx_step *st,
@@ -228,12 +212,11 @@ static double z_times_rate(const sx_region *r, int k, const double xa0[], double
     return sum;
 }
 
-void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u,
-                         const sx_step *st, const sx_series *s)
+void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], double u, const sx_step *st,
+                         const sx_series *s)
 {
     const double h = s ? s->L : st->h;
     int k;
-    linear_work(R, r, xa0, xa);
     for (k = 0; k < r->nz; k++) {
         const int i = r->z_storey[k];
         const bd_spring *sp = &R->sc.S.building.diaph[i];

@@ -224,11 +224,16 @@ int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with
 int sx_bilinear(const rw_scene *sc, int i);
 /* the branch and force constant of bilinear diaphragm i at the scene state x (rates dx) */
 void sx_bilinear_key(const rw_scene *sc, const double x[], const double dx[], int i, sx_key *key);
-/* the hysteretic variable z and the work done on each bilinear diaphragm brought up to R->x from
- * the current region (before the scene's own functions read x) */
+/* the hysteretic variable z and the work done on each bilinear diaphragm, and the alpha k work
+ * done on each Bouc-Wen one, brought up to R->x from the current region (before the scene's own
+ * functions read x) */
 void sx_sync_hysteresis(sx_run *R);
-/* the indicators of the current region's bilinear diaphragms, and where their work starts */
+/* the indicators of the current region's bilinear diaphragms, and where their work (and Bouc-Wen
+ * diaphragms' alpha k work) starts */
 void sx_bilinear_entered(sx_run *R);
+/* diaphragm i's spring stiffness in the region's linear system: k, or alpha k on a yielding
+ * bilinear branch and for Bouc-Wen (whose hysteretic share is the z chain's input) */
+double sx_linear_stiffness(const rw_scene *sc, const sx_key *key, int i);
 
 /* ---- Bouc-Wen diaphragms (rw_scene_exact_bouc_wen.c) ---- */
 /* is diaphragm i a smooth hysteresis (Bouc-Wen, pinched or not), whose force (1 - alpha) Fy z
@@ -242,10 +247,10 @@ static inline int sx_z_col(const sx_region *r, int k) { return r->n + 3 + 3 * k;
  * the chains' quadratics fitted by Picard rounds along the exact motion from the table of h (st)
  * or, for st NULL, the exact series; 0, or 1 if the rounds did not settle */
 int sx_bouc_wen_fit(const sx_run *R, const sx_region *r, const sx_step *st, double h, double xa0[]);
-/* the Bouc-Wen diaphragms' z and work brought to the state xa at u in (0, 1] of the fitted step from
- * xa0: on its series s, or for s NULL (u = 1) on its table st */
-void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], const double xa[], double u,
-                         const sx_step *st, const sx_series *s);
+/* the Bouc-Wen diaphragms' z and hysteretic work brought to u in (0, 1] of the fitted step from xa0:
+ * on its series s, or for s NULL (u = 1) on its table st */
+void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], double u, const sx_step *st,
+                         const sx_series *s);
 
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */

@@ -166,7 +166,7 @@ static void building(const rw_scene *sc, const sx_region *r, lti *s)
         const bd_spring *d = &b->diaph[i];
         /* the diaphragm's spring on the region's branch, F = k_b (y - u) + F0 (a bilinear one's;
          * Rayleigh's a1 on the initial stiffness, as building_physics.c takes it) */
-        const double k_b = r->key.branch[i] || sx_bouc_wen(sc, i) ? d->alpha * d->k : d->k;
+        const double k_b = sx_linear_stiffness(sc, &r->key, i);
         const double F0 = r->key.F0[i] * (1.0 - d->alpha) * d->Fy;
         add(s->M, s->nd, y, y, b->md[i]);
         add_b(s, y, -b->md[i]);

@@ -66,7 +66,7 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
         R->work_ground += wg;
         R->work_damping += wd;
         sx_series_at(r, &s, fmin(u, 1.0), xa);
-        if (r->nz) sx_bouc_wen_advance(R, r, xa0, xa, fmin(u, 1.0), NULL, &s);
+        if (r->nz) sx_bouc_wen_advance(R, r, xa0, fmin(u, 1.0), NULL, &s);
         sx_scatter(r, xa, R->x);
         R->res->steps++;
         if (u > 1.0) {
@@ -97,7 +97,7 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     quiet = sx_watch_quiet(R, r, st, xa0, xa1);
     st->used = R->stamp;
     if (!quiet) return 0;
-    if (r->nz) sx_bouc_wen_advance(R, r, xa0, xa1, 1.0, st, NULL);
+    if (r->nz) sx_bouc_wen_advance(R, r, xa0, 1.0, st, NULL);
     table_step(R, r, st, xa0, xa1, t1);
     return 1;
 }
