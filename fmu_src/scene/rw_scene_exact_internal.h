@@ -82,14 +82,17 @@ typedef struct {
      * slow steps' loop over the functionals runs on these, which the compiler vectorises */
     double share_re[SX_MAX_N][SX_MAX_F], share_im[SX_MAX_N][SX_MAX_F], share_abs[SX_MAX_N][SX_MAX_F];
     double cond;     /* the product of Vr's and Winv's balanced norms */
-    double Winv_cols[SX_MAX_N * SX_MAX_N]; /* Winv by columns */
+    double Winv[SX_MAX_N * SX_MAX_N]; /* Winv, row-major */
+    double wnorm[SX_MAX_N]; /* sum_i |Winv_ji| S_i over mode k's rows j: |zeta_k| <= wnorm_k max_i |x_i| / S_i */
 } sx_modes;
 
 /* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
  * coefficients' and `tail`, its derivative's within theirs and `dtail` */
 typedef struct {
     double coef[SX_LO + 1], tail, dtail;
-    int deg; /* the coefficients in use (the modes' polynomials are quadratics) */
+    int deg;  /* the coefficients in use */
+    int bern; /* 1: coef[0..3] are the Bernstein coefficients of a cubic (sx_hermite_polys), else
+                 the monomial ones (the Taylor rows of a step's table) */
 } sx_lopoly;
 
 /* the exact propagators of a region over one step length h */
@@ -111,6 +114,7 @@ typedef struct {
     double *zwork; /* (nz 3) x na: its integrals over the step of tau^m e_k.exp(Aa tau), m = 0, 1, 2,
                       in row 3 k + m (the hysteretic force's work, exactly) */
     double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
+    double complex emu[SX_MAX_N]; /* e^(lam_k h) of each mode of the region (its modes valid) */
 } sx_step;
 
 typedef struct {
@@ -131,7 +135,11 @@ typedef struct {
     int f_nz[SX_MAX_F], f_at[SX_MAX_F][SX_MAX_NA]; /* their nonzero entries, in order (most hold one
                                                       or two: sx_functional) */
     int f_kind[SX_MAX_F], f_storey[SX_MAX_F];
+    int f_of[RW_SCENE_MAX_STOREYS][SX_DEFORM_RATE + 1]; /* storey i's functional of each kind (-1: none) */
     double f_scale[SX_MAX_F];  /* sum_i |l_i| S_i over x: a functional's share of a tail in the S norm */
+    double FA[SX_MAX_F][SX_MAX_NA];   /* their rates along the motion, F Aa, rows over xa ... */
+    int fa_nz[SX_MAX_F], fa_at[SX_MAX_F][SX_MAX_NA]; /* ... and their nonzero entries (most hold one or
+                                                      two: a velocity, or a difference of two) */
     double mom[SX_MAX_NA];     /* the horizontal momentum relative to the ground, a row over xa */
     /* the scene's energy on the region, (1/2) V.M V + (1/2) X.K X - f.X + e_const (M, K: its
      * Hessians; e_const: from rw_scene_energy at a state of the region) */
@@ -211,6 +219,15 @@ static inline double sx_functional(const sx_region *r, int f, const double *v)
     double sum = 0.0;
     int k;
     for (k = 0; k < r->f_nz[f]; k++) sum += r->F[f][r->f_at[f][k]] * v[r->f_at[f][k]];
+    return sum;
+}
+
+/* functional f's rate along the region's motion at xa: F Aa xa, over its nonzero entries */
+static inline double sx_functional_rate(const sx_region *r, int f, const double *v)
+{
+    double sum = 0.0;
+    int k;
+    for (k = 0; k < r->fa_nz[f]; k++) sum += r->FA[f][r->fa_at[f][k]] * v[r->fa_at[f][k]];
     return sum;
 }
 
@@ -301,6 +318,8 @@ void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[])
 
 /* ---- polynomials on [0, 1] (rw_scene_exact_poly.c) ---- */
 double sx_poly_eval(const double *p, int deg, double u);
+/* a quiet test's polynomial at u (either basis) */
+double sx_lopoly_at(const sx_lopoly *p, double u);
 /* sum_k |p_k|: a bound on |p| over [0, 1] (0 for deg < 0) */
 double sx_poly_abs_sum(const double *p, int deg);
 double sx_poly_deriv(const double *p, int deg, double u);
@@ -315,14 +334,21 @@ double sx_poly_integral(const double *p, int deg, double b);
 void sx_poly_square(const double *p, int deg, double *sq);
 void sx_poly_product(const double *p, const double *q, int deg, double *pq);
 
-/* ---- modes and slow steps (rw_scene_exact_modes.c) ---- */
+/* ---- modes (rw_scene_exact_modes.c) ---- */
 void sx_modes_build(sx_region *r);
 /* the modes of a region whose first-order matrix is r's: all but the constant's modal forcing */
 void sx_modes_adopt(sx_region *r, const sx_modes *of);
-/* each functional's polynomial over a step of length h from xa0 (the trend of the slow modes and the
- * fast modes' quasi-static part, with the slow modes' remainder and the fast modes' free motion as
- * the tail); 0 if the region has no usable modes */
-int sx_modes_polys(const sx_region *r, double h, const double xa0[], sx_lopoly P[SX_MAX_F]);
+/* the bounds' allowance for the decomposition's rounding: the modal values' error relative to
+ * their size is a few ulps times the condition */
+#define SX_MODES_MARGIN(cond) (256.0 * DBL_EPSILON * (cond) + 1e-12)
+
+/* ---- the quiet test's polynomials from a step's exact ends (rw_scene_exact_hermite.c) ---- */
+/* each functional's cubic Hermite interpolant over a step of length h from its values and rates at
+ * the exact ends xa0 and xa1 = exp(Aa h) xa0 (Bernstein coefficients), with the modes' bound on the
+ * motion's departure from it as the tail; emu: e^(lam_k h) of each mode (NULL: computed where
+ * needed); 0 if the region has no usable modes */
+int sx_hermite_polys(const sx_region *r, double h, const double complex *emu, const double xa0[], const double xa1[],
+                     sx_lopoly P[SX_MAX_F]);
 
 /* ---- nearly defective pairs of modes (rw_scene_exact_blocks.c) ---- */
 /* dgeev's basis Vr (row-major; eigenvalues wr + i wi) with its balanced inverse Winv: the real
@@ -352,9 +378,11 @@ void sx_watch_lines(sx_run *R);
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
 /* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
-/* the modes' bound on |storey i's peak quantity `kind`| over a step of length h from xa0 if it may
- * rise over that quantity's peak inside the step, else 0 (INFINITY: the region has no usable modes) */
-double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], int storey, int kind);
+/* the modes' bound on |storey i's peak quantity `kind`| over a step of length h from xa0 to its
+ * exact end xa1 if it may rise over that quantity's peak inside the step, else 0 (INFINITY: the
+ * region has no usable modes) */
+double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], const double xa1[], int storey,
+                           int kind);
 /* the largest |value| of storey i's peak quantity `kind` over [0, 1] of a series, if over best */
 double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, int storey, int kind, double best);
 /* the work of the ground and of the dashpots over [0, u] of a series */

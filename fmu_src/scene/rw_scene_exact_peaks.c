@@ -76,12 +76,14 @@ static const halves *chain_for(sx_run *R, halves *c, const sx_doubt *d)
     return c;
 }
 
-/* The doubt's piece `level` [0, h] from xa0, whose bound is over the peak: halved while it is
- * longer than the exact series' steps, each half's exact ends taken as peaks and the half dropped
- * where the modes' bound over it no longer rises over the peak. A fast mode (a diaphragm of a few
- * grams per metre) makes the series' steps a ten-thousandth of the record's: the halves find the
- * peak in a few dozen bounds where the series would take that many steps per interval. */
-static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const double xa0[], double h, int level)
+/* The doubt's piece `level` [0, h] from xa0 to its exact end xa1, whose bound is over the peak:
+ * halved while it is longer than the exact series' steps, each half's exact ends taken as peaks and
+ * the half dropped where the modes' bound over it no longer rises over the peak. A fast mode (a
+ * diaphragm of a few grams per metre) makes the series' steps a ten-thousandth of the record's:
+ * the halves find the peak in a few dozen bounds where the series would take that many steps per
+ * interval. */
+static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const double xa0[], const double xa1[],
+                          double h, int level)
 {
     const sx_region *r = &R->regions[d->region];
     double mid[SX_MAX_NA];
@@ -89,8 +91,18 @@ static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const d
     if (!c || level >= c->levels || !r->modes.valid) return on_series(R, r, d, xa0, h);
     sx_matvec_cols(r->na, r->na, c->Et + (size_t)(level + 1) * (size_t)(r->na * r->na), xa0, mid);
     sx_watch_peaks_at(R, r, mid); /* the motion's own values: they may settle the halves */
-    if (sx_watch_peak_bound(R, r, half, xa0, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, xa0, half, level + 1);
-    if (sx_watch_peak_bound(R, r, half, mid, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, mid, half, level + 1);
+    if (sx_watch_peak_bound(R, r, half, xa0, mid, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, xa0, mid, half, level + 1);
+    if (sx_watch_peak_bound(R, r, half, mid, xa1, d->storey, d->kind) > 0.0) resolve_piece(R, c, d, mid, xa1, half, level + 1);
+}
+
+/* doubt d resolved: halved on its chain of propagators (NULL: none could be had), else on the series */
+static void resolve(sx_run *R, const halves *c, const sx_doubt *d)
+{
+    const sx_region *r = &R->regions[d->region];
+    double end[SX_MAX_NA];
+    if (!c || !r->modes.valid) return on_series(R, r, d, d->xa0, d->h);
+    sx_matvec_cols(r->na, r->na, c->Et, d->xa0, end);
+    resolve_piece(R, c, d, d->xa0, end, d->h, 0);
 }
 
 static int larger_bound_first(const void *a, const void *b)
@@ -110,7 +122,7 @@ void sx_settle_doubts(sx_run *R, int region)
             R->doubts[kept++] = *d;
             continue;
         }
-        if (d->bound > *sx_peak_of(R->res, d->storey, d->kind)) resolve_piece(R, chain_for(R, &chain, d), d, d->xa0, d->h, 0);
+        if (d->bound > *sx_peak_of(R->res, d->storey, d->kind)) resolve(R, chain_for(R, &chain, d), d);
     }
     free(chain.Et);
     R->ndoubts = kept;

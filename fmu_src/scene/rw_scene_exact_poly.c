@@ -187,3 +187,10 @@ void sx_poly_square(const double *p, int deg, double *sq)
 {
     sx_poly_product(p, p, deg, sq);
 }
+
+double sx_lopoly_at(const sx_lopoly *p, double u)
+{
+    const double v = 1.0 - u;
+    if (!p->bern) return sx_poly_eval(p->coef, p->deg, u);
+    return v * v * v * p->coef[0] + 3.0 * u * v * (v * p->coef[1] + u * p->coef[2]) + u * u * u * p->coef[3];
+}

@@ -225,9 +225,26 @@ static int augmented(const lti *s, sx_region *r)
 static void functional(sx_region *r, int kind, int storey)
 {
     const int k = r->nf++;
+    r->f_of[storey][kind] = k;
     memset(r->F[k], 0, sizeof r->F[k]);
     r->f_kind[k] = kind;
     r->f_storey[k] = storey;
+}
+
+/* the functionals' rates along the motion, F Aa, with their nonzero entries */
+static void rates(sx_region *r)
+{
+    const int na = r->na;
+    int f, i, j;
+    for (f = 0; f < r->nf; f++) {
+        r->fa_nz[f] = 0;
+        for (j = 0; j < na; j++) {
+            double v = 0.0;
+            for (i = 0; i < na; i++) v += r->F[f][i] * r->Aa[i * na + j];
+            r->FA[f][j] = v;
+            if (v != 0.0) r->fa_at[f][r->fa_nz[f]++] = j;
+        }
+    }
 }
 
 /* q1, q2 of each standing wall; each storey's diaphragm deformation and base acceleration */
@@ -243,6 +260,8 @@ static void functionals(const rw_scene *sc, sx_region *r)
     const int nd = r->ndof, na = r->na;
     int i, j;
     r->nf = 0;
+    for (i = 0; i < RW_SCENE_MAX_STOREYS; i++)
+        for (j = 0; j <= SX_DEFORM_RATE; j++) r->f_of[i][j] = -1;
     for (i = 0; i < sc->S.n_storeys; i++) {
         if (r->wall_dof[i] >= 0) {
             functional(r, SX_Q1, i);
@@ -263,6 +282,7 @@ static void functionals(const rw_scene *sc, sx_region *r)
             if (r->floor_dof[i] >= 0) r->F[r->nf - 1][nd + r->floor_dof[i]] = -1.0;
         }
     }
+    rates(r);
     for (i = 0; i < r->nf; i++) {
         r->f_scale[i] = 0.0;
         for (j = 0; j < r->n; j++) r->f_scale[i] += fabs(r->F[i][j]) * r->scale[j];

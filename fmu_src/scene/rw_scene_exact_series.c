@@ -327,6 +327,7 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
     }
     sx_transpose(r->na, r->na, st->E, st->Et);
     sx_transpose(r->na, r->na, st->Wd, st->Wdt);
+    for (k = 0; r->modes.valid && k < r->modes.count; k++) st->emu[k] = cexp(r->modes.lam[k] * h);
     st->used = stamp;
     st->h = h;
     return st;

@@ -89,7 +89,8 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     int quiet;
     if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
     st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
-    if (!st || st->is_long) return 0; /* no memory, or a length at the limit, doubled: no polynomial rows */
+    if (!st || (st->is_long && !r->modes.valid)) return 0; /* no memory, or a length at the limit, doubled: no
+                                                              polynomial rows (the modes bound without them) */
     sx_gather(r, R->x, ag0, slope, xa0);
     if (r->nz && sx_bouc_wen_fit(R, r, st, h, xa0)) return 0; /* not settled: the series tries, in
                                                                   shorter parts if it must */
@@ -123,8 +124,8 @@ static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slop
     return 0;
 }
 
-/* a slow step [R->t, t1] cleared by the modes' quiet test on its (long) table: 0 if taken, else
- * why not (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes) */
+/* a slow step [R->t, t1] cleared by the quiet test on its (long) table: 0 if taken, else why not
+ * (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes, or no memory for the table) */
 static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
 {
     sx_region *r = current(R);
@@ -133,13 +134,16 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     sx_lopoly P[SX_MAX_F];
     sx_step *st;
     int why;
+    if (!r->modes.valid) return -1;
+    if (!(st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp))) return -1; /* no memory for it: the dyadic
+                                    pieces end on the exact series */
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
-    if (!sx_modes_polys(r, h, xa0, P)) return -1;
-    if ((why = sx_watch_quiet_polys(R, r, P, h, xa0)) != 0) return why;
-    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp); /* only now: a step not cleared needs no table */
-    if (!st) return -1; /* no memory for it: the dyadic pieces end on the exact series (the doubts
-                           kept are of the same motion, resolved on it) */
     sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
+    sx_hermite_polys(r, h, st->emu, xa0, xa1, P);
+    st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
+    why = sx_watch_quiet_polys(R, r, P, h, xa0);
+    st->used = R->stamp;
+    if (why) return why;
     sx_watch_peaks_at(R, r, xa1);
     table_step(R, r, st, xa0, xa1, t1);
     return 0;

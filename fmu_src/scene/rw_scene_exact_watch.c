@@ -86,23 +86,6 @@ static double collapse_tol(const sx_collapse *c, double q1, double q2)
 }
 
 static span poly_span(const sx_lopoly *p);
-
-/* a quadratic's range over [0, 1], its ends' and its vertex's values (the modes' polynomials are
- * quadratics: the sum of their coefficients' magnitudes would widen it), widened by its tail.
- * The values' rounding is a few ulps of the coefficients, far inside the tail's margin for the
- * decomposition's rounding (SX_MODES_MARGIN). */
-static span quadratic_span(const sx_lopoly *p)
-{
-    const double c0 = p->coef[0], c1 = p->coef[1], c2 = p->coef[2], end = c0 + c1 + c2;
-    span s = {c0 < end ? c0 : end, c0 < end ? end : c0};
-    if (c2 != 0.0 && (c1 < 0.0) == (c2 > 0.0) && fabs(c1) < 2.0 * fabs(c2)) { /* vertex -c1/(2 c2) inside */
-        const double v = c0 - c1 * c1 / (4.0 * c2);
-        if (v < s.lo) s.lo = v;
-        if (v > s.hi) s.hi = v;
-    }
-    s.lo -= p->tail, s.hi += p->tail;
-    return s;
-}
 static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopoly *b, double cb);
 
 /* G(q) = q.A q - c.q over the step: beyond the radius where it cannot vanish, or clear of zero as
@@ -127,11 +110,41 @@ static int collapse_quiet(const sx_collapse *c, const sx_lopoly *q1, const sx_lo
     return clear_of_zero(G, collapse_tol(c, q1->coef[0], q2->coef[0]));
 }
 
+/* a cubic's range over [0, 1] from its Bernstein coefficients (sx_hermite_polys): its ends where
+ * its control polygon is monotone, else also its values where its rate vanishes inside, widened by
+ * its tail. The values' rounding is a few ulps of the coefficients, far inside the tail's margin
+ * for the decomposition's rounding (SX_MODES_MARGIN). */
+static span bern_span(const sx_lopoly *p)
+{
+    const double *b = p->coef, e0 = b[1] - b[0], e1 = b[2] - b[1], e2 = b[3] - b[2];
+    span s = {min2(b[0], b[3]), max2(b[0], b[3])};
+    if (!((e0 >= 0.0 && e1 >= 0.0 && e2 >= 0.0) || (e0 <= 0.0 && e1 <= 0.0 && e2 <= 0.0))) {
+        /* the rate over 3 is e0 + 2 (e1 - e0) u + (e0 - 2 e1 + e2) u^2 */
+        const double a = e0 - 2.0 * e1 + e2, c = 2.0 * (e1 - e0), disc = c * c - 4.0 * a * e0;
+        double roots[2];
+        int n = 0, k;
+        if (a == 0.0) {
+            if (c != 0.0) roots[n++] = -e0 / c;
+        } else if (disc >= 0.0) {
+            const double q = -0.5 * (c + copysign(sqrt(disc), c));
+            roots[n++] = q / a;
+            if (q != 0.0) roots[n++] = e0 / q;
+        }
+        for (k = 0; k < n; k++)
+            if (roots[k] > 0.0 && roots[k] < 1.0) {
+                const double v = sx_lopoly_at(p, roots[k]);
+                s.lo = min2(s.lo, v), s.hi = max2(s.hi, v);
+            }
+    }
+    s.lo -= p->tail, s.hi += p->tail;
+    return s;
+}
+
 static span poly_span(const sx_lopoly *p)
 {
     span s = {p->coef[0] - p->tail, p->coef[0] + p->tail};
     int k;
-    if (p->deg == 2) return quadratic_span(p);
+    if (p->bern) return bern_span(p);
     for (k = 1; k <= p->deg; k++) {
         if (p->coef[k] < 0.0) s.lo += p->coef[k];
         else s.hi += p->coef[k];
@@ -143,6 +156,11 @@ static int monotone(const sx_lopoly *p)
 {
     span d = {p->coef[1] - p->dtail, p->coef[1] + p->dtail};
     int k;
+    if (p->bern) { /* the rate's Bernstein coefficients, 3 (b_k+1 - b_k) */
+        const double r0 = 3.0 * (p->coef[1] - p->coef[0]), r1 = 3.0 * (p->coef[2] - p->coef[1]),
+                     r2 = 3.0 * (p->coef[3] - p->coef[2]);
+        return min2(r0, min2(r1, r2)) > p->dtail || max2(r0, max2(r1, r2)) < -p->dtail;
+    }
     for (k = 2; k <= p->deg; k++) {
         if (p->coef[k] < 0.0) d.lo += k * p->coef[k];
         else d.hi += k * p->coef[k];
@@ -150,13 +168,20 @@ static int monotone(const sx_lopoly *p)
     return d.lo > 0.0 || d.hi < 0.0;
 }
 
+/* a bound on |p| over [0, 1] from its coefficients alone */
+static double coef_bound(const sx_lopoly *p)
+{
+    if (p->bern) return max2(max2(fabs(p->coef[0]), fabs(p->coef[1])), max2(fabs(p->coef[2]), fabs(p->coef[3])));
+    return sx_poly_abs_sum(p->coef, p->deg);
+}
+
 /* the bound on |p| over the step if a peak quantity p can rise over `peak` inside it, else 0 (the
- * sum of its coefficients' sizes and its tail first: most steps stay under the peak by that) */
+ * coefficients' bound and the tail first: most steps stay under the peak by that) */
 static double may_rise_to(const sx_lopoly *P, double peak)
 {
     span s;
     double bound;
-    if (P->tail + sx_poly_abs_sum(P->coef, P->deg) <= peak) return 0.0;
+    if (P->tail + coef_bound(P) <= peak) return 0.0;
     s = poly_span(P);
     bound = max2(fabs(s.lo), fabs(s.hi));
     return bound > peak && !monotone(P) ? bound : 0.0;
@@ -166,6 +191,7 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
 {
     int k;
     out->deg = b && b->deg > a->deg ? b->deg : a->deg;
+    out->bern = a->bern;
     for (k = 0; k <= out->deg; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
     out->tail = fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
     out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
@@ -220,6 +246,7 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
         p->tail = r->f_scale[f] * tn / (1.0 - q);
         p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
         p->deg = SX_LO;
+        p->bern = 0;
     }
 }
 
@@ -227,17 +254,14 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
 static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[SX_MAX_F],
                         storey_polys S[RW_SCENE_MAX_STOREYS])
 {
-    int f, i;
-    for (i = 0; i < R->sc.S.n_storeys; i++) S[i].q1 = S[i].q2 = S[i].deform = S[i].acc = S[i].rate = NULL;
-    for (f = 0; f < r->nf; f++) {
-        storey_polys *s = &S[r->f_storey[f]];
-        switch (r->f_kind[f]) {
-        case SX_Q1: s->q1 = &P[f]; break;
-        case SX_Q2: s->q2 = &P[f]; break;
-        case SX_DEFORM: s->deform = &P[f]; break;
-        case SX_BASE_ACC: s->acc = &P[f]; break;
-        default: s->rate = &P[f]; break;
-        }
+    int i;
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        const int *f = r->f_of[i];
+        S[i].q1 = f[SX_Q1] >= 0 ? &P[f[SX_Q1]] : NULL;
+        S[i].q2 = f[SX_Q2] >= 0 ? &P[f[SX_Q2]] : NULL;
+        S[i].deform = f[SX_DEFORM] >= 0 ? &P[f[SX_DEFORM]] : NULL;
+        S[i].acc = f[SX_BASE_ACC] >= 0 ? &P[f[SX_BASE_ACC]] : NULL;
+        S[i].rate = f[SX_DEFORM_RATE] >= 0 ? &P[f[SX_DEFORM_RATE]] : NULL;
     }
 }
 
@@ -285,26 +309,54 @@ static int quantity(const sx_run *R, int i, const storey_polys *s, int kind, sx_
     }
 }
 
-/* the step's peaks that may rise inside it are kept as doubts (1: one could not be) */
+/* a bound on |ca a + cb b| over the step from the coefficients and tails alone (b NULL: ca a) */
+static double coarse_bound(const sx_lopoly *a, double ca, const sx_lopoly *b, double cb)
+{
+    double m = 0.0;
+    int k;
+    if (a->bern) {
+        for (k = 0; k < 4; k++) m = max2(m, fabs(ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0)));
+    } else {
+        for (k = 0; k <= a->deg; k++) m += fabs(ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0));
+    }
+    return m + fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
+}
+
+/* that bound for storey i's peak quantity `kind` (0: the storey has none) */
+static double coarse_quantity(const sx_run *R, int i, const storey_polys *s, int kind)
+{
+    const double h2 = 0.5 * R->sc.S.wall[i].h;
+    switch (kind) {
+    case SX_PEAK_S1: return s->q1 ? coarse_bound(s->q1, h2, NULL, 0.0) : 0.0;
+    case SX_PEAK_S2: return s->q1 ? coarse_bound(s->q1, h2, s->q2, h2) : 0.0;
+    case SX_PEAK_DEFORM: return s->deform ? coarse_bound(s->deform, 1.0, NULL, 0.0) : 0.0;
+    default: return s->acc ? coarse_bound(s->acc, 1.0, NULL, 0.0) : 0.0;
+    }
+}
+
+/* the step's peaks that may rise inside it are kept as doubts (1: one could not be); a quantity
+ * whose coarse bound is under its peak (most, once a record's peaks have been reached) first */
 static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double xa0[])
 {
     int i, kind;
     for (i = 0; i < R->sc.S.n_storeys; i++)
         for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
+            const double peak = *sx_peak_of(R->res, i, kind);
             sx_lopoly p;
             double bound;
-            if (!quantity(R, i, &S[i], kind, &p)) continue;
-            bound = may_rise_to(&p, *sx_peak_of(R->res, i, kind));
+            if (coarse_quantity(R, i, &S[i], kind) <= peak || !quantity(R, i, &S[i], kind, &p)) continue;
+            bound = may_rise_to(&p, peak);
             if (bound > 0.0 && sx_doubt_peak(R, i, kind, bound, h, xa0)) return 1;
         }
     return 0;
 }
 
-double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], int storey, int kind)
+double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double xa0[], const double xa1[], int storey,
+                           int kind)
 {
     sx_lopoly P[SX_MAX_F], p;
     storey_polys S[RW_SCENE_MAX_STOREYS];
-    if (!sx_modes_polys(r, h, xa0, P)) return INFINITY;
+    if (!sx_hermite_polys(r, h, NULL, xa0, xa1, P)) return INFINITY;
     storey_view(R, r, P, S);
     return quantity(R, storey, &S[storey], kind, &p) ? may_rise_to(&p, *sx_peak_of(R->res, storey, kind)) : 0.0;
 }
@@ -323,9 +375,12 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], d
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
 {
     sx_lopoly P[SX_MAX_F];
-    low_polys(r, st, xa0, P);
+    if (r->modes.valid) { /* the ends first: the polynomials are their interpolants */
+        sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
+        sx_hermite_polys(r, st->h, st->emu, xa0, xa1, P);
+    } else low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
-    sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
+    if (!r->modes.valid) sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
 }

@@ -8,76 +8,9 @@
 
 #include "check.h"
 #include "scene_pulse.h"
+#include "scene_random.h"
 #include "rw_scene_exact.h"
 #include "rw_scene_exact_internal.h"
-
-static double uniform(double lo, double hi) { return lo + (hi - lo) * (rand() / (double)RAND_MAX); }
-static int coin(void) { return rand() % 2; }
-
-/* a wall in plausible ranges, tied to its diaphragm (support 3) */
-static void random_wall(rw_params *p)
-{
-    rw_params_default(p);
-    p->support = RW_FLEXIBLE_TOP;
-    p->hingeLaw = coin() ? RW_DOHERTY_HINGE : RW_SEMI_RIGID_HINGE;
-    p->b = uniform(0.1, 0.4);
-    p->h = uniform(2.5, 4.5);
-    p->W = uniform(15e3, 25e3) * p->b * p->h;
-    p->psi = uniform(0.0, 1.0);
-    p->Kd = pow(10.0, uniform(5.0, 9.0));
-    p->er = uniform(0.6, 1.0);
-}
-
-static void random_spec(rw_scene_spec *s)
-{
-    int i;
-    memset(s, 0, sizeof *s);
-    s->n_storeys = 1 + rand() % 3;
-    s->rigid_in_plane = coin();
-    s->building.diaphragm_law = rand() % 3 == 0 ? BD_BOUC_WEN : (coin() ? BD_BILINEAR : BD_ELASTIC);
-    s->building.n_bw = 1.0 + rand() % 2, s->building.beta = uniform(0.1, 0.9);
-    s->building.a0 = coin() ? uniform(0.0, 0.5) : 0.0;
-    s->building.a1 = coin() ? uniform(0.0, 1e-3) : 0.0;
-    for (i = 0; i < s->n_storeys; i++) {
-        bd_params *b = &s->building;
-        b->md[i] = uniform(50.0, 500.0);
-        b->diaph[i].k = pow(10.0, uniform(3.5, 6.0));
-        b->cd[i] = uniform(0.0, 0.1) * 2.0 * sqrt(b->diaph[i].k * b->md[i]);
-        b->diaph[i].Fy = b->diaph[i].k * uniform(0.002, 0.05), b->diaph[i].alpha = uniform(0.0, 0.5);
-        b->m[i] = uniform(500.0, 3000.0);
-        b->storey[i].k = pow(10.0, uniform(6.0, 8.0));
-        b->cs[i] = uniform(0.0, 0.05) * 2.0 * sqrt(b->storey[i].k * b->m[i]);
-        s->has_wall[i] = i == 0 || rand() % 4 != 0;
-        if (s->has_wall[i]) random_wall(&s->wall[i]);
-    }
-}
-
-/* a state of a motion: rotations up to the toppling limit, the building a few centimetres off, each
- * tie stretched by a force of at most a few kN per metre (random displacements of a 1e8 N/m per m
- * tie would make forces of MN, whose rates the scene's own arithmetic takes to 1e-10 only) */
-static void random_state(const rw_scene *sc, double *x)
-{
-    const int N = sc->S.n_storeys;
-    double y_below = 0.0, w_below = 0.0;
-    int i, k;
-    memset(x, 0, sizeof(double) * RW_SCENE_NX);
-    for (i = 0; i < N; i++) {
-        double *xi = RW_SCENE_WALL(x, i), *f = RW_SCENE_BUILDING(sc, x) + BD_STATES_PER_FLOOR * i;
-        f[BD_Y] = uniform(-0.05, 0.05);
-        f[BD_W] = uniform(-0.5, 0.5);
-        if (sc->S.has_wall[i]) {
-            const rw_params *p = &sc->S.wall[i];
-            const double qt = sc->D[i].q_topple, stretch = uniform(-3e3, 3e3) / p->Kd;
-            for (k = 0; k < 2; k++) xi[k] = uniform(-0.8, 0.8) * qt * (coin() ? 1.0 : 0.05);
-            for (k = 2; k < 4; k++) xi[k] = uniform(-0.3, 0.3);
-            f[BD_Y] = y_below + 0.5 * p->h * (xi[0] + xi[1]) - stretch;
-            f[BD_W] = w_below + 0.5 * p->h * (xi[2] + xi[3]) - 100.0 * stretch;
-        }
-        if (!sc->S.rigid_in_plane) f[BD_U] = uniform(-0.02, 0.02), f[BD_V] = uniform(-0.2, 0.2);
-        f[BD_ZD] = coin() ? uniform(-1.0, 1.0) : (coin() ? 1.0 : -1.0); /* a bilinear one: elastic, or at a limit */
-        y_below = f[BD_Y], w_below = f[BD_W];
-    }
-}
 
 /* the largest |d_i - e_i| over the positions' and velocities' rates, against the largest term of
  * each rate (the sums cancel: a stiff tie's force is a large difference) */
@@ -306,78 +239,6 @@ static void test_products_agree_bitwise(void)
     CHECK(differ == 0, "%d of the products by columns differ from the row-wise ones", differ);
 }
 
-/* the exact motion's functionals at u of [0, 1] over a step of length h from xa0 (series parts) */
-static void exact_values(const sx_region *r, const double xa0[], double h, double u, double *values)
-{
-    const int parts = sx_parts(r, h * u);
-    double xa[SX_MAX_NA];
-    sx_series s;
-    int p, f;
-    memcpy(xa, xa0, sizeof(double) * (size_t)r->na);
-    for (p = 0; p < parts && u > 0.0; p++) {
-        sx_series_of(r, xa, h * u / parts, &s);
-        sx_series_at(r, &s, 1.0, xa);
-    }
-    for (f = 0; f < r->nf; f++) values[f] = sx_functional(r, f, xa);
-}
-
-/* The paper's first wall (dohertyHinge) under a stiff tie to a light diaphragm, in the region the
- * 0.3-g Gaussian pulse takes it to where its mechanism has no stiffness: a double eigenvalue 0 with
- * one eigenvector, which the modes keep as a block (rw_scene_exact_blocks.c). The region's hinge
- * moments Q = c + J q are the run's (exact in binary). Its polynomials with their tails bound the
- * exact motion at every point tried, over steps from 1 ms to 20 ms from random states. */
-static void test_a_free_mechanism_is_a_block_that_bounds(void)
-{
-    rw_scene_spec spec;
-    rw_scene sc;
-    sx_region r;
-    sx_key key;
-    double x[RW_SCENE_NX];
-    int trial, misses = 0, tried = 0;
-    memset(&spec, 0, sizeof spec);
-    spec.n_storeys = 1, spec.rigid_in_plane = 1, spec.has_wall[0] = 1;
-    rw_params_default(&spec.wall[0]);
-    spec.wall[0].support = RW_FLEXIBLE_TOP, spec.wall[0].hingeLaw = RW_DOHERTY_HINGE;
-    spec.wall[0].b = 0.15, spec.wall[0].h = 2.5, spec.wall[0].W = 6622.0, spec.wall[0].psi = 0.0;
-    spec.wall[0].Kd = 1e8, spec.wall[0].er = 0.86;
-    spec.building.md[0] = 1e-2, spec.building.diaph[0].k = 5e4;
-    spec.building.cd[0] = 0.1 * sqrt(spec.building.diaph[0].k * spec.building.md[0]);
-    rw_scene_start_state(&spec, NULL, x);
-    rw_scene_init(&sc, &spec, 0.0, x);
-    memset(&key, 0, sizeof key);
-    key.standing[0] = 1;
-    key.J[0][0][0] = -5173.4375, key.J[0][0][1] = key.J[0][1][0] = 1034.6875, key.J[0][1][1] = -1034.6875;
-    key.c[0][0] = -554.2614, key.c[0][1] = 184.7538;
-    key.cap[0] = sc.D[0].cap_b + sc.D[0].cap_m;
-    memset(&r, 0, sizeof r);
-    CHECK(sx_region_build(&sc, &key, &r, NULL) == 0, "the mechanism's region was not built");
-    CHECK(r.modes.valid && r.modes.blocks == 1, "the mechanism's modes: valid %d, %d blocks (cond %.3g)",
-          r.modes.valid, r.modes.blocks, r.modes.cond);
-    for (trial = 0; trial < 40 && r.modes.valid; trial++) {
-        const double h = uniform(1e-3, 2e-2);
-        double xa0[SX_MAX_NA], exact[SX_MAX_F];
-        sx_lopoly P[SX_MAX_F];
-        int k, f;
-        for (k = 0; k < r.ndof; k++) {
-            xa0[k] = uniform(-1e-2, 1e-2) * (k < 2 ? 1.0 : 0.1);
-            xa0[r.ndof + k] = uniform(-0.1, 0.1);
-        }
-        xa0[r.n] = uniform(-2.0, 2.0), xa0[r.n + 1] = uniform(-50.0, 50.0), xa0[r.n + 2] = 1.0;
-        CHECK(sx_modes_polys(&r, h, xa0, P), "no polynomials");
-        for (k = 0; k <= 8; k++) {
-            const double u = k / 8.0;
-            exact_values(&r, xa0, h, u, exact);
-            for (f = 0; f < r.nf; f++) {
-                const double gap = fabs(exact[f] - sx_poly_eval(P[f].coef, P[f].deg, u));
-                tried++;
-                misses += !(gap <= P[f].tail * (1.0 + 1e-9) + 1e-12 * fabs(exact[f]));
-            }
-        }
-    }
-    CHECK(tried > 0 && misses == 0, "the block's bounds missed the exact motion at %d of %d points", misses, tried);
-    sx_region_free(&r);
-}
-
 int main(void)
 {
     srand(12345);
@@ -387,7 +248,6 @@ int main(void)
     test_bouc_wen_against_cvodes();
     test_refusals();
     test_products_agree_bitwise();
-    test_a_free_mechanism_is_a_block_that_bounds();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
