@@ -144,8 +144,9 @@ static void track(double *peak, double v)
 }
 
 /* the output row due at t and the energy balance (the energy from the region's quadratic form) */
-static void observe(sx_run *R, double t)
+static void observe(sx_run *R)
 {
+    const double t = R->t;
     rw_scene_result *res = R->res;
     const sx_region *r = current(R);
     const double e = sx_region_energy(r, R->x) + r->e_const + R->work_hysteretic;
@@ -186,7 +187,7 @@ static int integrate(sx_run *R)
 {
     while (R->t < R->opt->t_end) {
         if (sx_advance(R, next_stop(R))) return R->error;
-        observe(R, R->t);
+        observe(R);
         R->res->t_reached = R->t;
     }
     return RW_SCENE_OK;
@@ -262,7 +263,7 @@ int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, co
     res->t_reached = R->t;
     code = sx_handle_events(R);
     if (code == RW_SCENE_OK) {
-        observe(R, R->t);
+        observe(R);
         code = integrate(R);
     }
     sx_settle_doubts(R, -1);

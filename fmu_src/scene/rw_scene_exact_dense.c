@@ -102,55 +102,64 @@ static inline sx_v2 load2(const double *p)
 
 static inline void store2(double *p, sx_v2 v) { memcpy(p, &v, sizeof v); }
 
-/* rows 0..7 (or 0..3) of y = A x from A by columns (`rows` apart): their sums held in registers
+/* rows 0..7 (or 0..3) of y = A x from A by columns (ld apart): their sums held in registers
  * while the columns pass, each one's terms added in the columns' order */
-static void rows_8(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+static void rows_8(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
 {
     sx_v2 s0 = {0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0;
     int j;
     for (j = 0; j < cols; j++) {
-        const double *a = At + (size_t)j * (size_t)rows;
+        const double *a = At + (size_t)j * (size_t)ld;
         const sx_v2 xj = {x[j], x[j]};
         s0 += load2(a) * xj, s1 += load2(a + 2) * xj, s2 += load2(a + 4) * xj, s3 += load2(a + 6) * xj;
     }
     store2(y, s0), store2(y + 2, s1), store2(y + 4, s2), store2(y + 6, s3);
 }
 
-static void rows_4(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+static void rows_4(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
 {
     sx_v2 s0 = {0.0, 0.0}, s1 = s0;
     int j;
     for (j = 0; j < cols; j++) {
-        const double *a = At + (size_t)j * (size_t)rows;
+        const double *a = At + (size_t)j * (size_t)ld;
         const sx_v2 xj = {x[j], x[j]};
         s0 += load2(a) * xj, s1 += load2(a + 2) * xj;
     }
     store2(y, s0), store2(y + 2, s1);
 }
 
-/* the last rows (fewer than 4) */
-static void rows_few(int rows, int cols, int count, const double *restrict At, const double *restrict x,
-                     double *restrict y)
+static void rows_2(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
 {
-    double s[3] = {0.0, 0.0, 0.0};
-    int i, j;
+    sx_v2 s0 = {0.0, 0.0};
+    int j;
     for (j = 0; j < cols; j++) {
-        const double *a = At + (size_t)j * (size_t)rows, xj = x[j];
-        for (i = 0; i < count; i++) s[i] += a[i] * xj;
+        const sx_v2 xj = {x[j], x[j]};
+        s0 += load2(At + (size_t)j * (size_t)ld) * xj;
     }
-    for (i = 0; i < count; i++) y[i] = s[i];
+    store2(y, s0);
 }
 
-/* y = A x from A stored by columns (At[j * rows + i] = A_ij). Each y_i's sum runs over j in order
- * from 0, as a row's dot product would (the same result), in blocks of rows whose sums stay in
- * registers while the columns pass (a dot product the compiler cannot vectorise: it would reorder
- * the sum) */
-void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+static void rows_1(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+{
+    double s0 = 0.0;
+    int j;
+    for (j = 0; j < cols; j++) s0 += At[(size_t)j * (size_t)ld] * x[j];
+    *y = s0;
+}
+
+void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const double *restrict x,
+                    double *restrict y)
 {
     int i = 0;
-    for (; i + 8 <= rows; i += 8) rows_8(rows, cols, At + i, x, y + i);
-    if (i + 4 <= rows) rows_4(rows, cols, At + i, x, y + i), i += 4;
-    if (i < rows) rows_few(rows, cols, rows - i, At + i, x, y + i);
+    for (; i + 8 <= rows; i += 8) rows_8(ld, cols, At + i, x, y + i);
+    if (i + 4 <= rows) rows_4(ld, cols, At + i, x, y + i), i += 4;
+    if (i + 2 <= rows) rows_2(ld, cols, At + i, x, y + i), i += 2;
+    if (i < rows) rows_1(ld, cols, At + i, x, y + i);
+}
+
+void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)
+{
+    sx_matvec_lead(rows, cols, rows, At, x, y);
 }
 
 void sx_transpose(int rows, int cols, const double *A, double *At)

@@ -44,6 +44,23 @@ enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC, SX_DEFORM_RATE };
  * the base acceleration */
 enum { SX_PEAK_S1 = 0, SX_PEAK_S2, SX_PEAK_DEFORM, SX_PEAK_ACC, SX_PEAK_KINDS };
 
+/* a . b over n entries, in two running sums (even and odd entries: not a row's order) */
+static inline double sx_dot(const double *a, const double *b, int n)
+{
+    double s0 = 0.0, s1 = 0.0;
+    int i = 0;
+    for (; i + 2 <= n; i += 2) s0 += a[i] * b[i], s1 += a[i + 1] * b[i + 1];
+    if (i < n) s0 += a[i] * b[i];
+    return s0 + s1;
+}
+
+/* a row's nonzero entries when it holds two at most (c1 = 0 where it holds one, c0 = 0 too where
+ * none) */
+typedef struct {
+    int i0, i1;
+    double c0, c1;
+} sx_pair;
+
 /* what selects a region: which walls stand and their hinge moments Q = c + J q, and each bilinear
  * diaphragm's branch, its spring force F = k_branch d + F0 (1 - alpha) Fy (d its deformation) */
 typedef struct {
@@ -84,6 +101,9 @@ typedef struct {
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N]; /* Winv, row-major */
     double wnorm[SX_MAX_N]; /* sum_i |Winv_ji| S_i over mode k's rows j: |zeta_k| <= wnorm_k max_i |x_i| / S_i */
+    /* |alpha_k| <= pb0 + pb1 |ag| + pb2 |slope|, its particular part's size (|g0|/|lam|, |g1|/|lam|,
+     * |g1|/|lam|^2), and each functional's largest share of any mode */
+    double pb0[SX_MAX_N], pb1[SX_MAX_N], pb2[SX_MAX_N], share_max[SX_MAX_F];
 } sx_modes;
 
 /* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
@@ -95,6 +115,15 @@ typedef struct {
                  the monomial ones (the Taylor rows of a step's table) */
 } sx_lopoly;
 
+/* a step length's constants for the quiet test's bounds (rw_scene_exact_hermite.c), per mode of the
+ * region: |lam h|, |lam h|^4, its growth G = e^(max(Re lam, 0) h) and, for a band (|lam h|^4 past
+ * 384), e^(lam h) */
+typedef struct {
+    double h;
+    double wh[SX_MAX_N], w4[SX_MAX_N], G[SX_MAX_N];
+    double complex emu[SX_MAX_N];
+} sx_hermite_step;
+
 /* the exact propagators of a region over one step length h */
 typedef struct {
     double h;
@@ -105,7 +134,8 @@ typedef struct {
     double *E;    /* na x na: exp(Aa h) */
     double *T;    /* n x na by columns: x part of (Aa h)^(SX_LO+1)/(SX_LO+1)!, the quiet test's tail */
     double *Wd;   /* na x na: the viscous dissipation over the step as a quadratic form of xa */
-    double *Et, *Wdt; /* E and Wd by columns, for the quiet steps' products (sx_matvec_cols) */
+    double *Et;   /* E by columns, for the quiet steps' products (sx_step_propagate) */
+    double *Wdp;  /* Wd by columns, each padded with zeros to a multiple of 4 rows (sx_step_dissipation) */
     double *wg;   /* 2 x na: the momentum's integrals over the step of E(tau) and tau E(tau) */
     double *rows; /* (nf (SX_LO+1)) x na by columns: functional f's Taylor coefficients l.(Aa h)^k/k!
                      in row f (SX_LO+1) + k */
@@ -114,7 +144,7 @@ typedef struct {
     double *zwork; /* (nz 3) x na: its integrals over the step of tau^m e_k.exp(Aa tau), m = 0, 1, 2,
                       in row 3 k + m (the hysteretic force's work, exactly) */
     double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
-    double complex emu[SX_MAX_N]; /* e^(lam_k h) of each mode of the region (its modes valid) */
+    sx_hermite_step herm; /* the quiet test's constants (the region's modes valid) */
 } sx_step;
 
 typedef struct {
@@ -129,7 +159,10 @@ typedef struct {
                                     where its rounds did not settle */
     double *Aa;                /* na x na, row-major */
     double *Aa_cols;           /* the same by columns, for the series' products */
+    int one_hot;               /* every row of Aa but the velocities' holds one 1 or nothing ... */
+    int hot[SX_MAX_NA];        /* ... at this column (-1: nothing) */
     double scale[SX_MAX_N];    /* balancing: A_s = S^-1 A S */
+    double inv_scale[SX_MAX_N];
     double norm;               /* ||A_s||_inf */
     double F[SX_MAX_F][SX_MAX_NA]; /* functional rows over xa */
     int f_nz[SX_MAX_F], f_at[SX_MAX_F][SX_MAX_NA]; /* their nonzero entries, in order (most hold one
@@ -140,15 +173,21 @@ typedef struct {
     double FA[SX_MAX_F][SX_MAX_NA];   /* their rates along the motion, F Aa, rows over xa ... */
     int fa_nz[SX_MAX_F], fa_at[SX_MAX_F][SX_MAX_NA]; /* ... and their nonzero entries (most hold one or
                                                       two: a velocity, or a difference of two) */
+    sx_pair f_pair[SX_MAX_F], fa_pair[SX_MAX_F]; /* the rows' entries inline where they hold two at most */
     double mom[SX_MAX_NA];     /* the horizontal momentum relative to the ground, a row over xa */
     /* the scene's energy on the region, (1/2) V.M V + (1/2) X.K X - f.X + e_const (M, K: its
      * Hessians; e_const: from rw_scene_energy at a state of the region) */
     double Mq[SX_MAX_DOF * SX_MAX_DOF], Kq[SX_MAX_DOF * SX_MAX_DOF], fq[SX_MAX_DOF], e_const;
+    /* ... as sum_t eq_c[t] x[eq_a[t]] x[eq_b[t]] - sum_k fq[k] x[pos[k]] + e_const over the scene
+     * state x itself: the forms' nonzero entries on and above their diagonals */
+    int eq_n, eq_a[SX_MAX_N * (SX_MAX_N + 1) / 2], eq_b[SX_MAX_N * (SX_MAX_N + 1) / 2];
+    double eq_c[SX_MAX_N * (SX_MAX_N + 1) / 2];
     int nterms;                /* viscous dissipation rate = sum_t dcoef_t (dvec_t . xa)^2 */
     double dcoef[SX_MAX_TERMS], dvec[SX_MAX_TERMS][SX_MAX_NA];
     sx_collapse col[RW_SCENE_MAX_STOREYS];
     sx_modes modes;
     sx_step step[SX_STEPS];
+    int last_step;             /* the slot sx_step_of found last */
     double *blob;              /* Aa and Aa_cols (the step tables have their own) */
 } sx_region;
 
@@ -165,6 +204,13 @@ typedef struct {
 typedef struct {
     double a0, a1, s, t, c;
 } sx_line;
+
+/* a wall's lines as arrays, each line's coefficients with what the quiet test's first pass takes of
+ * them: |a0|, |a1|, |c| and s + |t|, the most z moves per unit of |w| */
+typedef struct {
+    double a0[SX_MAX_LINES], a1[SX_MAX_LINES], abs_a0[SX_MAX_LINES], abs_a1[SX_MAX_LINES];
+    double s[SX_MAX_LINES], t[SX_MAX_LINES], c[SX_MAX_LINES], abs_c[SX_MAX_LINES], slope[SX_MAX_LINES];
+} sx_line_set;
 
 /* one indicator of a bilinear diaphragm on its region: z = c + a v, v the functional of `kind`
  * (the deformation on the elastic branch: z = 1 -+ the normalised hysteretic force; its rate while
@@ -195,6 +241,7 @@ typedef struct {
     long stamp;
     int nlines[RW_SCENE_MAX_STOREYS];
     sx_line lines[RW_SCENE_MAX_STOREYS][SX_MAX_LINES];
+    sx_line_set line_set[RW_SCENE_MAX_STOREYS]; /* the same, as arrays for the quiet test's first pass */
     int ndlines[RW_SCENE_MAX_STOREYS];  /* the bilinear diaphragms' indicators on the region */
     sx_dline dlines[RW_SCENE_MAX_STOREYS][2];
     double d_synced[RW_SCENE_MAX_STOREYS]; /* a bilinear diaphragm's deformation where its work and
@@ -212,23 +259,23 @@ typedef struct {
     int ndoubts;
 } sx_run;
 
-/* functional f of the region at v (an augmented state, or a series' coefficient): its row's
- * nonzero terms in the row's order, the very sum of the whole row (its zeros add nothing) */
-static inline double sx_functional(const sx_region *r, int f, const double *v)
+/* row . v (na entries, nz of them not zero). Most rows hold one or two (a displacement, a velocity,
+ * a difference of two), which pair holds inline. */
+static inline double sx_row_dot(const double *row, int nz, int na, const sx_pair *pair, const double *v)
 {
-    double sum = 0.0;
-    int k;
-    for (k = 0; k < r->f_nz[f]; k++) sum += r->F[f][r->f_at[f][k]] * v[r->f_at[f][k]];
-    return sum;
+    return nz <= 2 ? pair->c0 * v[pair->i0] + pair->c1 * v[pair->i1] : sx_dot(row, v, na);
 }
 
-/* functional f's rate along the region's motion at xa: F Aa xa, over its nonzero entries */
+/* functional f of the region at v (an augmented state, or a series' coefficient) */
+static inline double sx_functional(const sx_region *r, int f, const double *v)
+{
+    return sx_row_dot(r->F[f], r->f_nz[f], r->na, &r->f_pair[f], v);
+}
+
+/* functional f's rate along the region's motion at xa: F Aa xa */
 static inline double sx_functional_rate(const sx_region *r, int f, const double *v)
 {
-    double sum = 0.0;
-    int k;
-    for (k = 0; k < r->fa_nz[f]; k++) sum += r->FA[f][r->fa_at[f][k]] * v[r->fa_at[f][k]];
-    return sum;
+    return sx_row_dot(r->FA[f], r->fa_nz[f], r->na, &r->fa_pair[f], v);
 }
 
 /* ---- the run (rw_scene_exact.c) and its steps (rw_scene_exact_steps.c) ---- */
@@ -274,6 +321,8 @@ int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */
 /* y = A x from A stored by columns (At: cols x rows), vectorised; each sum in a row's order */
 void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y);
+/* the same with A's columns ld apart (its first `rows` rows) */
+void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const double *restrict x, double *restrict y);
 void sx_transpose(int rows, int cols, const double *A, double *At); /* At (cols x rows) = A^T */
 double sx_sym2_min_eig(const double A[2][2]);
 void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
@@ -307,6 +356,10 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
 int sx_halves_of(sx_region *r, double h, int levels, double tol, long stamp, double *Et);
 /* that rounding at time t */
 #define SX_TIME_TOL(t) (16.0 * DBL_EPSILON * fmax(fabs(t), 1.0))
+/* xa1 = exp(Aa h) xa0 over a step's table (the record's rows are exact: ag + h slope, slope, 1) */
+void sx_step_propagate(const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
+/* the viscous dissipation over the step from xa0, xa0.Wd xa0 */
+double sx_step_dissipation(const sx_region *r, const sx_step *st, const double xa0[]);
 /* the Taylor series of the augmented state over a step of length L <= the region's limit */
 void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s);
 /* the longest step the series is built for */
@@ -343,11 +396,31 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of);
 #define SX_MODES_MARGIN(cond) (256.0 * DBL_EPSILON * (cond) + 1e-12)
 
 /* ---- the quiet test's polynomials from a step's exact ends (rw_scene_exact_hermite.c) ---- */
-/* each functional's cubic Hermite interpolant over a step of length h from its values and rates at
- * the exact ends xa0 and xa1 = exp(Aa h) xa0 (Bernstein coefficients), with the modes' bound on the
- * motion's departure from it as the tail; emu: e^(lam_k h) of each mode (NULL: computed where
- * needed); 0 if the region has no usable modes */
-int sx_hermite_polys(const sx_region *r, double h, const double complex *emu, const double xa0[], const double xa1[],
+/* one mode's share of the departure from a functional's interpolant over a step per unit of the
+ * functional's share |a| of the mode, for the value and for its rate in u; the size behind it (for
+ * the rounding's margin); and a band's free part at the step's ends (value at 0 and 1, rate in u at
+ * 0 and 1: real and imaginary parts), which the ends' data give up */
+typedef struct {
+    double err, derr, size;
+    int band;
+    double re[4], im[4];
+} sx_mode_bound;
+
+/* the modes' bounds over a step from its start xa0 */
+typedef struct {
+    double h, sizes; /* the step's length; the sum of the modes' sizes */
+    int bands;       /* how many modes are bands */
+    sx_mode_bound mode[SX_MAX_N];
+} sx_mode_bounds;
+
+/* the constants of a step of length h (the region's modes valid) */
+void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs);
+/* the modes' bounds over a step (its constants hs) from its start xa0 (the region's modes valid) */
+void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
+/* each functional's cubic Hermite interpolant over a step (its constants hs) from its values and
+ * rates at the exact ends xa0 and xa1 = exp(Aa h) xa0 (Bernstein coefficients), with the modes'
+ * bound on the motion's departure from it as the tail; 0 if the region has no usable modes */
+int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[],
                      sx_lopoly P[SX_MAX_F]);
 
 /* ---- nearly defective pairs of modes (rw_scene_exact_blocks.c) ---- */
@@ -368,6 +441,22 @@ void sx_block_coupling(const sx_region *r, const double *Vr, const double *Winv,
  * only where no doubt could be kept) */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
 int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[]);
+/* what the quiet test could not clear over a step, per storey: bits of the wall's lines (bit 31: its
+ * collapse indicator), of its bilinear diaphragm's indicators, and of its peak quantities */
+typedef struct {
+    unsigned wall[RW_SCENE_MAX_STOREYS], diaphragm[RW_SCENE_MAX_STOREYS], peaks[RW_SCENE_MAX_STOREYS];
+} sx_suspects;
+/* the quiet test's suspects on given polynomials (no doubt kept): 0 if none */
+int sx_watch_suspects(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], sx_suspects *sus);
+/* the quiet test of a step from its exact ends (the region's modes valid; its constants hs), as
+ * sx_watch_quiet_polys */
+int sx_watch_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
+/* the centre and half-width of a polynomial's range over its step */
+void sx_watch_box(const sx_lopoly *p, double *centre, double *radius);
+/* the lines of storey i's wall the box of q1's and q2's ranges (centres c, half-widths r; Q: |q|
+ * at the start, for the lines' rounding) does not clear at once: bit k for line k */
+unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double c2, double r2, double Q1, double Q2);
+
 /* the peaks at a state of the region (a quiet step's exact end, the state after an event) */
 void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[]);
 /* the walls' indicator lines under the current modes (after every event) */
@@ -376,8 +465,9 @@ void sx_watch_lines(sx_run *R);
  * sign and no peak can rise over it unnoticed (then xa1 = exp(Aa h) xa0, the end, and the peaks
  * are those of the ends and of the doubts it left), else 0 (xa1 not set) */
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[]);
-/* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it */
-double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s);
+/* the first root over a step's series (u in (0, 1], or 2 if none), with the peaks up to it: of the
+ * suspects only (the others cleared over the whole step), or of everything (sus NULL) */
+double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx_suspects *sus);
 /* the modes' bound on |storey i's peak quantity `kind`| over a step of length h from xa0 to its
  * exact end xa1 if it may rise over that quantity's peak inside the step, else 0 (INFINITY: the
  * region has no usable modes) */

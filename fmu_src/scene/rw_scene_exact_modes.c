@@ -103,18 +103,31 @@ static void row_norms(const sx_region *r, sx_modes *m)
     }
 }
 
+/* the particular parts' sizes per unit of the record and its slope, from the modal forcing */
+static void particular_sizes(sx_modes *m)
+{
+    int k;
+    for (k = 0; k < m->count; k++) {
+        const double il = m->abs_lam[k] > 0.0 && !m->block[k] ? 1.0 / m->abs_lam[k] : 0.0;
+        m->pb0[k] = cabs(m->g0[k]) * il;
+        m->pb1[k] = cabs(m->g1[k]) * il;
+        m->pb2[k] = cabs(m->g1[k]) * il * il;
+    }
+}
+
 static void shares(const sx_region *r, sx_modes *m, const double *Vr)
 {
     const int n = r->n;
     int f, k, i;
     for (f = 0; f < r->nf; f++)
-        for (k = 0; k < m->count; k++) {
+        for (m->share_max[f] = 0.0, k = 0; k < m->count; k++) {
             double re = 0.0, im = 0.0;
             for (i = 0; i < n; i++) {
                 re += r->F[f][i] * Vr[i * n + m->first[k]];
                 if (m->pair[k]) im += r->F[f][i] * Vr[i * n + m->first[k] + 1];
             }
             m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = sqrt(re * re + im * im);
+            m->share_max[f] = fmax(m->share_max[f], m->share_abs[k][f]);
         }
 }
 
@@ -175,6 +188,7 @@ void sx_modes_build(sx_region *r)
     row_norms(r, m);
     modal_forcing(r, m, r->n + 2, m->g0);
     modal_forcing(r, m, r->n, m->g1);
+    particular_sizes(m);
     shares(r, m, Vr);
     if (m->blocks) sx_block_coupling(r, Vr, Winv, m);
     m->valid = 1;
@@ -184,4 +198,5 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of)
 {
     r->modes = *of;
     modal_forcing(r, &r->modes, r->n + 2, r->modes.g0);
+    particular_sizes(&r->modes);
 }

@@ -220,6 +220,47 @@ static int augmented(const lti *s, sx_region *r)
     return 0;
 }
 
+/* the energy's quadratic forms (1/2) V.M V + (1/2) X.K X as their nonzero entries on and above the
+ * diagonal, over the scene state (symmetric: (K_ij + K_ji) / 2 for K's pair, whose antisymmetric
+ * part adds nothing) */
+static void energy_form(sx_region *r)
+{
+    const int nd = r->ndof;
+    int i, j, m;
+    r->eq_n = 0;
+    for (m = 0; m < 2; m++) {
+        const double *Q = m ? r->Mq : r->Kq;
+        const int *at = m ? r->vel : r->pos;
+        for (i = 0; i < nd; i++)
+            for (j = i; j < nd; j++) {
+                const double c = i == j ? 0.5 * Q[i * nd + i] : 0.5 * (Q[i * nd + j] + Q[j * nd + i]);
+                if (c == 0.0) continue;
+                r->eq_a[r->eq_n] = at[i], r->eq_b[r->eq_n] = at[j], r->eq_c[r->eq_n++] = c;
+            }
+    }
+}
+
+/* the rows of Aa outside the velocities' that hold a single 1 or nothing (the series' products
+ * take them as copies: rw_scene_exact_series.c) */
+static void find_hot_rows(sx_region *r)
+{
+    int i, j;
+    r->one_hot = 1;
+    for (i = 0; i < r->na; i++) {
+        int count = 0;
+        r->hot[i] = -1;
+        if (i >= r->ndof && i < r->n) continue;
+        for (j = 0; j < r->na; j++) {
+            const double a = r->Aa[i * r->na + j];
+            if (a == 0.0) continue;
+            count++;
+            r->hot[i] = j;
+            if (a != 1.0) r->one_hot = 0;
+        }
+        if (count > 1 || (i < r->ndof && count != 1)) r->one_hot = 0;
+    }
+}
+
 /* ---- what the engine watches and integrates ---- */
 
 static void functional(sx_region *r, int kind, int storey)
@@ -231,19 +272,29 @@ static void functional(sx_region *r, int kind, int storey)
     r->f_storey[k] = storey;
 }
 
+/* a row's nonzero entries (in order), and inline where it holds two at most */
+static void nonzeros(const double *row, int na, int *nz, int *at, sx_pair *pair)
+{
+    int j;
+    *nz = 0;
+    for (j = 0; j < na; j++)
+        if (row[j] != 0.0) at[(*nz)++] = j;
+    pair->i0 = *nz > 0 ? at[0] : 0, pair->c0 = *nz > 0 ? row[at[0]] : 0.0;
+    pair->i1 = *nz > 1 ? at[1] : pair->i0, pair->c1 = *nz > 1 ? row[at[1]] : 0.0;
+}
+
 /* the functionals' rates along the motion, F Aa, with their nonzero entries */
 static void rates(sx_region *r)
 {
     const int na = r->na;
     int f, i, j;
     for (f = 0; f < r->nf; f++) {
-        r->fa_nz[f] = 0;
         for (j = 0; j < na; j++) {
             double v = 0.0;
             for (i = 0; i < na; i++) v += r->F[f][i] * r->Aa[i * na + j];
             r->FA[f][j] = v;
-            if (v != 0.0) r->fa_at[f][r->fa_nz[f]++] = j;
         }
+        nonzeros(r->FA[f], na, &r->fa_nz[f], r->fa_at[f], &r->fa_pair[f]);
     }
 }
 
@@ -286,19 +337,24 @@ static void functionals(const rw_scene *sc, sx_region *r)
     for (i = 0; i < r->nf; i++) {
         r->f_scale[i] = 0.0;
         for (j = 0; j < r->n; j++) r->f_scale[i] += fabs(r->F[i][j]) * r->scale[j];
-        r->f_nz[i] = 0;
-        for (j = 0; j < na; j++)
-            if (r->F[i][j] != 0.0) r->f_at[i][r->f_nz[i]++] = j;
+        nonzeros(r->F[i], na, &r->f_nz[i], r->f_at[i], &r->f_pair[i]);
     }
 }
 
+/* a dashpot coef between the velocities of DOFs v1 and v2 (-1: the ground); dashpots between the
+ * same two (a diaphragm's own and Rayleigh's share of its spring) are one term */
 static void damping_term(sx_region *r, double coef, int v1, int v2)
 {
-    const int k = r->nterms;
+    int k = r->nterms, t;
     if (!(coef != 0.0)) return;
     memset(r->dvec[k], 0, sizeof r->dvec[k]);
     r->dvec[k][r->ndof + v1] = 1.0;
     if (v2 >= 0) r->dvec[k][r->ndof + v2] = -1.0;
+    for (t = 0; t < k; t++)
+        if (memcmp(r->dvec[t], r->dvec[k], sizeof r->dvec[k]) == 0) {
+            r->dcoef[t] += coef;
+            return;
+        }
     r->dcoef[k] = coef;
     r->nterms++;
 }
@@ -391,6 +447,7 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const s
     memcpy(r->Mq, s->M, sizeof r->Mq);
     memcpy(r->Kq, s->K, sizeof r->Kq);
     memcpy(r->fq, s->f, sizeof r->fq);
+    energy_form(r);
     fail = augmented(s, r);
     free(s);
     if (fail) return RW_SCENE_SOLVER;
@@ -400,8 +457,10 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const s
         for (i = 0; i < r->n; i++)
             for (j = 0; j < r->n; j++) A[i * r->n + j] = r->Aa[i * r->na + j];
         sx_balance(r->n, A, r->scale, &r->norm);
+        for (i = 0; i < r->n; i++) r->inv_scale[i] = 1.0 / r->scale[i];
     }
     sx_transpose(r->na, r->na, r->Aa, r->Aa_cols);
+    find_hot_rows(r);
     functionals(sc, r);
     energy_rows(sc, r);
     collapse_forms(sc, key, r);
@@ -443,15 +502,10 @@ void sx_gather(const sx_region *r, const double x[], double ag, double slope, do
 
 double sx_region_energy(const sx_region *r, const double x[])
 {
-    const int nd = r->ndof;
-    double X[SX_MAX_DOF], V[SX_MAX_DOF], e = 0.0;
-    int i, j;
-    for (i = 0; i < nd; i++) X[i] = x[r->pos[i]], V[i] = x[r->vel[i]];
-    for (i = 0; i < nd; i++) {
-        double mv = 0.0, kx = 0.0;
-        for (j = 0; j < nd; j++) mv += r->Mq[i * nd + j] * V[j], kx += r->Kq[i * nd + j] * X[j];
-        e += 0.5 * (V[i] * mv + X[i] * kx) - r->fq[i] * X[i];
-    }
+    double e = 0.0;
+    int t, k;
+    for (t = 0; t < r->eq_n; t++) e += r->eq_c[t] * x[r->eq_a[t]] * x[r->eq_b[t]];
+    for (k = 0; k < r->ndof; k++) e -= r->fq[k] * x[r->pos[k]];
     return e;
 }
 

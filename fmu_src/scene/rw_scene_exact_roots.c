@@ -124,12 +124,15 @@ static int quantity(const sx_run *R, int i, const storey_series *S, int kind, in
     }
 }
 
-static void storey_peaks(sx_run *R, int i, const storey_series *S, int deg, double u)
+/* storey i's peaks over [0, u] of the series, of the kinds in the bits `kinds` (the others cannot
+ * rise over the step) */
+static void storey_peaks(sx_run *R, int i, const storey_series *S, int deg, double u, unsigned kinds)
 {
     double p[SX_PMAX], err;
     int kind;
     for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
         double *peak = sx_peak_of(R->res, i, kind);
+        if (!(kinds & (1u << kind))) continue;
         if (quantity(R, i, S, kind, deg, p, &err)) *peak = sx_poly_max_abs(p, deg, err, u, *peak);
     }
 }
@@ -150,7 +153,10 @@ static void storeys(const sx_run *R, const sx_region *r, const sx_series *s, sto
     storey_polys(r, s, P, only);
 }
 
-double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
+/* is indicator bit k of a suspect set (all: no set) among the suspects? */
+static int suspect(const sx_suspects *sus, const unsigned *set, unsigned bit) { return !sus || (*set & bit); }
+
+double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx_suspects *sus)
 {
     storey_series P[RW_SCENE_MAX_STOREYS];
     double first = 2.0;
@@ -159,13 +165,17 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s)
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         for (k = 0; k < R->ndlines[i]; k++) {
             const sx_dline *L = &R->dlines[i][k];
-            first = fmin(first, diaphragm_root(L, L->kind == SX_DEFORM ? P[i].deform : P[i].rate, s->deg));
+            if (suspect(sus, sus ? &sus->diaphragm[i] : NULL, 1u << k))
+                first = fmin(first, diaphragm_root(L, L->kind == SX_DEFORM ? P[i].deform : P[i].rate, s->deg));
         }
         if (!P[i].wall) continue;
-        for (k = 0; k < R->nlines[i]; k++) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
-        if (r->col[i].active) first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));
+        for (k = 0; k < R->nlines[i]; k++)
+            if (suspect(sus, sus ? &sus->wall[i] : NULL, 1u << k))
+                first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
+        if (r->col[i].active && suspect(sus, sus ? &sus->wall[i] : NULL, 1u << 31))
+            first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));
     }
-    for (i = 0; i < R->sc.S.n_storeys; i++) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0));
+    for (i = 0; i < R->sc.S.n_storeys; i++) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0), sus ? sus->peaks[i] : ~0u);
     return first;
 }
 
@@ -179,18 +189,18 @@ double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, i
 
 void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping)
 {
-    double mom[SX_PMAX], ag[SX_PMAX], prod[SX_PMAX], d[SX_PMAX], sq[SX_PMAX];
+    double mom[SX_PMAX], prod[SX_PMAX], d[SX_PMAX], sq[SX_PMAX];
     const int na = r->na, deg = s->deg;
+    const double ag0 = s->X[r->n], ag1 = s->X[(size_t)na + (size_t)r->n]; /* ag over the step: ag0 + ag1 u */
     int k, j, t;
-    memset(ag, 0, sizeof ag);
     for (k = 0; k <= deg; k++) {
         const double *X = s->X + (size_t)k * (size_t)na;
         mom[k] = 0.0;
         for (j = 0; j < r->n; j++) mom[k] += r->mom[j] * X[j];
-        ag[k] = X[r->n]; /* zero beyond degree 1 */
     }
-    sx_poly_product(ag, mom, deg, prod);
-    *w_ground = -s->L * sx_poly_integral(prod, 2 * deg, u);
+    for (k = 0; k <= deg + 1; k++) /* (ag0 + ag1 u) mom(u) */
+        prod[k] = (k <= deg ? ag0 * mom[k] : 0.0) + (k >= 1 ? ag1 * mom[k - 1] : 0.0);
+    *w_ground = -s->L * sx_poly_integral(prod, deg + 1, u);
     *w_damping = 0.0;
     for (t = 0; t < r->nterms; t++) {
         for (k = 0; k <= deg; k++) {

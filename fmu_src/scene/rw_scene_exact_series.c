@@ -56,6 +56,21 @@ void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[])
     }
 }
 
+/* y = Aa x: the velocities' rows in full, the others one entry of x each (the displacements' rates
+ * are the velocities, ag's is its slope, a z chain's each the next; the slope's and the constant's
+ * rows are zero), the same sums as the whole product's */
+static void aa_times(const sx_region *r, const double *x, double *y)
+{
+    int i;
+    if (!r->one_hot) {
+        sx_matvec_cols(r->na, r->na, r->Aa_cols, x, y);
+        return;
+    }
+    sx_matvec_lead(r->ndof, r->na, r->na, r->Aa_cols + r->ndof, x, y + r->ndof);
+    for (i = 0; i < r->ndof; i++) y[i] = x[r->hot[i]];
+    for (i = r->n; i < r->na; i++) y[i] = r->hot[i] >= 0 ? x[r->hot[i]] : 0.0;
+}
+
 void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s)
 {
     const int na = r->na;
@@ -67,7 +82,7 @@ void sx_series_of(const sx_region *r, const double xa0[], double L, sx_series *s
     for (k = 0; k < SX_MAX_DEG; k++) {
         double *next = s->X + (size_t)(k + 1) * (size_t)na;
         int i;
-        sx_matvec_cols(na, na, r->Aa_cols, s->X + (size_t)k * (size_t)na, next);
+        aa_times(r, s->X + (size_t)k * (size_t)na, next);
         for (i = 0; i < na; i++) next[i] *= L / (k + 1);
         nk = scaled_norm(r, next);
         if (nk > biggest) biggest = nk;
@@ -257,12 +272,14 @@ static void doubled(const sx_region *r, sx_step *st)
     st->h *= 2.0;
 }
 
+/* the slot of length h, the one found last first (most steps are a record interval's) */
 static sx_step *cached(sx_region *r, double h, double tol)
 {
     const double within = 1e-12 * h > tol ? 1e-12 * h : tol;
     int k;
+    if (fabs(r->step[r->last_step].h - h) <= within && r->step[r->last_step].h > 0.0) return &r->step[r->last_step];
     for (k = 0; k < SX_STEPS; k++)
-        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= within) return &r->step[k];
+        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= within) return &r->step[r->last_step = k];
     return NULL;
 }
 
@@ -280,22 +297,54 @@ static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
     doubled(r, st);
 }
 
-/* a slot's memory, the first time it is built: E, Wd, Et, Wdt (na x na), T (n x na), wg (2 x na),
+/* a slot's memory, the first time it is built: E, Wd, Et (na x na), Wdp (na columns of padded(na)), T (n x na), wg (2 x na),
  * rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na), zwork (3 nz x na); 0, or 1 if none could be had */
 static int table_memory(const sx_region *r, sx_step *st)
 {
     const size_t nn = (size_t)(r->na * r->na);
     if (st->mem) return 0;
     st->mem = (double *)malloc(sizeof(double) *
-                               (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * (SX_Z_NODES + 3)) * r->na)));
+                               (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * (SX_Z_NODES + 3) + 3) * r->na)));
     if (!st->mem) return 1;
-    st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdt = st->Et + nn;
-    st->T = st->Wdt + nn;
+    st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdp = st->Et + nn;
+    st->T = st->Wdp + nn + 3 * r->na; /* Wdp's rows padded to a multiple of 4 */
     st->wg = st->T + r->n * r->na;
     st->rows = st->wg + 2 * r->na;
     st->zrows = st->rows + r->nf * (SX_LO + 1) * r->na;
     st->zwork = st->zrows + r->nz * SX_Z_NODES * r->na;
     return 0;
+}
+
+/* the rows a matrix by columns is padded to (a multiple of 4, for sx_matvec_lead's blocks) */
+static int padded(int n) { return (n + 3) & ~3; }
+
+/* W by columns, each padded with zeros to padded(n) rows */
+static void padded_cols(int n, const double *W, double *Wc)
+{
+    const int ld = padded(n);
+    int i, j;
+    for (j = 0; j < n; j++)
+        for (i = 0; i < ld; i++) Wc[j * ld + i] = i < n ? W[i * n + j] : 0.0;
+}
+
+void sx_step_propagate(const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
+{
+    const int n = r->n;
+    if (r->nz) {
+        sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
+        return;
+    }
+    sx_matvec_lead(n, r->na, r->na, st->Et, xa0, xa1); /* E's first n rows */
+    xa1[n] = xa0[n] + st->h * xa0[n + 1];
+    xa1[n + 1] = xa0[n + 1];
+    xa1[n + 2] = xa0[n + 2];
+}
+
+double sx_step_dissipation(const sx_region *r, const sx_step *st, const double xa0[])
+{
+    double Wx[SX_MAX_NA + 3];
+    sx_matvec_lead(padded(r->na), r->na, padded(r->na), st->Wdp, xa0, Wx);
+    return sx_dot(xa0, Wx, r->na);
 }
 
 /* The table of length h: cached (a length within tol, the rounding of the record's times, is the
@@ -326,8 +375,8 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
         dissipation(r, st);
     }
     sx_transpose(r->na, r->na, st->E, st->Et);
-    sx_transpose(r->na, r->na, st->Wd, st->Wdt);
-    for (k = 0; r->modes.valid && k < r->modes.count; k++) st->emu[k] = cexp(r->modes.lam[k] * h);
+    padded_cols(r->na, st->Wd, st->Wdp);
+    if (r->modes.valid) sx_hermite_step_of(r, h, &st->herm);
     st->used = stamp;
     st->h = h;
     return st;

@@ -14,11 +14,10 @@ static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
 static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[],
                        double t1)
 {
-    double Wx[SX_MAX_NA], wd = 0.0, m0 = 0.0, m1 = 0.0;
+    const double wd = sx_step_dissipation(r, st, xa0);
+    double m0 = 0.0, m1 = 0.0;
     int k;
-    sx_matvec_cols(r->na, r->na, st->Wdt, xa0, Wx);
     for (k = 0; k < r->na; k++) {
-        wd += xa0[k] * Wx[k];
         m0 += st->wg[k] * xa0[k];
         m1 += st->wg[r->na + k] * xa0[k];
     }
@@ -45,6 +44,23 @@ static int fit_failed(sx_run *R, sx_region *r, double L)
     return 1;
 }
 
+/* the first root over a piece of the exact series (u in (0, 1], or 2 if none), with the peaks up to
+ * it: the quiet test on the piece's ends first, and the series only for what it could not clear */
+static double piece_root(sx_run *R, const sx_region *r, const sx_series *s, const double xa0[])
+{
+    double xa1[SX_MAX_NA];
+    sx_lopoly P[SX_MAX_F];
+    sx_hermite_step hs;
+    sx_suspects sus;
+    if (!r->modes.valid || r->nz) return sx_watch_step(R, r, s, NULL);
+    sx_series_at(r, s, 1.0, xa1);
+    sx_hermite_step_of(r, s->L, &hs);
+    sx_hermite_polys(r, &hs, xa0, xa1, P);
+    if (sx_watch_suspects(R, r, P, &sus)) return sx_watch_step(R, r, s, &sus);
+    sx_watch_peaks_at(R, r, xa1); /* (it may still hold a peak at its end) */
+    return 2.0;
+}
+
 /* a piece [R->t, t1] on the exact series, in parts no longer than the region's limit; stops early
  * at an event (handled here) */
 static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slope)
@@ -61,7 +77,7 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
             continue; /* again in shorter parts */
         }
         sx_series_of(r, xa0, L, &s);
-        u = sx_watch_step(R, r, &s);
+        u = piece_root(R, r, &s, xa0);
         sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
         R->work_ground += wg;
         R->work_damping += wd;
@@ -131,17 +147,15 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     sx_region *r = current(R);
     const double h = t1 - R->t;
     double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
-    sx_lopoly P[SX_MAX_F];
     sx_step *st;
     int why;
     if (!r->modes.valid) return -1;
     if (!(st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp))) return -1; /* no memory for it: the dyadic
                                     pieces end on the exact series */
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
-    sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
-    sx_hermite_polys(r, h, st->emu, xa0, xa1, P);
+    sx_step_propagate(r, st, xa0, xa1);
     st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
-    why = sx_watch_quiet_polys(R, r, P, h, xa0);
+    why = sx_watch_quiet_ends(R, r, &st->herm, xa0, xa1);
     st->used = R->stamp;
     if (why) return why;
     sx_watch_peaks_at(R, r, xa1);

@@ -19,6 +19,16 @@ static double min2(double a, double b) { return a < b || b != b ? a : b; }
 
 static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc->collapsed[i]; }
 
+static void line_set(const sx_line *L, int n, sx_line_set *set)
+{
+    int k;
+    for (k = 0; k < n; k++) {
+        set->a0[k] = L[k].a0, set->a1[k] = L[k].a1, set->abs_a0[k] = fabs(L[k].a0), set->abs_a1[k] = fabs(L[k].a1);
+        set->s[k] = L[k].s, set->t[k] = L[k].t, set->c[k] = L[k].c, set->abs_c[k] = fabs(L[k].c);
+        set->slope[k] = L[k].s + fabs(L[k].t);
+    }
+}
+
 void sx_watch_lines(sx_run *R)
 {
     const rw_scene *sc = &R->sc;
@@ -43,6 +53,7 @@ void sx_watch_lines(sx_run *R)
             n++;
         }
         R->nlines[i] = n;
+        line_set(out, n, &R->line_set[i]);
     }
 }
 
@@ -175,6 +186,13 @@ static double coef_bound(const sx_lopoly *p)
     return sx_poly_abs_sum(p->coef, p->deg);
 }
 
+/* the bound on |p| over the step */
+static double bound_of(const sx_lopoly *P)
+{
+    const span s = poly_span(P);
+    return max2(fabs(s.lo), fabs(s.hi));
+}
+
 /* the bound on |p| over the step if a peak quantity p can rise over `peak` inside it, else 0 (the
  * coefficients' bound and the tail first: most steps stay under the peak by that) */
 static double may_rise_to(const sx_lopoly *P, double peak)
@@ -209,25 +227,16 @@ typedef struct {
 void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[])
 {
     rw_scene_result *res = R->res;
-    double q1 = 0.0;
-    int f;
-    for (f = 0; f < r->nf; f++) {
-        const int i = r->f_storey[f];
-        const double v = sx_functional(r, f, xa);
-        double *peak;
-        switch (r->f_kind[f]) {
-        case SX_Q1: q1 = v; continue;
-        case SX_Q2: { /* q1 comes first: the wall's peaks */
-            const double h2 = 0.5 * R->sc.S.wall[i].h;
+    int i;
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        const int *f = r->f_of[i];
+        if (f[SX_Q1] >= 0) {
+            const double h2 = 0.5 * R->sc.S.wall[i].h, q1 = sx_functional(r, f[SX_Q1], xa);
             res->peak_s1[i] = max2(res->peak_s1[i], fabs(h2 * q1));
-            res->peak_s2[i] = max2(res->peak_s2[i], fabs(h2 * (q1 + v)));
-            continue;
+            res->peak_s2[i] = max2(res->peak_s2[i], fabs(h2 * (q1 + sx_functional(r, f[SX_Q2], xa))));
         }
-        case SX_DEFORM: peak = &res->peak_diaphragm[i]; break;
-        case SX_BASE_ACC: peak = &res->peak_base_acc[i]; break;
-        default: continue; /* the deformation's rate: an indicator's, not a peak */
-        }
-        *peak = max2(*peak, fabs(v));
+        res->peak_diaphragm[i] = max2(res->peak_diaphragm[i], fabs(sx_functional(r, f[SX_DEFORM], xa)));
+        res->peak_base_acc[i] = max2(res->peak_base_acc[i], fabs(sx_functional(r, f[SX_BASE_ACC], xa)));
     }
 }
 
@@ -265,36 +274,110 @@ static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[S
     }
 }
 
-/* A line is cleared first on the box of q1's and q2's ranges (a few operations, and it clears most
- * lines: a wall at rest or rocking away from them); only a line the box does not clear is tested on
- * its own combination of the two polynomials, whose range is tighter where q1 and q2 move together */
-static int wall_quiet(const sx_run *R, const sx_region *r, int i, const storey_polys *P)
+/* An affine line z = c + t w (w a Bernstein cubic) that moves away from zero all over the step in
+ * the direction it starts with has no root, though it starts within rounding of zero (an event has
+ * just set it there) or its range over the step reaches over zero (a band) */
+static int moves_away(const sx_line *L, const sx_lopoly *w, double tol)
 {
-    const span box1 = poly_span(P->q1), box2 = poly_span(P->q2);
-    int k;
-    for (k = 0; k < R->nlines[i]; k++) {
-        const sx_line *L = &R->lines[i][k];
-        const double tol = line_tol(L, P->q1->coef[0], P->q2->coef[0]);
-        sx_lopoly w;
-        if (clear_of_zero(line_span(L, sum(scaled(box1, L->a0), scaled(box2, L->a1))), tol)) continue;
-        combine(&w, P->q1, L->a0, P->q2, L->a1);
-        if (!clear_of_zero(line_span(L, poly_span(&w)), tol)) return 0;
-    }
-    return collapse_quiet(&r->col[i], P->q1, P->q2, box1, box2);
+    const double *b = w->coef, z0 = L->c + L->t * b[0];
+    const double r0 = 3.0 * L->t * (b[1] - b[0]), r1 = 3.0 * L->t * (b[2] - b[1]), r2 = 3.0 * L->t * (b[3] - b[2]);
+    const double lo = (r0 < r1 ? (r0 < r2 ? r0 : r2) : (r1 < r2 ? r1 : r2)) - fabs(L->t) * w->dtail;
+    const double hi = (r0 > r1 ? (r0 > r2 ? r0 : r2) : (r1 > r2 ? r1 : r2)) + fabs(L->t) * w->dtail;
+    const double start = fabs(z0) > tol ? z0 : r0; /* its start sign: its own, else its direction (rw_scene_exact_roots.c) */
+    if (L->s != 0.0 || !w->bern) return 0;
+    return start > 0.0 ? lo > 0.0 : (start < 0.0 && hi < 0.0);
 }
 
-/* a bilinear diaphragm's indicators over the step: 1 if none can change sign */
-static int diaphragm_quiet(const sx_run *R, int i, const storey_polys *P)
+/* the centre and half-width of a polynomial's range over the step: its Bernstein coefficients'
+ * hull, or its coefficients' sum, widened by its tail */
+void sx_watch_box(const sx_lopoly *p, double *centre, double *radius)
 {
+    double lo, hi;
+    if (p->bern) { /* (a NaN leaves a bound NaN: nothing is then clear of it) */
+        const double *b = p->coef, lo01 = b[0] < b[1] ? b[0] : b[1], lo23 = b[2] < b[3] ? b[2] : b[3];
+        const double hi01 = b[0] > b[1] ? b[0] : b[1], hi23 = b[2] > b[3] ? b[2] : b[3];
+        lo = lo01 < lo23 ? lo01 : lo23;
+        hi = hi01 > hi23 ? hi01 : hi23;
+        if (lo != lo || hi != hi) lo = hi = NAN;
+    } else {
+        const span s = poly_span(p);
+        lo = s.lo + p->tail, hi = s.hi - p->tail;
+    }
+    *centre = 0.5 * (lo + hi);
+    *radius = 0.5 * (hi - lo) + p->tail;
+}
+
+/* A line is cleared first on the box of q1's and q2's ranges: z = c + s|w| + t w moves by at most
+ * (s + |t|) |dw|, so a line whose value at the box's centre is farther from zero than that over
+ * the box's half-width is clear (a few operations, and it clears most lines: a wall at rest or
+ * rocking away from them); then on the box's exact range; only a line neither clears is tested on
+ * its own combination of the two polynomials, whose range is tighter where q1 and q2 move together */
+/* the lines of a wall the box of q1's and q2's ranges (centres c, half-widths r) does not clear at
+ * once: z = c + s|w| + t w moves by at most (s + |t|) |dw|, so a line whose value at the box's centre
+ * is farther from zero than that over the box's half-width is clear (a few operations, and it clears
+ * most lines: a wall at rest or rocking away from them). Every line in one loop without a branch,
+ * which the compiler vectorises; bit k for line k. */
+unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double c2, double r2, double Q1, double Q2)
+{
+    const sx_line_set *L = &R->line_set[i];
+    const int n = R->nlines[i];
+    unsigned bits = 0;
+    int k;
+    for (k = 0; k < n; k++) {
+        const double wc = L->a0[k] * c1 + L->a1[k] * c2, wr = L->abs_a0[k] * r1 + L->abs_a1[k] * r2;
+        const double zc = L->c[k] + L->s[k] * fabs(wc) + L->t[k] * wc;
+        const double tol = SX_TOL * (L->abs_c[k] + L->abs_a0[k] * Q1 + L->abs_a1[k] * Q2) + DBL_MIN;
+        bits |= (unsigned)!(fabs(zc) > L->slope[k] * wr + 2.0 * tol) << k;
+    }
+    return bits;
+}
+
+/* a line the first pass did not clear: on the box's exact range, then on its own combination of the
+ * two polynomials, whose range is tighter where q1 and q2 move together */
+static int line_clear(const sx_line *L, const storey_polys *P, double c1, double r1, double c2, double r2)
+{
+    const double tol = line_tol(L, P->q1->coef[0], P->q2->coef[0]);
+    const double wc = L->a0 * c1 + L->a1 * c2, wr = fabs(L->a0) * r1 + fabs(L->a1) * r2;
+    sx_lopoly w;
+    if (clear_of_zero(line_span(L, (span){wc - wr, wc + wr}), tol)) return 1;
+    combine(&w, P->q1, L->a0, P->q2, L->a1);
+    return clear_of_zero(line_span(L, poly_span(&w)), tol) || moves_away(L, &w, tol);
+}
+
+/* storey i's wall over the step: the lines it may cross (bits by line) and, as bit SX_COLLAPSE_BIT,
+ * the collapse indicator; every one (all) or up to the first (else) */
+#define SX_COLLAPSE_BIT (1u << 31)
+static unsigned wall_suspects(const sx_run *R, const sx_region *r, int i, const storey_polys *P, int all)
+{
+    double c1, r1, c2, r2;
+    unsigned bits = 0, box;
+    int k;
+    sx_watch_box(P->q1, &c1, &r1);
+    sx_watch_box(P->q2, &c2, &r2);
+    box = sx_watch_box_lines(R, i, c1, r1, c2, r2, fabs(P->q1->coef[0]), fabs(P->q2->coef[0]));
+    for (k = 0; box; k++, box >>= 1)
+        if ((box & 1u) && !line_clear(&R->lines[i][k], P, c1, r1, c2, r2)) {
+            bits |= 1u << k;
+            if (!all) return bits;
+        }
+    if (!collapse_quiet(&r->col[i], P->q1, P->q2, (span){c1 - r1, c1 + r1}, (span){c2 - r2, c2 + r2}))
+        bits |= SX_COLLAPSE_BIT;
+    return bits;
+}
+
+/* a bilinear diaphragm's indicators over the step: the ones that may change sign (bits) */
+static unsigned diaphragm_suspects(const sx_run *R, int i, const storey_polys *P)
+{
+    unsigned bits = 0;
     int k;
     for (k = 0; k < R->ndlines[i]; k++) {
         const sx_dline *L = &R->dlines[i][k];
         const sx_lopoly *v = L->kind == SX_DEFORM ? P->deform : P->rate;
         const span z = scaled(poly_span(v), L->a);
         const double tol = SX_TOL * (fabs(L->c) + fabs(L->a * v->coef[0])) + DBL_MIN;
-        if (!clear_of_zero((span){L->c + z.lo, L->c + z.hi}, tol)) return 0;
+        if (!clear_of_zero((span){L->c + z.lo, L->c + z.hi}, tol)) bits |= 1u << k;
     }
-    return 1;
+    return bits;
 }
 
 /* storey i's peak quantity `kind` over the step (0: the storey has none) */
@@ -315,7 +398,10 @@ static double coarse_bound(const sx_lopoly *a, double ca, const sx_lopoly *b, do
     double m = 0.0;
     int k;
     if (a->bern) {
-        for (k = 0; k < 4; k++) m = max2(m, fabs(ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0)));
+        for (k = 0; k < 4; k++) {
+            const double v = fabs(ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0));
+            m = v > m || v != v ? v : m;
+        }
     } else {
         for (k = 0; k <= a->deg; k++) m += fabs(ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0));
     }
@@ -356,7 +442,10 @@ double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double
 {
     sx_lopoly P[SX_MAX_F], p;
     storey_polys S[RW_SCENE_MAX_STOREYS];
-    if (!sx_hermite_polys(r, h, NULL, xa0, xa1, P)) return INFINITY;
+    sx_hermite_step hs;
+    if (!r->modes.valid) return INFINITY;
+    sx_hermite_step_of(r, h, &hs);
+    sx_hermite_polys(r, &hs, xa0, xa1, P);
     storey_view(R, r, P, S);
     return quantity(R, storey, &S[storey], kind, &p) ? may_rise_to(&p, *sx_peak_of(R->res, storey, kind)) : 0.0;
 }
@@ -368,19 +457,50 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], d
     int i;
     storey_view(R, r, P, S);
     for (i = 0; i < R->sc.S.n_storeys; i++)
-        if ((S[i].q1 && !wall_quiet(R, r, i, &S[i])) || !diaphragm_quiet(R, i, &S[i])) return SX_MAY_CROSS;
+        if ((S[i].q1 && wall_suspects(R, r, i, &S[i], 0)) || diaphragm_suspects(R, i, &S[i])) return SX_MAY_CROSS;
     return doubt_peaks(R, S, h, xa0) ? SX_MAY_PEAK : 0;
+}
+
+int sx_watch_suspects(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], sx_suspects *sus)
+{
+    storey_polys S[RW_SCENE_MAX_STOREYS];
+    int i, kind, any = 0;
+    storey_view(R, r, P, S);
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        sus->wall[i] = S[i].q1 ? wall_suspects(R, r, i, &S[i], 1) : 0;
+        sus->diaphragm[i] = diaphragm_suspects(R, i, &S[i]);
+        sus->peaks[i] = 0;
+        for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
+            const double peak = *sx_peak_of(R->res, i, kind);
+            sx_lopoly p;
+            /* (a monotone one too: a piece's end is not watched where its series is) */
+            if (coarse_quantity(R, i, &S[i], kind) > peak && quantity(R, i, &S[i], kind, &p) && bound_of(&p) > peak)
+                sus->peaks[i] |= 1u << kind;
+        }
+        any |= sus->wall[i] || sus->diaphragm[i] || sus->peaks[i];
+    }
+    return any;
 }
 
 int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], double xa1[])
 {
     sx_lopoly P[SX_MAX_F];
     if (r->modes.valid) { /* the ends first: the polynomials are their interpolants */
-        sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
-        sx_hermite_polys(r, st->h, st->emu, xa0, xa1, P);
-    } else low_polys(r, st, xa0, P);
+        sx_step_propagate(r, st, xa0, xa1);
+        if (sx_watch_quiet_ends(R, r, &st->herm, xa0, xa1) != 0) return 0;
+        sx_watch_peaks_at(R, r, xa1);
+        return 1;
+    }
+    low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
-    if (!r->modes.valid) sx_matvec_cols(r->na, r->na, st->Et, xa0, xa1);
+    if (!r->modes.valid) sx_step_propagate(r, st, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
+}
+
+int sx_watch_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[])
+{
+    sx_lopoly P[SX_MAX_F];
+    sx_hermite_polys(r, hs, xa0, xa1, P);
+    return sx_watch_quiet_polys(R, r, P, hs->h, xa0);
 }
