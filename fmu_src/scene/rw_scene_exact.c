@@ -43,7 +43,7 @@ double sx_ground(sx_run *R, double t)
     return rec->ag[k] + (rec->ag[k + 1] - rec->ag[k]) * (t - rec->t[k]) / (rec->t[k + 1] - rec->t[k]);
 }
 
-static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
+static sx_region *current(sx_run *R) { return R->regions[R->cur]; }
 
 static double energy(sx_run *R, double t);
 
@@ -63,7 +63,7 @@ static const sx_region *sibling(const sx_run *R, const sx_key *key, int except)
 {
     int k;
     for (k = 0; k < R->nregions; k++)
-        if (k != except && R->regions[k].Aa && sx_key_same_matrix(key, &R->regions[k].key)) return &R->regions[k];
+        if (k != except && R->regions[k]->Aa && sx_key_same_matrix(key, &R->regions[k]->key)) return R->regions[k];
     return NULL;
 }
 
@@ -76,23 +76,31 @@ static int enter_region(sx_run *R)
     R->stamp++;
     if (R->cur >= 0 && sx_key_equal(&key, &current(R)->key)) return (current(R)->used = R->stamp), entered(R);
     for (k = 0; k < R->nregions; k++)
-        if (sx_key_equal(&key, &R->regions[k].key)) {
+        if (sx_key_equal(&key, &R->regions[k]->key)) {
             R->cur = k;
-            R->regions[k].used = R->stamp;
+            R->regions[k]->used = R->stamp;
             return entered(R);
         }
-    if (R->nregions < R->capacity) slot = R->nregions++;
-    else {
+    if (R->nregions < R->capacity) { /* a slot's memory as it is first used (a region takes 127 KB,
+                                        most of it for more storeys than this scene's: not zeroed, so
+                                        what a region does not use stays untouched) */
+        if (!(R->regions[R->nregions] = (sx_region *)malloc(sizeof(sx_region)))) {
+            snprintf(R->res->message, sizeof R->res->message, "out of memory");
+            return RW_SCENE_NO_MEMORY;
+        }
+        sx_region_blank(R->regions[R->nregions]);
+        slot = R->nregions++;
+    } else {
         for (k = 0; k < R->capacity; k++)
-            if (slot < 0 || R->regions[k].used < R->regions[slot].used) slot = k;
+            if (slot < 0 || R->regions[k]->used < R->regions[slot]->used) slot = k;
         sx_settle_doubts(R, slot); /* their steps need the region's matrix */
     }
     R->cur = slot;
-    R->regions[slot].used = R->stamp;
-    k = sx_region_build(&R->sc, &key, &R->regions[slot], sibling(R, &key, slot));
+    R->regions[slot]->used = R->stamp;
+    k = sx_region_build(&R->sc, &key, R->regions[slot], sibling(R, &key, slot));
     if (k == RW_SCENE_SOLVER) snprintf(R->res->message, sizeof R->res->message, "singular mass matrix at t = %.9g s", R->t);
     if (k == RW_SCENE_NO_MEMORY) snprintf(R->res->message, sizeof R->res->message, "out of memory");
-    if (k) R->regions[slot].key.standing[0] = -1; /* never matches */
+    if (k) R->regions[slot]->key.standing[0] = -1; /* never matches */
     return k ? k : entered(R);
 }
 
@@ -213,7 +221,10 @@ static void free_run(sx_run *R)
 {
     int k;
     sx_free_doubts(R);
-    for (k = 0; k < R->nregions; k++) sx_region_free(&R->regions[k]);
+    for (k = 0; k < R->nregions; k++) {
+        sx_region_free(R->regions[k]);
+        free(R->regions[k]);
+    }
     free(R->regions);
     free(R);
 }
@@ -235,7 +246,7 @@ static sx_run *new_run(const rw_scene_spec *spec, const rw_scene_record *rec, co
     sx_run *R = (sx_run *)calloc(1, sizeof *R);
     if (!R) return NULL;
     R->capacity = region_capacity(spec);
-    R->regions = (sx_region *)calloc((size_t)R->capacity, sizeof(sx_region));
+    R->regions = (sx_region **)calloc((size_t)R->capacity, sizeof(sx_region *));
     if (!R->regions) return free(R), NULL;
     R->rec = rec, R->opt = opt, R->res = res;
     R->cur = -1;

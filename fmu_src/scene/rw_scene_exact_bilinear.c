@@ -59,7 +59,7 @@ void sx_sync_hysteresis(sx_run *R)
     const sx_key *key;
     int i;
     if (R->cur < 0) return;
-    key = &R->regions[R->cur].key;
+    key = &R->regions[R->cur]->key;
     for (i = 0; i < sc->S.n_storeys; i++) {
         const bd_spring *s = &sc->S.building.diaph[i];
         double *f, d, d0, z;
@@ -81,7 +81,7 @@ void sx_sync_hysteresis(sx_run *R)
 void sx_bilinear_entered(sx_run *R)
 {
     const rw_scene *sc = &R->sc;
-    const sx_key *key = &R->regions[R->cur].key;
+    const sx_key *key = &R->regions[R->cur]->key;
     int i;
     for (i = 0; i < sc->S.n_storeys; i++) {
         const bd_spring *s = &sc->S.building.diaph[i];

@@ -172,15 +172,22 @@ static void bernstein(sx_lopoly *p, double v0, double v1, double d0, double d1, 
 int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[],
                      sx_lopoly P[SX_MAX_F])
 {
-    const double h = hs->h;
+    sx_mode_bounds B;
+    if (!r->modes.valid) return 0;
+    sx_mode_bounds_of(r, hs, xa0, &B);
+    sx_hermite_polys_of(r, &B, xa0, xa1, P);
+    return 1;
+}
+
+void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[],
+                         sx_lopoly P[SX_MAX_F])
+{
+    const double h = B->h;
     const sx_modes *m = &r->modes;
     const int nf = r->nf;
-    double v0[SX_MAX_F], v1[SX_MAX_F], d0[SX_MAX_F], d1[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F], margin;
-    sx_mode_bounds B;
+    double v0[SX_MAX_F], v1[SX_MAX_F], d0[SX_MAX_F], d1[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F];
+    const double margin = SX_MODES_MARGIN(m->cond);
     int f, k;
-    if (!m->valid) return 0;
-    sx_mode_bounds_of(r, hs, xa0, &B);
-    margin = SX_MODES_MARGIN(m->cond);
     for (f = 0; f < nf; f++) {
         v0[f] = sx_functional(r, f, xa0);
         v1[f] = sx_functional(r, f, xa1);
@@ -190,7 +197,7 @@ int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double
     }
     for (k = 0; k < m->count; k++) { /* the modes in turn, the functionals contiguous: vectorised */
         const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
-        const sx_mode_bound *b = &B.mode[k];
+        const sx_mode_bound *b = &B->mode[k];
         for (f = 0; f < nf; f++) {
             tail[f] += abs_a[f] * b->err;
             dtail[f] += abs_a[f] * b->derr;
@@ -205,6 +212,5 @@ int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double
     }
     for (f = 0; f < nf; f++)
         bernstein(&P[f], v0[f], v1[f], d0[f], d1[f], tail[f], dtail[f],
-                  margin * (fabs(v0[f]) + fabs(v1[f]) + fabs(d0[f]) + fabs(d1[f]) + m->share_max[f] * B.sizes) + DBL_MIN);
-    return 1;
+                  margin * (fabs(v0[f]) + fabs(v1[f]) + fabs(d0[f]) + fabs(d1[f]) + m->share_max[f] * B->sizes) + DBL_MIN);
 }

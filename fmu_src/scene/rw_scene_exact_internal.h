@@ -13,6 +13,7 @@
 #include <complex.h>
 #include <float.h>
 #include <math.h>
+#include <string.h>
 
 #include "rw_scene_exact.h"
 
@@ -44,14 +45,21 @@ enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC, SX_DEFORM_RATE };
  * the base acceleration */
 enum { SX_PEAK_S1 = 0, SX_PEAK_S2, SX_PEAK_DEFORM, SX_PEAK_ACC, SX_PEAK_KINDS };
 
-/* a . b over n entries, in two running sums (even and odd entries: not a row's order) */
+/* a . b over n entries, in two running sums (even and odd entries: not a row's order) held as one
+ * vector register (GCC's vector extension: SSE2 on x86-64) */
+typedef double sx_v2 __attribute__((vector_size(16)));
 static inline double sx_dot(const double *a, const double *b, int n)
 {
-    double s0 = 0.0, s1 = 0.0;
+    sx_v2 s = {0.0, 0.0};
+    double sum;
     int i = 0;
-    for (; i + 2 <= n; i += 2) s0 += a[i] * b[i], s1 += a[i + 1] * b[i + 1];
-    if (i < n) s0 += a[i] * b[i];
-    return s0 + s1;
+    for (; i + 2 <= n; i += 2) {
+        sx_v2 x, y;
+        memcpy(&x, a + i, sizeof x), memcpy(&y, b + i, sizeof y);
+        s += x * y;
+    }
+    sum = s[0] + s[1];
+    return i < n ? sum + a[i] * b[i] : sum;
 }
 
 /* a row's nonzero entries when it holds two at most (c1 = 0 where it holds one, c0 = 0 too where
@@ -97,7 +105,8 @@ typedef struct {
     double abs_lam[SX_MAX_N], growth[SX_MAX_N]; /* |lam|, max(Re lam, 0) */
     /* functional f's share a of mode k by mode, the functionals contiguous (Re a, Im a, |a|): the
      * slow steps' loop over the functionals runs on these, which the compiler vectorises */
-    double share_re[SX_MAX_N][SX_MAX_F], share_im[SX_MAX_N][SX_MAX_F], share_abs[SX_MAX_N][SX_MAX_F];
+    double share_re[SX_MAX_N][SX_MAX_F + 1], share_im[SX_MAX_N][SX_MAX_F + 1], share_abs[SX_MAX_N][SX_MAX_F + 1];
+    /* (each zero past the last functional: the loops take the functionals two at a time) */
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N]; /* Winv, row-major */
     double wnorm[SX_MAX_N]; /* sum_i |Winv_ji| S_i over mode k's rows j: |zeta_k| <= wnorm_k max_i |x_i| / S_i */
@@ -236,7 +245,7 @@ typedef struct {
     rw_scene_result *res;
     double x[RW_SCENE_NX];
     double t;
-    sx_region *regions;
+    sx_region **regions;     /* the cached regions, each allocated as its slot is first used */
     int nregions, cur, capacity;
     long stamp;
     int nlines[RW_SCENE_MAX_STOREYS];
@@ -339,6 +348,8 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const s
 /* do two keys select the same first-order matrix (the same standing walls, J and branches)? */
 int sx_key_same_matrix(const sx_key *a, const sx_key *b);
 void sx_region_free(sx_region *r);
+/* a region's fields that say it holds nothing (no matrix, tables or modes), the rest left as it is */
+void sx_region_blank(sx_region *r);
 /* the scene state's (x, ag, slope) as the region's augmented state, and back */
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[]);
 void sx_scatter(const sx_region *r, const double xa[], double x[]);
@@ -417,6 +428,9 @@ typedef struct {
 void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs);
 /* the modes' bounds over a step (its constants hs) from its start xa0 (the region's modes valid) */
 void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
+/* the same from the modes' bounds over the step */
+void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[],
+                         sx_lopoly P[SX_MAX_F]);
 /* each functional's cubic Hermite interpolant over a step (its constants hs) from its values and
  * rates at the exact ends xa0 and xa1 = exp(Aa h) xa0 (Bernstein coefficients), with the modes'
  * bound on the motion's departure from it as the tail; 0 if the region has no usable modes */
@@ -448,14 +462,18 @@ typedef struct {
 } sx_suspects;
 /* the quiet test's suspects on given polynomials (no doubt kept): 0 if none */
 int sx_watch_suspects(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], sx_suspects *sus);
-/* the quiet test of a step from its exact ends (the region's modes valid; its constants hs), as
- * sx_watch_quiet_polys */
-int sx_watch_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
 /* the centre and half-width of a polynomial's range over its step */
 void sx_watch_box(const sx_lopoly *p, double *centre, double *radius);
 /* the lines of storey i's wall the box of q1's and q2's ranges (centres c, half-widths r; Q: |q|
  * at the start, for the lines' rounding) does not clear at once: bit k for line k */
 unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double c2, double r2, double Q1, double Q2);
+
+/* ---- the quiet test from a step's exact ends (rw_scene_exact_quick.c) ---- */
+/* the quiet test of a step from xa0 to its exact end xa1 (the region's modes valid; the step's
+ * constants hs): a first pass on every functional's polynomial at once, then, where it does not
+ * clear the step, the full test (sx_watch_quiet_polys) on the same polynomials; quiet (0), the end's
+ * peaks are taken */
+int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
 
 /* the peaks at a state of the region (a quiet step's exact end, the state after an event) */
 void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[]);

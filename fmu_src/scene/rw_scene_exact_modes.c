@@ -127,6 +127,7 @@ static void shares(const sx_region *r, sx_modes *m, const double *Vr)
                 if (m->pair[k]) im += r->F[f][i] * Vr[i * n + m->first[k] + 1];
             }
             m->share_re[k][f] = re, m->share_im[k][f] = im, m->share_abs[k][f] = sqrt(re * re + im * im);
+            m->share_re[k][r->nf] = m->share_im[k][r->nf] = m->share_abs[k][r->nf] = 0.0; /* (the pairs' pad) */
             m->share_max[f] = fmax(m->share_max[f], m->share_abs[k][f]);
         }
 }
@@ -177,7 +178,7 @@ void sx_modes_build(sx_region *r)
     const int n = r->n;
     double wr[SX_MAX_N], wi[SX_MAX_N], Vr[SX_MAX_N * SX_MAX_N], Winv[SX_MAX_N * SX_MAX_N];
     int blocked[SX_MAX_N] = {0}, i;
-    memset(m, 0, sizeof *m);
+    m->count = m->blocks = m->valid = 0; /* (the arrays are filled for the modes and functionals there are) */
     if (decompose(r, wr, wi, Vr) || inverse_basis(r, wi, blocked, Vr, Winv, &m->cond)) return;
     /* nearly defective pairs as blocks, the worst first, while the basis is too ill-conditioned */
     while (!(m->cond < SX_MODES_COND) && sx_block_worst_pair(r, wr, wi, blocked, Vr, Winv))

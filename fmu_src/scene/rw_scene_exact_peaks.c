@@ -63,7 +63,7 @@ static int levels_of(const sx_region *r, double h)
 /* the chain for doubt d: kept, or built (0: none could be) */
 static const halves *chain_for(sx_run *R, halves *c, const sx_doubt *d)
 {
-    sx_region *r = &R->regions[d->region];
+    sx_region *r = R->regions[d->region];
     const size_t nn = (size_t)(r->na * r->na);
     const int levels = levels_of(r, d->h);
     double *Et;
@@ -85,7 +85,7 @@ static const halves *chain_for(sx_run *R, halves *c, const sx_doubt *d)
 static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const double xa0[], const double xa1[],
                           double h, int level)
 {
-    const sx_region *r = &R->regions[d->region];
+    const sx_region *r = R->regions[d->region];
     double mid[SX_MAX_NA];
     const double half = 0.5 * h;
     if (!c || level >= c->levels || !r->modes.valid) return on_series(R, r, d, xa0, h);
@@ -98,7 +98,7 @@ static void resolve_piece(sx_run *R, const halves *c, const sx_doubt *d, const d
 /* doubt d resolved: halved on its chain of propagators (NULL: none could be had), else on the series */
 static void resolve(sx_run *R, const halves *c, const sx_doubt *d)
 {
-    const sx_region *r = &R->regions[d->region];
+    const sx_region *r = R->regions[d->region];
     double end[SX_MAX_NA];
     if (!c || !r->modes.valid) return on_series(R, r, d, d->xa0, d->h);
     sx_matvec_cols(r->na, r->na, c->Et, d->xa0, end);
@@ -130,7 +130,7 @@ void sx_settle_doubts(sx_run *R, int region)
 
 int sx_doubt_peak(sx_run *R, int storey, int kind, double bound, double h, const double xa0[])
 {
-    const sx_region *r = &R->regions[R->cur];
+    const sx_region *r = R->regions[R->cur];
     sx_doubt *d;
     if (!R->doubts && !(R->doubts = (sx_doubt *)malloc(SX_DOUBTS * sizeof *R->doubts))) return 1;
     if (R->ndoubts == SX_DOUBTS) sx_settle_doubts(R, -1);

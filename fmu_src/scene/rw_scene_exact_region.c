@@ -471,16 +471,23 @@ int sx_region_build(const rw_scene *sc, const sx_key *key, sx_region *r, const s
     return RW_SCENE_OK;
 }
 
+void sx_region_blank(sx_region *r)
+{
+    int k;
+    r->blob = NULL;
+    r->Aa = r->Aa_cols = NULL;
+    r->used = 0;
+    r->last_step = 0;
+    r->modes.valid = 0;
+    for (k = 0; k < SX_STEPS; k++) r->step[k].mem = NULL, r->step[k].h = 0.0, r->step[k].used = 0;
+}
+
 void sx_region_free(sx_region *r)
 {
     int k;
     free(r->blob);
-    r->blob = NULL;
-    r->Aa = r->Aa_cols = NULL;
-    for (k = 0; k < SX_STEPS; k++) {
-        free(r->step[k].mem);
-        memset(&r->step[k], 0, sizeof r->step[k]);
-    }
+    for (k = 0; k < SX_STEPS; k++) free(r->step[k].mem);
+    sx_region_blank(r);
 }
 
 void sx_gather(const sx_region *r, const double x[], double ag, double slope, double xa[])

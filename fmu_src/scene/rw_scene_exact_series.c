@@ -21,9 +21,9 @@ static double scaled_norm(const sx_region *r, const double *v)
 {
     double m = 0.0;
     int i;
-    for (i = 0; i < r->n; i++) {
-        const double a = fabs(v[i]) / r->scale[i];
-        if (a > m) m = a;
+    for (i = 0; i < r->n; i++) { /* (the scales are powers of 2: their inverses are exact) */
+        const double a = fabs(v[i]) * r->inv_scale[i];
+        m = a > m ? a : m;
     }
     return m;
 }
@@ -48,11 +48,12 @@ int sx_parts(const sx_region *r, double length)
 
 void sx_series_at(const sx_region *r, const sx_series *s, double u, double xa[])
 {
+    const int na = r->na;
     int k, j;
-    for (k = 0; k < r->na; k++) {
-        double v = 0.0;
-        for (j = s->deg; j >= 0; j--) v = v * u + s->X[(size_t)j * (size_t)r->na + (size_t)k];
-        xa[k] = v;
+    for (k = 0; k < na; k++) xa[k] = 0.0;
+    for (j = s->deg; j >= 0; j--) { /* Horner's rule, every entry at once */
+        const double *X = s->X + (size_t)j * (size_t)na;
+        for (k = 0; k < na; k++) xa[k] = xa[k] * u + X[k];
     }
 }
 
@@ -191,18 +192,19 @@ static void z_rows(const sx_region *r, sx_step *st)
     }
 }
 
-/* the functionals' rows l.(Aa h)^k/k! for k <= SX_LO, and the momentum's work integrals */
+/* the functionals' rows l.(Aa h)^k/k! for k <= SX_LO (the quiet test's polynomials where the region
+ * has no modes to bound with: low_polys), and the momentum's work integrals */
 static void rows(const sx_region *r, sx_step *st)
 {
     const int na = r->na, D = SX_LO + 1;
     double cur[SX_MAX_NA], next[SX_MAX_NA], by_rows[SX_MAX_F * (SX_LO + 1) * SX_MAX_NA];
     int f, k, j;
-    for (f = 0; f < r->nf; f++) {
+    for (f = 0; f < r->nf && !r->modes.valid; f++) { /* (the Taylor rows of regions without modes only) */
         double *out = by_rows + (size_t)f * (size_t)(D * na);
         memcpy(out, r->F[f], sizeof(double) * (size_t)na);
         for (k = 0; k < SX_LO; k++) row_step(r, out + k * na, k, st->h, out + (k + 1) * na);
     }
-    sx_transpose(r->nf * D, na, by_rows, st->rows);
+    if (!r->modes.valid) sx_transpose(r->nf * D, na, by_rows, st->rows);
     z_rows(r, st);
     memcpy(cur, r->mom, sizeof(double) * (size_t)na);
     memset(st->wg, 0, sizeof(double) * (size_t)(2 * na));

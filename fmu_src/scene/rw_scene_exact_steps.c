@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 
-static sx_region *current(sx_run *R) { return &R->regions[R->cur]; }
+static sx_region *current(sx_run *R) { return R->regions[R->cur]; }
 
 /* the motion over a cleared step of its table: xa1 = exp(Aa h) xa0, the work integrals */
 static void table_step(sx_run *R, const sx_region *r, const sx_step *st, const double xa0[], const double xa1[],
@@ -155,10 +155,9 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     sx_step_propagate(r, st, xa0, xa1);
     st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
-    why = sx_watch_quiet_ends(R, r, &st->herm, xa0, xa1);
+    why = sx_quiet_ends(R, r, &st->herm, xa0, xa1);
     st->used = R->stamp;
     if (why) return why;
-    sx_watch_peaks_at(R, r, xa1);
     table_step(R, r, st, xa0, xa1, t1);
     return 0;
 }

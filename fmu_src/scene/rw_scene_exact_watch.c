@@ -319,16 +319,18 @@ void sx_watch_box(const sx_lopoly *p, double *centre, double *radius)
  * which the compiler vectorises; bit k for line k. */
 unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double c2, double r2, double Q1, double Q2)
 {
-    const sx_line_set *L = &R->line_set[i];
+    const sx_line_set *restrict L = &R->line_set[i];
     const int n = R->nlines[i];
+    double margin[SX_MAX_LINES];
     unsigned bits = 0;
     int k;
-    for (k = 0; k < n; k++) {
+    for (k = 0; k < n; k++) { /* (no branch: vectorised) */
         const double wc = L->a0[k] * c1 + L->a1[k] * c2, wr = L->abs_a0[k] * r1 + L->abs_a1[k] * r2;
         const double zc = L->c[k] + L->s[k] * fabs(wc) + L->t[k] * wc;
         const double tol = SX_TOL * (L->abs_c[k] + L->abs_a0[k] * Q1 + L->abs_a1[k] * Q2) + DBL_MIN;
-        bits |= (unsigned)!(fabs(zc) > L->slope[k] * wr + 2.0 * tol) << k;
+        margin[k] = fabs(zc) - (L->slope[k] * wr + 2.0 * tol);
     }
+    for (k = 0; k < n; k++) bits |= (unsigned)!(margin[k] > 0.0) << k;
     return bits;
 }
 
@@ -487,20 +489,11 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
     sx_lopoly P[SX_MAX_F];
     if (r->modes.valid) { /* the ends first: the polynomials are their interpolants */
         sx_step_propagate(r, st, xa0, xa1);
-        if (sx_watch_quiet_ends(R, r, &st->herm, xa0, xa1) != 0) return 0;
-        sx_watch_peaks_at(R, r, xa1);
-        return 1;
+        return sx_quiet_ends(R, r, &st->herm, xa0, xa1) == 0;
     }
     low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
     if (!r->modes.valid) sx_step_propagate(r, st, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
-}
-
-int sx_watch_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[])
-{
-    sx_lopoly P[SX_MAX_F];
-    sx_hermite_polys(r, hs, xa0, xa1, P);
-    return sx_watch_quiet_polys(R, r, P, hs->h, xa0);
 }
