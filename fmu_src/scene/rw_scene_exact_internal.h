@@ -193,6 +193,8 @@ typedef struct {
     double eq_c[SX_MAX_N * (SX_MAX_N + 1) / 2];
     int nterms;                /* viscous dissipation rate = sum_t dcoef_t (dvec_t . xa)^2 */
     double dcoef[SX_MAX_TERMS], dvec[SX_MAX_TERMS][SX_MAX_NA];
+    int d_nz[SX_MAX_TERMS];    /* dvec_t's nonzero entries (one or two: a dashpot's velocities) */
+    sx_pair d_pair[SX_MAX_TERMS];
     sx_collapse col[RW_SCENE_MAX_STOREYS];
     sx_modes modes;
     sx_step step[SX_STEPS];

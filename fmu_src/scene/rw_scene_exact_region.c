@@ -356,6 +356,10 @@ static void damping_term(sx_region *r, double coef, int v1, int v2)
             return;
         }
     r->dcoef[k] = coef;
+    {
+        int at[SX_MAX_NA];
+        nonzeros(r->dvec[k], r->n, &r->d_nz[k], at, &r->d_pair[k]);
+    }
     r->nterms++;
 }
 

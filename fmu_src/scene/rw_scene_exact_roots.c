@@ -159,10 +159,15 @@ static int suspect(const sx_suspects *sus, const unsigned *set, unsigned bit) { 
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx_suspects *sus)
 {
     storey_series P[RW_SCENE_MAX_STOREYS];
+    int in_play[RW_SCENE_MAX_STOREYS];
     double first = 2.0;
     int i, k;
-    storeys(R, r, s, P, -1);
+    for (i = 0; i < R->sc.S.n_storeys; i++) { /* a storey with nothing suspect needs no polynomial */
+        in_play[i] = !sus || sus->wall[i] || sus->diaphragm[i] || sus->peaks[i];
+        if (in_play[i]) storeys(R, r, s, P, i);
+    }
     for (i = 0; i < R->sc.S.n_storeys; i++) {
+        if (!in_play[i]) continue;
         for (k = 0; k < R->ndlines[i]; k++) {
             const sx_dline *L = &R->dlines[i][k];
             if (suspect(sus, sus ? &sus->diaphragm[i] : NULL, 1u << k))
@@ -175,7 +180,8 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx
         if (r->col[i].active && suspect(sus, sus ? &sus->wall[i] : NULL, 1u << 31))
             first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));
     }
-    for (i = 0; i < R->sc.S.n_storeys; i++) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0), sus ? sus->peaks[i] : ~0u);
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        if (in_play[i]) storey_peaks(R, i, &P[i], s->deg, fmin(first, 1.0), sus ? sus->peaks[i] : ~0u);
     return first;
 }
 
@@ -187,28 +193,32 @@ double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, i
     return quantity(R, storey, &P[storey], kind, s->deg, p, &err) ? sx_poly_max_abs(p, s->deg, err, 1.0, best) : best;
 }
 
+/* the integral over [0, u] of p(v)^2 (p of degree deg) */
+static double square_integral(const double *p, int deg, double u)
+{
+    double sq[SX_PMAX];
+    int j, k;
+    for (k = 0; k <= 2 * deg; k++) sq[k] = 0.0;
+    for (j = 0; j <= deg; j++) { /* the square's coefficients, each product once and doubled */
+        sq[2 * j] += p[j] * p[j];
+        for (k = j + 1; k <= deg; k++) sq[j + k] += 2.0 * p[j] * p[k];
+    }
+    return sx_poly_integral(sq, 2 * deg, u);
+}
+
 void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping)
 {
-    double mom[SX_PMAX], prod[SX_PMAX], d[SX_PMAX], sq[SX_PMAX];
+    double mom[SX_PMAX], prod[SX_PMAX], d[SX_PMAX];
     const int na = r->na, deg = s->deg;
     const double ag0 = s->X[r->n], ag1 = s->X[(size_t)na + (size_t)r->n]; /* ag over the step: ag0 + ag1 u */
-    int k, j, t;
-    for (k = 0; k <= deg; k++) {
-        const double *X = s->X + (size_t)k * (size_t)na;
-        mom[k] = 0.0;
-        for (j = 0; j < r->n; j++) mom[k] += r->mom[j] * X[j];
-    }
+    int k, t;
+    for (k = 0; k <= deg; k++) mom[k] = sx_dot(r->mom, s->X + (size_t)k * (size_t)na, r->n);
     for (k = 0; k <= deg + 1; k++) /* (ag0 + ag1 u) mom(u) */
         prod[k] = (k <= deg ? ag0 * mom[k] : 0.0) + (k >= 1 ? ag1 * mom[k - 1] : 0.0);
     *w_ground = -s->L * sx_poly_integral(prod, deg + 1, u);
     *w_damping = 0.0;
     for (t = 0; t < r->nterms; t++) {
-        for (k = 0; k <= deg; k++) {
-            const double *X = s->X + (size_t)k * (size_t)na;
-            d[k] = 0.0;
-            for (j = 0; j < r->n; j++) d[k] += r->dvec[t][j] * X[j];
-        }
-        sx_poly_square(d, deg, sq);
-        *w_damping += r->dcoef[t] * s->L * sx_poly_integral(sq, 2 * deg, u);
+        for (k = 0; k <= deg; k++) d[k] = sx_row_dot(r->dvec[t], r->d_nz[t], r->n, &r->d_pair[t], s->X + (size_t)k * (size_t)na);
+        *w_damping += r->dcoef[t] * s->L * square_integral(d, deg, u);
     }
 }
