@@ -47,12 +47,12 @@ static sx_region *current(sx_run *R) { return R->regions[R->cur]; }
 
 static double energy(sx_run *R, double t);
 
-/* the region's energy constant from the scene's own energy at the state it is entered at, and its
- * bilinear diaphragms' indicators */
+/* the region's energy constant from the scene's own energy at the state it is entered at (R->e_event),
+ * and its bilinear diaphragms' indicators */
 static int entered(sx_run *R)
 {
     sx_region *r = current(R);
-    r->e_const = energy(R, R->t) - sx_region_energy(r, R->x);
+    r->e_const = R->e_event - sx_region_energy(r, R->x);
     R->work_hysteretic = 0.0;
     sx_bilinear_entered(R);
     return RW_SCENE_OK;
@@ -120,6 +120,7 @@ static void peaks_now(sx_run *R)
 int sx_handle_events(sx_run *R)
 {
     const double ag = sx_ground(R, R->t);
+    double before;
     int rounds = 0, flags, code;
     if (R->t == R->last_event_t && ++R->same_instant > MAX_EVENTS_PER_INSTANT) {
         snprintf(R->res->message, sizeof R->res->message, "more than %d events at t = %.9g s", MAX_EVENTS_PER_INSTANT, R->t);
@@ -129,10 +130,9 @@ int sx_handle_events(sx_run *R)
     R->last_event_t = R->t;
     sx_sync_hysteresis(R); /* the region left: its diaphragms' z and work */
     R->z_next_valid = 0;   /* the rates jump: the Bouc-Wen fits start afresh */
-    do {
-        const double before = energy(R, R->t);
+    before = energy(R, R->t);
+    do { /* (the energy between two rounds is the same evaluation: the losses sum to the first's less the last's) */
         flags = rw_scene_event_update(&R->sc, R->t, ag, R->x);
-        R->losses += before - energy(R, R->t);
         R->res->events++;
         if (++rounds > MAX_ROUNDS_PER_EVENT) {
             snprintf(R->res->message, sizeof R->res->message,
@@ -140,6 +140,8 @@ int sx_handle_events(sx_run *R)
             return RW_SCENE_ZENO;
         }
     } while (flags & 3);
+    R->e_event = energy(R, R->t);
+    R->losses += before - R->e_event;
     sx_watch_lines(R);
     code = enter_region(R);
     if (code == RW_SCENE_OK) peaks_now(R);

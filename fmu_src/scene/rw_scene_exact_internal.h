@@ -258,6 +258,7 @@ typedef struct {
     double d_synced[RW_SCENE_MAX_STOREYS]; /* a bilinear diaphragm's deformation where its work and
                                               z were last brought up to date (sx_sync_hysteresis) */
     double work_ground, work_damping, losses;
+    double e_event;          /* the scene's energy after the last event's update (sx_handle_events) */
     double z_next[SX_MAX_Z][2]; /* z' and z'' where the last fitted step ended: the next fit's guess */
     int z_next_valid;           /* ... unless an event came between */
     double work_hysteretic; /* the Bouc-Wen diaphragms' hysteretic work since the region was entered

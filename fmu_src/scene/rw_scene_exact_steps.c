@@ -45,15 +45,15 @@ static int fit_failed(sx_run *R, sx_region *r, double L)
 }
 
 /* the first root over a piece of the exact series (u in (0, 1], or 2 if none), with the peaks up to
- * it: the quiet test on the piece's ends first, and the series only for what it could not clear */
-static double piece_root(sx_run *R, const sx_region *r, const sx_series *s, const double xa0[])
+ * it: the quiet test on the piece's ends first (xa1: the end it finds), and the series only for what
+ * it could not clear */
+static double piece_root(sx_run *R, const sx_region *r, const sx_series *s, const double xa0[], double xa1[])
 {
-    double xa1[SX_MAX_NA];
     sx_lopoly P[SX_MAX_F];
     sx_hermite_step hs;
     sx_suspects sus;
-    if (!r->modes.valid || r->nz) return sx_watch_step(R, r, s, NULL);
     sx_series_at(r, s, 1.0, xa1);
+    if (!r->modes.valid || r->nz) return sx_watch_step(R, r, s, NULL);
     sx_hermite_step_of(r, s->L, &hs);
     sx_hermite_polys(r, &hs, xa0, xa1, P);
     if (sx_watch_suspects(R, r, P, &sus)) return sx_watch_step(R, r, s, &sus);
@@ -77,11 +77,11 @@ static int exact_piece(sx_run *R, double t1, double ta, double ag_a, double slop
             continue; /* again in shorter parts */
         }
         sx_series_of(r, xa0, L, &s);
-        u = piece_root(R, r, &s, xa0);
+        u = piece_root(R, r, &s, xa0, xa);
         sx_series_work(r, &s, fmin(u, 1.0), &wg, &wd);
         R->work_ground += wg;
         R->work_damping += wd;
-        sx_series_at(r, &s, fmin(u, 1.0), xa);
+        if (u < 1.0) sx_series_at(r, &s, u, xa); /* (else the end piece_root found) */
         if (r->nz) sx_bouc_wen_advance(R, r, xa0, fmin(u, 1.0), NULL, &s);
         sx_scatter(r, xa, R->x);
         R->res->steps++;
