@@ -151,7 +151,11 @@ static void rows_1(int ld, int cols, const double *restrict At, const double *re
 #define SX_AVX2 1
 typedef double sx_v4 __attribute__((vector_size(32)));
 static int has_avx2;
-__attribute__((constructor)) static void find_avx2(void) { has_avx2 = __builtin_cpu_supports("avx2"); }
+__attribute__((constructor)) static void find_avx2(void)
+{
+    __builtin_cpu_init(); /* (a constructor may run before libgcc's own) */
+    has_avx2 = __builtin_cpu_supports("avx2");
+}
 
 __attribute__((target("avx2"))) static sx_v4 load4(const double *p)
 {
