@@ -83,8 +83,9 @@ static int enter_region(sx_run *R)
         }
     if (R->nregions < R->capacity) { /* a slot's memory as it is first used (a region takes 127 KB,
                                         most of it for more storeys than this scene's: not zeroed, so
-                                        what a region does not use stays untouched) */
-        if (!(R->regions[R->nregions] = (sx_region *)malloc(sizeof(sx_region)))) {
+                                        what a region does not use stays untouched), from the memory
+                                        the thread's last run left where it can */
+        if (!(R->regions[R->nregions] = (sx_region *)sx_pool_alloc(sizeof(sx_region)))) {
             snprintf(R->res->message, sizeof R->res->message, "out of memory");
             return RW_SCENE_NO_MEMORY;
         }
@@ -225,7 +226,7 @@ static void free_run(sx_run *R)
     sx_free_doubts(R);
     for (k = 0; k < R->nregions; k++) {
         sx_region_free(R->regions[k]);
-        free(R->regions[k]);
+        sx_pool_free(R->regions[k]);
     }
     free(R->regions);
     free(R);

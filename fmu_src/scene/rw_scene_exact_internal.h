@@ -328,6 +328,10 @@ int sx_bouc_wen_fit(const sx_run *R, const sx_region *r, const sx_step *st, doub
 void sx_bouc_wen_advance(sx_run *R, const sx_region *r, const double xa0[], double u, const sx_step *st,
                          const sx_series *s);
 
+/* ---- memory kept for the next run on the thread (rw_scene_exact_pool.c) ---- */
+void *sx_pool_alloc(size_t size); /* a block of at least size bytes, not zeroed (NULL: no memory) */
+void sx_pool_free(void *p);       /* a block of sx_pool_alloc back (NULL: nothing) */
+
 /* ---- dense pieces (rw_scene_exact_dense.c) ---- */
 int sx_lu_solve(int n, double *A, double *B, int nrhs); /* A X = B in place (B n x nrhs); 0 ok, 1 singular */
 void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S (powers of 2), ||S^-1 A S||_inf */

@@ -132,7 +132,7 @@ int sx_doubt_peak(sx_run *R, int storey, int kind, double bound, double h, const
 {
     const sx_region *r = R->regions[R->cur];
     sx_doubt *d;
-    if (!R->doubts && !(R->doubts = (sx_doubt *)malloc(SX_DOUBTS * sizeof *R->doubts))) return 1;
+    if (!R->doubts && !(R->doubts = (sx_doubt *)sx_pool_alloc(SX_DOUBTS * sizeof *R->doubts))) return 1;
     if (R->ndoubts == SX_DOUBTS) sx_settle_doubts(R, -1);
     d = &R->doubts[R->ndoubts++];
     d->bound = bound, d->h = h, d->t1 = R->t + h, d->storey = storey, d->kind = kind, d->region = R->cur;
@@ -142,7 +142,7 @@ int sx_doubt_peak(sx_run *R, int storey, int kind, double bound, double h, const
 
 void sx_free_doubts(sx_run *R)
 {
-    free(R->doubts);
+    sx_pool_free(R->doubts);
     R->doubts = NULL;
     R->ndoubts = 0;
 }

@@ -412,7 +412,7 @@ static void collapse_forms(const rw_scene *sc, const sx_key *key, sx_region *r)
 static int allocate(sx_region *r)
 {
     sx_region_free(r);
-    r->blob = (double *)calloc((size_t)(2 * r->na * r->na), sizeof(double));
+    r->blob = (double *)sx_pool_alloc(sizeof(double) * (size_t)(2 * r->na * r->na)); /* (set in full: augmented) */
     if (!r->blob) return 1;
     r->Aa = r->blob;
     r->Aa_cols = r->Aa + r->na * r->na;
@@ -489,8 +489,8 @@ void sx_region_blank(sx_region *r)
 void sx_region_free(sx_region *r)
 {
     int k;
-    free(r->blob);
-    for (k = 0; k < SX_STEPS; k++) free(r->step[k].mem);
+    sx_pool_free(r->blob);
+    for (k = 0; k < SX_STEPS; k++) sx_pool_free(r->step[k].mem);
     sx_region_blank(r);
 }
 

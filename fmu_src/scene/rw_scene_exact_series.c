@@ -305,7 +305,7 @@ static int table_memory(const sx_region *r, sx_step *st)
 {
     const size_t nn = (size_t)(r->na * r->na);
     if (st->mem) return 0;
-    st->mem = (double *)malloc(sizeof(double) *
+    st->mem = (double *)sx_pool_alloc(sizeof(double) *
                                (4 * nn + (size_t)((r->n + 2 + r->nf * (SX_LO + 1) + r->nz * (SX_Z_NODES + 3) + 3) * r->na)));
     if (!st->mem) return 1;
     st->E = st->mem, st->Wd = st->E + nn, st->Et = st->Wd + nn, st->Wdp = st->Et + nn;
