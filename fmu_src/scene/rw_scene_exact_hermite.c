@@ -48,22 +48,27 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs)
     }
 }
 
-/* mode k's coordinate from the state (a pair's zeta = y_j - i y_j+1) */
-static double complex coordinate(const sx_region *r, int k, const double x[])
+/* every mode's coordinates y = Winv x from the state, in one product (vectorised by columns) */
+static void coordinates(const sx_region *r, const double x[], double y[])
 {
-    const sx_modes *m = &r->modes;
-    const int n = r->n, j = m->first[k];
-    const double *w = m->Winv + (size_t)j * (size_t)n;
-    return sx_dot(w, x, n) - I * (m->pair[k] ? sx_dot(w + n, x, n) : 0.0);
+    sx_matvec_cols(r->n, r->n, r->modes.WinvT, x, y);
 }
 
-/* a slow mode (|mu| < 1) over the step: its free part's size from the state's balanced norm xn and
- * the particular part's from the record's, |C| <= |zeta| + |alpha| */
-static void slow_mode(const sx_modes *m, int k, const sx_hermite_step *hs, double xn, double ag0, double slope,
-                      sx_mode_bound *b)
+/* mode k's coordinate from them (a pair's zeta = y_j - i y_j+1) */
+static double complex coordinate(const sx_modes *m, int k, const double y[])
 {
-    const double w4G = hs->w4[k] * hs->G[k];
-    const double z = m->wnorm[k] * xn, c = z + m->pb0[k] + m->pb1[k] * fabs(ag0) + m->pb2[k] * fabs(slope);
+    const int j = m->first[k];
+    return m->pair[k] ? y[j] - I * y[j + 1] : y[j];
+}
+
+/* a slow mode (|mu| < 1) over the step: its free part's size |C| <= |zeta| + |alpha| (the particular
+ * part's from the record's) */
+static void slow_mode(const sx_region *r, int k, const sx_hermite_step *hs, const double xa0[], const double y0[],
+                      double slope, sx_mode_bound *b)
+{
+    const sx_modes *m = &r->modes;
+    const double w4G = hs->w4[k] * hs->G[k], z = mag(coordinate(m, k, y0));
+    const double c = z + m->pb0[k] + m->pb1[k] * fabs(xa0[r->n]) + m->pb2[k] * fabs(slope);
     b->band = 0;
     b->err = c * w4G * PEANO_VALUE;
     b->derr = c * w4G * PEANO_RATE;
@@ -73,13 +78,13 @@ static void slow_mode(const sx_modes *m, int k, const sx_hermite_step *hs, doubl
 /* a mode that turns by a radian or more over the step: its coordinate, its free part C (zeta less
  * its particular part alpha = -(b0 + b1 / lam) / lam, b0 = g0 + g1 ag0, b1 = g1 slope) bounded
  * through the interpolant, or a band past |mu|^4 = 384 */
-static void fast_mode(const sx_region *r, int k, const sx_hermite_step *hs, const double xa0[], double slope,
-                      sx_mode_bound *b)
+static void fast_mode(const sx_region *r, int k, const sx_hermite_step *hs, const double xa0[], const double y0[],
+                      double slope, sx_mode_bound *b)
 {
     const sx_modes *m = &r->modes;
     const double wh = hs->wh[k], w4 = hs->w4[k], G = hs->G[k], h = hs->h;
     const double complex il = m->inv_lam[k], b1 = m->g1[k] * slope;
-    const double complex alpha = -(m->g0[k] + m->g1[k] * xa0[r->n] + b1 * il) * il, zeta = coordinate(r, k, xa0);
+    const double complex alpha = -(m->g0[k] + m->g1[k] * xa0[r->n] + b1 * il) * il, zeta = coordinate(m, k, y0);
     const double complex C = zeta - alpha;
     const double c = mag(C);
     b->band = w4 >= BAND_POWER;
@@ -94,6 +99,7 @@ static void fast_mode(const sx_region *r, int k, const sx_hermite_step *hs, cons
         b->err = c * G;
         b->derr = c * G * wh;
         b->size = (mag(zeta) + mag(alpha) + mag(b1 * il) * h + c) * (1.0 + wh) * G;
+        b->psize = mag(alpha) + mag(b1 * il) * h; /* its particular part alone (sx_ends_modal) */
         for (j = 0; j < 4; j++) b->re[j] = creal(w[j]), b->im[j] = cimag(w[j]);
     }
 }
@@ -106,13 +112,13 @@ static double complex apply_block(const double B[4], double complex z)
 }
 
 /* a block over the step; reach: what it adds to the largest size the blocks' coordinates take */
-static void block_mode(const sx_region *r, int k, const double xa0[], double slope, double h, sx_mode_bound *b,
-                       double *reach)
+static void block_mode(const sx_region *r, int k, const double xa0[], const double y0[], double slope, double h,
+                       sx_mode_bound *b, double *reach)
 {
     const sx_modes *m = &r->modes;
     const double complex b0 = m->g0[k] + m->g1[k] * xa0[r->n], b1 = m->g1[k] * slope;
     const double nb = m->abs_lam[k], g = exp(nb * h), h4 = h * h * h * h;
-    const double complex z0 = coordinate(r, k, xa0), d1 = apply_block(m->B[k], z0) + b0, d2 = apply_block(m->B[k], d1) + b1;
+    const double complex z0 = coordinate(m, k, y0), d1 = apply_block(m->B[k], z0) + b0, d2 = apply_block(m->B[k], d1) + b1;
     b->band = 0;
     b->err = mag(d2) * nb * nb * g * h4 * PEANO_VALUE;
     b->derr = mag(d2) * nb * nb * g * h4 * PEANO_RATE;
@@ -134,25 +140,76 @@ void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const doub
 {
     const sx_modes *m = &r->modes;
     const double slope = xa0[r->n + 1];
-    double reach = 0.0, xn = 0.0;
-    int k, i;
-    for (i = 0; i < r->n; i++) {
-        const double v = fabs(xa0[i]) * r->inv_scale[i];
-        xn = v > xn ? v : xn;
-    }
+    double reach = 0.0, y0[SX_MAX_N];
+    int k;
+    coordinates(r, xa0, y0);
     B->h = hs->h;
     B->bands = 0;
     for (k = 0; k < m->count; k++) {
         sx_mode_bound *b = &B->mode[k];
-        if (m->block[k]) block_mode(r, k, xa0, slope, hs->h, b, &reach);
-        else if (hs->wh[k] < 1.0) slow_mode(m, k, hs, xn, xa0[r->n], slope, b);
-        else fast_mode(r, k, hs, xa0, slope, b);
+        if (m->block[k]) block_mode(r, k, xa0, y0, slope, hs->h, b, &reach);
+        else if (hs->wh[k] < 1.0) slow_mode(r, k, hs, xa0, y0, slope, b);
+        else fast_mode(r, k, hs, xa0, y0, slope, b);
         B->bands += b->band;
     }
     if (m->blocks)
         for (k = 0; k < m->count; k++) driven(m, k, reach, hs->h, &B->mode[k]);
-    B->sizes = 0.0;
-    for (k = 0; k < m->count; k++) B->sizes += B->mode[k].size;
+    B->modal = 0;
+    for (k = 0; k < m->count; k++) {
+        B->wh[k] = hs->wh[k];
+        B->modal |= B->mode[k].band && hs->wh[k] > SX_BAND_MODAL_WH;
+    }
+}
+
+double sx_mode_size(const sx_mode_bounds *B, int k)
+{
+    const sx_mode_bound *b = &B->mode[k];
+    return !B->modal ? b->size : (b->band ? b->psize : b->size * (1.0 + B->wh[k]));
+}
+
+/* mode k's part of the ends' data in the modes' own coordinates: a band's particular part only
+ * (value alpha, alpha + beta h; rate beta), another's whole motion (zeta, and its rate lam zeta +
+ * b0 + b1 t, a block's B zeta + b0 + b1 t) */
+static void modal_part(const sx_region *r, int k, const sx_mode_bounds *B, const double xa0[], const double y0[],
+                       const double y1[], double complex w[4])
+{
+    const sx_modes *m = &r->modes;
+    const double h = B->h, slope = xa0[r->n + 1];
+    const double complex b0 = m->g0[k] + m->g1[k] * xa0[r->n], b1 = m->g1[k] * slope;
+    if (B->mode[k].band) {
+        const double complex beta = -b1 * m->inv_lam[k], alpha = -(b0 - beta) * m->inv_lam[k];
+        w[0] = alpha, w[1] = alpha + beta * h, w[2] = w[3] = beta * h;
+    } else {
+        const double complex z0 = coordinate(m, k, y0), z1 = coordinate(m, k, y1);
+        w[0] = z0, w[1] = z1;
+        w[2] = (m->block[k] ? apply_block(m->B[k], z0) : m->lam[k] * z0) + b0;
+        w[3] = (m->block[k] ? apply_block(m->B[k], z1) : m->lam[k] * z1) + b0 + b1 * h;
+        w[2] *= h, w[3] *= h;
+    }
+}
+
+void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[], double *v0,
+                   double *v1, double *d0, double *d1)
+{
+    const sx_modes *m = &r->modes;
+    const double h = B->h;
+    double y0[SX_MAX_N], y1[SX_MAX_N];
+    int f, k, j;
+    coordinates(r, xa0, y0);
+    coordinates(r, xa1, y1);
+    for (f = 0; f < r->nf; f++) { /* the record's own terms (no functional holds its slope) */
+        v0[f] = r->F[f][r->n] * xa0[r->n] + r->F[f][r->n + 2];
+        v1[f] = r->F[f][r->n] * (xa0[r->n] + h * xa0[r->n + 1]) + r->F[f][r->n + 2];
+        d0[f] = d1[f] = h * r->F[f][r->n] * xa0[r->n + 1];
+    }
+    for (k = 0; k < m->count; k++) {
+        double complex w[4];
+        double *out[4];
+        modal_part(r, k, B, xa0, y0, y1, w);
+        out[0] = v0, out[1] = v1, out[2] = d0, out[3] = d1;
+        for (j = 0; j < 4; j++)
+            for (f = 0; f < r->nf; f++) out[j][f] += m->share_re[k][f] * creal(w[j]) - m->share_im[k][f] * cimag(w[j]);
+    }
 }
 
 /* a cubic from its values and rates (in u) at the ends, as Bernstein coefficients, with its tails and
@@ -185,24 +242,29 @@ void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const doub
     const double h = B->h;
     const sx_modes *m = &r->modes;
     const int nf = r->nf;
-    double v0[SX_MAX_F], v1[SX_MAX_F], d0[SX_MAX_F], d1[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F];
+    double v0[SX_MAX_F], v1[SX_MAX_F], d0[SX_MAX_F], d1[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F], size[SX_MAX_F];
     const double margin = SX_MODES_MARGIN(m->cond);
     int f, k;
+    if (B->modal) sx_ends_modal(r, B, xa0, xa1, v0, v1, d0, d1);
     for (f = 0; f < nf; f++) {
-        v0[f] = sx_functional(r, f, xa0);
-        v1[f] = sx_functional(r, f, xa1);
-        d0[f] = h * sx_functional_rate(r, f, xa0);
-        d1[f] = h * sx_functional_rate(r, f, xa1);
-        tail[f] = dtail[f] = 0.0;
+        if (!B->modal) {
+            v0[f] = sx_functional(r, f, xa0);
+            v1[f] = sx_functional(r, f, xa1);
+            d0[f] = h * sx_functional_rate(r, f, xa0);
+            d1[f] = h * sx_functional_rate(r, f, xa1);
+        }
+        tail[f] = dtail[f] = size[f] = 0.0;
     }
     for (k = 0; k < m->count; k++) { /* the modes in turn, the functionals contiguous: vectorised */
         const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
         const sx_mode_bound *b = &B->mode[k];
+        const double mode_size = sx_mode_size(B, k);
         for (f = 0; f < nf; f++) {
             tail[f] += abs_a[f] * b->err;
             dtail[f] += abs_a[f] * b->derr;
+            size[f] += abs_a[f] * mode_size;
         }
-        if (!b->band) continue;
+        if (!b->band || B->modal) continue;
         for (f = 0; f < nf; f++) { /* Re(a w) in real arithmetic */
             v0[f] -= ar[f] * b->re[0] - ai[f] * b->im[0];
             v1[f] -= ar[f] * b->re[1] - ai[f] * b->im[1];
@@ -212,5 +274,5 @@ void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const doub
     }
     for (f = 0; f < nf; f++)
         bernstein(&P[f], v0[f], v1[f], d0[f], d1[f], tail[f], dtail[f],
-                  margin * (fabs(v0[f]) + fabs(v1[f]) + fabs(d0[f]) + fabs(d1[f]) + m->share_max[f] * B->sizes) + DBL_MIN);
+                  margin * (fabs(v0[f]) + fabs(v1[f]) + fabs(d0[f]) + fabs(d1[f]) + size[f]) + DBL_MIN);
 }

@@ -109,7 +109,7 @@ typedef struct {
     /* (each zero past the last functional: the loops take the functionals two at a time) */
     double cond;     /* the product of Vr's and Winv's balanced norms */
     double Winv[SX_MAX_N * SX_MAX_N]; /* Winv, row-major */
-    double wnorm[SX_MAX_N]; /* sum_i |Winv_ji| S_i over mode k's rows j: |zeta_k| <= wnorm_k max_i |x_i| / S_i */
+    double WinvT[SX_MAX_N * SX_MAX_N]; /* Winv by columns (sx_matvec_cols: every coordinate at once) */
     /* |alpha_k| <= pb0 + pb1 |ag| + pb2 |slope|, its particular part's size (|g0|/|lam|, |g1|/|lam|,
      * |g1|/|lam|^2), and each functional's largest share of any mode */
     double pb0[SX_MAX_N], pb1[SX_MAX_N], pb2[SX_MAX_N], share_max[SX_MAX_F];
@@ -420,19 +420,36 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of);
  * 0 and 1: real and imaginary parts), which the ends' data give up */
 typedef struct {
     double err, derr, size;
+    double psize; /* a band's particular part's size */
     int band;
     double re[4], im[4];
 } sx_mode_bound;
 
 /* the modes' bounds over a step from its start xa0 */
 typedef struct {
-    double h, sizes; /* the step's length; the sum of the modes' sizes */
+    double h;        /* the step's length */
+    double wh[SX_MAX_N]; /* each mode's |lam h| */
     int bands;       /* how many modes are bands */
+    int modal;       /* a band turns so fast over the step (SX_BAND_MODAL_WH) that the ends' data come from
+                        the modes' own coordinates (sx_ends_modal) */
     sx_mode_bound mode[SX_MAX_N];
 } sx_mode_bounds;
 
 /* the constants of a step of length h (the region's modes valid) */
 void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs);
+/* The data of the interpolant (each functional's values and rates at a step's ends) are the motion's
+ * own less each band's free part. Where a band turns past this many radians over the step (a
+ * diaphragm of grams per metre: 1e7 rad/s), its rate at the ends is so large that taking it out of
+ * the physical rate leaves the rounding of its coordinate times |lam h| in the slow part's; there
+ * the data are summed from the modes' own coordinates instead, which the band's rate never enters. */
+#define SX_BAND_MODAL_WH 32.0
+/* the size behind mode k's part of the ends' data, for the rounding's margin: from the modes' own
+ * coordinates (B->modal), a band's particular part and another's motion and rate; else its
+ * coordinate's (times its rate's |lam h| for a band, whose free part the data give up) */
+double sx_mode_size(const sx_mode_bounds *B, int k);
+/* the ends' data (values and rates in u) from the modes' own coordinates, the bands' free parts out */
+void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[], double *v0,
+                   double *v1, double *d0, double *d1);
 /* the modes' bounds over a step (its constants hs) from its start xa0 (the region's modes valid) */
 void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
 /* the same from the modes' bounds over the step */

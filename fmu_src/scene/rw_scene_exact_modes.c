@@ -91,18 +91,6 @@ static void modal_forcing(const sx_region *r, const sx_modes *m, int col, double
         g[k] = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
 }
 
-/* each mode's rows of Winv summed in the balanced norm (a bound on its coordinate from the state's) */
-static void row_norms(const sx_region *r, sx_modes *m)
-{
-    const int n = r->n;
-    int k, j, i;
-    for (k = 0; k < m->count; k++) {
-        m->wnorm[k] = 0.0;
-        for (j = m->first[k]; j <= m->first[k] + m->pair[k]; j++)
-            for (i = 0; i < n; i++) m->wnorm[k] += fabs(m->Winv[j * n + i]) * r->scale[i];
-    }
-}
-
 /* the particular parts' sizes per unit of the record and its slope, from the modal forcing */
 static void particular_sizes(sx_modes *m)
 {
@@ -186,7 +174,7 @@ void sx_modes_build(sx_region *r)
     if (!(m->cond < SX_MODES_COND)) return;
     memcpy(m->Winv, Winv, sizeof(double) * (size_t)(n * n));
     for (i = 0; i < n; i++) i = add_mode(r, m, i, wr, wi, blocked, Vr, Winv);
-    row_norms(r, m);
+    sx_transpose(n, n, Winv, m->WinvT);
     modal_forcing(r, m, r->n + 2, m->g0);
     modal_forcing(r, m, r->n, m->g1);
     particular_sizes(m);

@@ -30,18 +30,21 @@ static void store2(double *p, sx_v2 v) { memcpy(p, &v, sizeof v); }
 
 /* the modes' tails and bands over the functionals two at a time (the share arrays hold zeros past the
  * last functional, and the polynomials' arrays room for them) */
-static void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, quick_polys *Q, double *d0, double *d1)
+static void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, quick_polys *Q, double *d0, double *d1,
+                       double *size)
 {
     int f, k;
     for (k = 0; k < m->count; k++) {
         const sx_mode_bound *mb = &B->mode[k];
-        const sx_v2 err = {mb->err, mb->err}, derr = {mb->derr, mb->derr};
+        const double mode_size = sx_mode_size(B, k);
+        const sx_v2 err = {mb->err, mb->err}, derr = {mb->derr, mb->derr}, msize = {mode_size, mode_size};
         for (f = 0; f < nf; f += 2) {
             const sx_v2 a = load2(m->share_abs[k] + f);
             store2(Q->tail + f, load2(Q->tail + f) + a * err);
             store2(Q->dtail + f, load2(Q->dtail + f) + a * derr);
+            store2(size + f, load2(size + f) + a * msize);
         }
-        if (!mb->band) continue;
+        if (!mb->band || B->modal) continue;
         for (f = 0; f < nf; f += 2) { /* Re(a w) in real arithmetic */
             const sx_v2 ar = load2(m->share_re[k] + f), ai = load2(m->share_im[k] + f);
             store2(Q->b[0] + f, load2(Q->b[0] + f) - (ar * mb->re[0] - ai * mb->im[0]));
@@ -57,20 +60,21 @@ static void polys_of(const sx_region *r, const sx_mode_bounds *B, const double x
     const sx_modes *m = &r->modes;
     const int nf = r->nf;
     const double h = B->h, margin = SX_MODES_MARGIN(m->cond);
-    double d0[SX_MAX_F + 1], d1[SX_MAX_F + 1];
+    double d0[SX_MAX_F + 1], d1[SX_MAX_F + 1], size[SX_MAX_F + 1];
     int f;
     for (f = 0; f < nf; f++) {
         Q->b[0][f] = sx_functional(r, f, xa0);
         Q->end[f] = Q->b[3][f] = sx_functional(r, f, xa1);
         d0[f] = h * sx_functional_rate(r, f, xa0);
         d1[f] = h * sx_functional_rate(r, f, xa1);
-        Q->tail[f] = Q->dtail[f] = 0.0;
+        Q->tail[f] = Q->dtail[f] = size[f] = 0.0;
     }
-    Q->b[0][nf] = Q->b[3][nf] = d0[nf] = d1[nf] = Q->tail[nf] = Q->dtail[nf] = 0.0; /* (an odd count's pair) */
-    modes_over(m, B, nf, Q, d0, d1);
+    if (B->modal) sx_ends_modal(r, B, xa0, xa1, Q->b[0], Q->b[3], d0, d1);
+    Q->b[0][nf] = Q->b[3][nf] = d0[nf] = d1[nf] = Q->tail[nf] = Q->dtail[nf] = size[nf] = 0.0; /* (an odd count's pair) */
+    modes_over(m, B, nf, Q, d0, d1, size);
     for (f = 0; f < nf; f++) {
         const double round =
-            margin * (fabs(Q->b[0][f]) + fabs(Q->b[3][f]) + fabs(d0[f]) + fabs(d1[f]) + m->share_max[f] * B->sizes) + DBL_MIN;
+            margin * (fabs(Q->b[0][f]) + fabs(Q->b[3][f]) + fabs(d0[f]) + fabs(d1[f]) + size[f]) + DBL_MIN;
         Q->b[1][f] = Q->b[0][f] + d0[f] * (1.0 / 3.0);
         Q->b[2][f] = Q->b[3][f] - d1[f] * (1.0 / 3.0);
         Q->tail[f] += round, Q->dtail[f] += round;

@@ -122,6 +122,59 @@ static void test_random_regions_bound_their_motion(void)
           t.misses, t.rate_misses);
 }
 
+/* Diaphragms of grams per metre down to the building file's least (1e-6 kg/m) behind ties of 1e7
+ * to 1e9 N/m per m: modes of up to 3e7 rad/s, which turn by hundreds of radians over a step of a
+ * millisecond. There the ends' data come from the modes' own coordinates (SX_BAND_MODAL_WH), and
+ * the polynomials with their tails still bound the exact motion at every point tried. */
+static void test_light_diaphragms_bound_their_motion(void)
+{
+    tally t = {0, 0, 0, INFINITY};
+    int n, regions = 0, modal = 0;
+    for (n = 0; n < 16; n++) {
+        rw_scene_spec spec;
+        rw_scene sc;
+        sx_region r;
+        sx_key key;
+        double x[RW_SCENE_NX];
+        int i, s;
+        random_spec(&spec);
+        spec.building.diaphragm_law = BD_ELASTIC;
+        for (i = 0; i < spec.n_storeys; i++) {
+            spec.building.md[i] = pow(10.0, uniform(-6.0, -2.0));
+            spec.building.cd[i] = uniform(0.0, 0.1) * 2.0 * sqrt(spec.building.diaph[i].k * spec.building.md[i]);
+            if (spec.has_wall[i]) spec.wall[i].Kd = pow(10.0, uniform(7.0, 9.0));
+        }
+        memset(x, 0, sizeof x);
+        rw_scene_init(&sc, &spec, 0.0, x);
+        random_state(&sc, x);
+        sx_region_key(&sc, uniform(-5.0, 5.0), x, &key);
+        memset(&r, 0, sizeof r);
+        CHECK(sx_region_build(&sc, &key, &r, NULL) == 0, "light scene %d: the region was not built", n);
+        if (!r.modes.valid) {
+            sx_region_free(&r);
+            continue;
+        }
+        regions++;
+        for (s = 0; s < 8; s++) {
+            const double h = s < 3 ? sx_hmax(&r) * uniform(0.05, 1.0) : uniform(1e-4, 1e-3);
+            double xa0[SX_MAX_NA];
+            sx_hermite_step hs;
+            sx_mode_bounds B;
+            start_state(&r, &sc, xa0);
+            sx_hermite_step_of(&r, h, &hs);
+            sx_mode_bounds_of(&r, &hs, xa0, &B);
+            modal += B.modal;
+            check_step(&r, xa0, h, NULL, &t);
+        }
+        sx_region_free(&r);
+    }
+    printf("light diaphragms: %d regions, %d steps from the modes' own coordinates, %ld points: %ld values and "
+           "%ld rates outside their tails\n", regions, modal, t.tried, t.misses, t.rate_misses);
+    CHECK(regions >= 8 && modal >= 20, "too few light regions tried (%d, %d modal steps)", regions, modal);
+    CHECK(t.misses == 0 && t.rate_misses == 0, "the light diaphragms' polynomials missed at %ld values and %ld rates",
+          t.misses, t.rate_misses);
+}
+
 /* The paper's first wall (dohertyHinge) under a stiff tie to a light diaphragm, in the region the
  * 0.3-g Gaussian pulse takes it to where its mechanism has no stiffness: a double eigenvalue 0 with
  * one eigenvector, which the modes keep as a block (rw_scene_exact_blocks.c). The region's hinge
@@ -173,11 +226,11 @@ static void test_a_free_mechanism_is_a_block_that_bounds(void)
     sx_region_free(&r);
 }
 
-
 int main(void)
 {
     srand(20261207);
     test_random_regions_bound_their_motion();
+    test_light_diaphragms_bound_their_motion();
     test_a_free_mechanism_is_a_block_that_bounds();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
