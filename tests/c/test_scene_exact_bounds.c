@@ -76,6 +76,26 @@ static void start_state(const sx_region *r, const rw_scene *sc, double xa0[])
     sx_gather(r, x, uniform(-5.0, 5.0), uniform(-200.0, 200.0), xa0);
 }
 
+/* the region of a random state of the scene spec (its walls on random sides if sides): 1 with valid
+ * modes, else 0 and nothing kept */
+static int region_of(const rw_scene_spec *spec, int sides, rw_scene *sc, sx_region *r)
+{
+    sx_key key;
+    double x[RW_SCENE_NX];
+    int i;
+    memset(x, 0, sizeof x);
+    rw_scene_init(sc, spec, 0.0, x);
+    for (i = 0; sides && i < spec->n_storeys; i++)
+        sc->regime[i].side_b = coin() ? 1 : -1, sc->regime[i].side_m = coin() ? 1 : -1;
+    random_state(sc, x);
+    sx_region_key(sc, uniform(-5.0, 5.0), x, &key);
+    memset(r, 0, sizeof *r);
+    CHECK(sx_region_build(sc, &key, r, NULL) == 0, "the region was not built");
+    if (r->modes.valid) return 1;
+    sx_region_free(r);
+    return 0;
+}
+
 static void test_random_regions_bound_their_motion(void)
 {
     tally t = {0, 0, 0, INFINITY};
@@ -84,22 +104,10 @@ static void test_random_regions_bound_their_motion(void)
         rw_scene_spec spec;
         rw_scene sc;
         sx_region r;
-        sx_key key;
-        double x[RW_SCENE_NX];
-        int i, s, k;
+        int s, k;
         random_spec(&spec);
         spec.building.diaphragm_law = coin() ? BD_BILINEAR : BD_ELASTIC; /* Bouc-Wen regions have no modes */
-        memset(x, 0, sizeof x);
-        rw_scene_init(&sc, &spec, 0.0, x);
-        for (i = 0; i < spec.n_storeys; i++) sc.regime[i].side_b = coin() ? 1 : -1, sc.regime[i].side_m = coin() ? 1 : -1;
-        random_state(&sc, x);
-        sx_region_key(&sc, uniform(-5.0, 5.0), x, &key);
-        memset(&r, 0, sizeof r);
-        CHECK(sx_region_build(&sc, &key, &r, NULL) == 0, "scene %d: the region was not built", n);
-        if (!r.modes.valid) {
-            sx_region_free(&r);
-            continue;
-        }
+        if (!region_of(&spec, 1, &sc, &r)) continue;
         regions++;
         for (k = 0; k < r.modes.count; k++) bands += pow(r.modes.abs_lam[k] * 5e-3, 4) >= 384.0;
         for (s = 0; s < 12; s++) {
@@ -134,8 +142,6 @@ static void test_light_diaphragms_bound_their_motion(void)
         rw_scene_spec spec;
         rw_scene sc;
         sx_region r;
-        sx_key key;
-        double x[RW_SCENE_NX];
         int i, s;
         random_spec(&spec);
         spec.building.diaphragm_law = BD_ELASTIC;
@@ -144,16 +150,7 @@ static void test_light_diaphragms_bound_their_motion(void)
             spec.building.cd[i] = uniform(0.0, 0.1) * 2.0 * sqrt(spec.building.diaph[i].k * spec.building.md[i]);
             if (spec.has_wall[i]) spec.wall[i].Kd = pow(10.0, uniform(7.0, 9.0));
         }
-        memset(x, 0, sizeof x);
-        rw_scene_init(&sc, &spec, 0.0, x);
-        random_state(&sc, x);
-        sx_region_key(&sc, uniform(-5.0, 5.0), x, &key);
-        memset(&r, 0, sizeof r);
-        CHECK(sx_region_build(&sc, &key, &r, NULL) == 0, "light scene %d: the region was not built", n);
-        if (!r.modes.valid) {
-            sx_region_free(&r);
-            continue;
-        }
+        if (!region_of(&spec, 0, &sc, &r)) continue;
         regions++;
         for (s = 0; s < 8; s++) {
             const double h = s < 3 ? sx_hmax(&r) * uniform(0.05, 1.0) : uniform(1e-4, 1e-3);
