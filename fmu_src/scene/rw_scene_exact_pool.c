@@ -4,11 +4,14 @@
  * anew: 7 % of the assessor's house's time, where one wall's engine allocates nothing. Blocks freed
  * here are kept per thread (at most SX_POOL_BLOCKS of them and SX_POOL_BYTES in all) and handed to
  * the next request of a size they hold; a thread's blocks are freed when it ends. Nothing a run
- * computes depends on which block it gets: the engine sets what it reads. */
+ * computes depends on which block it gets: the engine sets what it reads (the sanitizer build fills
+ * a block handed out again with NaNs, and tests/c/test_scene_exact.c runs a scene again after
+ * another for the same bits). */
 #include "rw_scene_exact_internal.h"
 
 #include <pthread.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define SX_POOL_BLOCKS 64
 #define SX_POOL_BYTES (64u << 20)
@@ -61,6 +64,9 @@ void *sx_pool_alloc(size_t size)
         b = P->block[best];
         P->bytes -= size_of(b);
         P->block[best] = P->block[--P->n];
+#ifdef RW_POOL_POISON /* (the sanitizer build: a read of what the last run left is then NaN in the results) */
+        memset(b + HEADER, 0xff, size_of(b));
+#endif
         return b + HEADER;
     }
     if (!(b = (unsigned char *)malloc(HEADER + size))) return NULL;
