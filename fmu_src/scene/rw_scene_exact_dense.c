@@ -89,16 +89,6 @@ void sx_balance(int n, const double *A, double *S, double *norm)
     }
 }
 
-/* two doubles in a vector register (sx_v2), loaded from any address */
-static inline sx_v2 load2(const double *p)
-{
-    sx_v2 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-static inline void store2(double *p, sx_v2 v) { memcpy(p, &v, sizeof v); }
-
 /* rows 0..7 (or 0..3) of y = A x from A by columns (ld apart): their sums held in registers
  * while the columns pass, each one's terms added in the columns' order */
 static void rows_8(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
@@ -108,9 +98,9 @@ static void rows_8(int ld, int cols, const double *restrict At, const double *re
     for (j = 0; j < cols; j++) {
         const double *a = At + (size_t)j * (size_t)ld;
         const sx_v2 xj = {x[j], x[j]};
-        s0 += load2(a) * xj, s1 += load2(a + 2) * xj, s2 += load2(a + 4) * xj, s3 += load2(a + 6) * xj;
+        s0 += sx_load2(a) * xj, s1 += sx_load2(a + 2) * xj, s2 += sx_load2(a + 4) * xj, s3 += sx_load2(a + 6) * xj;
     }
-    store2(y, s0), store2(y + 2, s1), store2(y + 4, s2), store2(y + 6, s3);
+    sx_store2(y, s0), sx_store2(y + 2, s1), sx_store2(y + 4, s2), sx_store2(y + 6, s3);
 }
 
 static void rows_4(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
@@ -120,9 +110,9 @@ static void rows_4(int ld, int cols, const double *restrict At, const double *re
     for (j = 0; j < cols; j++) {
         const double *a = At + (size_t)j * (size_t)ld;
         const sx_v2 xj = {x[j], x[j]};
-        s0 += load2(a) * xj, s1 += load2(a + 2) * xj;
+        s0 += sx_load2(a) * xj, s1 += sx_load2(a + 2) * xj;
     }
-    store2(y, s0), store2(y + 2, s1);
+    sx_store2(y, s0), sx_store2(y + 2, s1);
 }
 
 static void rows_2(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)
@@ -131,9 +121,9 @@ static void rows_2(int ld, int cols, const double *restrict At, const double *re
     int j;
     for (j = 0; j < cols; j++) {
         const sx_v2 xj = {x[j], x[j]};
-        s0 += load2(At + (size_t)j * (size_t)ld) * xj;
+        s0 += sx_load2(At + (size_t)j * (size_t)ld) * xj;
     }
-    store2(y, s0);
+    sx_store2(y, s0);
 }
 
 static void rows_1(int ld, int cols, const double *restrict At, const double *restrict x, double *restrict y)

@@ -15,11 +15,11 @@
  * pair kept as a block (rw_scene_exact_blocks.c) moves as y' = B y + b0 + b1 tau, whose fourth
  * derivative B^2 y'' is within ||B||^2 e^(||B|| h) |y''(0)|.
  *
- * Only the modes that turn by a radian or more over the step need their coordinates (a row or two
- * of Winv each); a slower one's departure is |mu|^4 / 384 of its size or less, and the size is
- * bounded from the state's norm. The modes only bound: the polynomial is the motion's own ends,
- * and the bounds carry a margin for the decomposition's rounding (a few ulps times its condition,
- * SX_MODES_MARGIN). */
+ * Every mode's size is its own coordinate at the step's start, all of them from one product
+ * Winv x. The modes only bound: the polynomial is the motion's own ends, and the bounds carry a
+ * margin for the decomposition's rounding (a few ulps times its condition, SX_MODES_MARGIN, times
+ * each functional's own data and shares of the modes' sizes). The cubics themselves are assembled
+ * from these bounds in rw_scene_exact_quick.c, for the first pass and the full test alike. */
 #include "rw_scene_exact_internal.h"
 
 #include <float.h>
@@ -51,7 +51,7 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs)
 /* every mode's coordinates y = Winv x from the state, in one product (vectorised by columns) */
 static void coordinates(const sx_region *r, const double x[], double y[])
 {
-    sx_matvec_cols(r->n, r->n, r->modes.WinvT, x, y);
+    sx_matvec_cols(r->n, r->n, r->modes.Winv_cols, x, y);
 }
 
 /* mode k's coordinate from them (a pair's zeta = y_j - i y_j+1) */
@@ -210,69 +210,4 @@ void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0
         for (j = 0; j < 4; j++)
             for (f = 0; f < r->nf; f++) out[j][f] += m->share_re[k][f] * creal(w[j]) - m->share_im[k][f] * cimag(w[j]);
     }
-}
-
-/* a cubic from its values and rates (in u) at the ends, as Bernstein coefficients, with its tails and
- * the rounding's margin on both */
-static void bernstein(sx_lopoly *p, double v0, double v1, double d0, double d1, double tail, double dtail, double round)
-{
-    p->coef[0] = v0;
-    p->coef[1] = v0 + d0 * (1.0 / 3.0);
-    p->coef[2] = v1 - d1 * (1.0 / 3.0);
-    p->coef[3] = v1;
-    p->tail = tail + round;
-    p->dtail = dtail + round;
-    p->deg = 3;
-    p->bern = 1;
-}
-
-int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[],
-                     sx_lopoly P[SX_MAX_F])
-{
-    sx_mode_bounds B;
-    if (!r->modes.valid) return 0;
-    sx_mode_bounds_of(r, hs, xa0, &B);
-    sx_hermite_polys_of(r, &B, xa0, xa1, P);
-    return 1;
-}
-
-void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[],
-                         sx_lopoly P[SX_MAX_F])
-{
-    const double h = B->h;
-    const sx_modes *m = &r->modes;
-    const int nf = r->nf;
-    double v0[SX_MAX_F], v1[SX_MAX_F], d0[SX_MAX_F], d1[SX_MAX_F], tail[SX_MAX_F], dtail[SX_MAX_F], size[SX_MAX_F];
-    const double margin = SX_MODES_MARGIN(m->cond);
-    int f, k;
-    if (B->modal) sx_ends_modal(r, B, xa0, xa1, v0, v1, d0, d1);
-    for (f = 0; f < nf; f++) {
-        if (!B->modal) {
-            v0[f] = sx_functional(r, f, xa0);
-            v1[f] = sx_functional(r, f, xa1);
-            d0[f] = h * sx_functional_rate(r, f, xa0);
-            d1[f] = h * sx_functional_rate(r, f, xa1);
-        }
-        tail[f] = dtail[f] = size[f] = 0.0;
-    }
-    for (k = 0; k < m->count; k++) { /* the modes in turn, the functionals contiguous: vectorised */
-        const double *ar = m->share_re[k], *ai = m->share_im[k], *abs_a = m->share_abs[k];
-        const sx_mode_bound *b = &B->mode[k];
-        const double mode_size = sx_mode_size(B, k);
-        for (f = 0; f < nf; f++) {
-            tail[f] += abs_a[f] * b->err;
-            dtail[f] += abs_a[f] * b->derr;
-            size[f] += abs_a[f] * mode_size;
-        }
-        if (!b->band || B->modal) continue;
-        for (f = 0; f < nf; f++) { /* Re(a w) in real arithmetic */
-            v0[f] -= ar[f] * b->re[0] - ai[f] * b->im[0];
-            v1[f] -= ar[f] * b->re[1] - ai[f] * b->im[1];
-            d0[f] -= ar[f] * b->re[2] - ai[f] * b->im[2];
-            d1[f] -= ar[f] * b->re[3] - ai[f] * b->im[3];
-        }
-    }
-    for (f = 0; f < nf; f++)
-        bernstein(&P[f], v0[f], v1[f], d0[f], d1[f], tail[f], dtail[f],
-                  margin * (fabs(v0[f]) + fabs(v1[f]) + fabs(d0[f]) + fabs(d1[f]) + size[f]) + DBL_MIN);
 }

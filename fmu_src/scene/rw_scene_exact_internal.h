@@ -62,6 +62,16 @@ static inline double sx_dot(const double *a, const double *b, int n)
     return i < n ? sum + a[i] * b[i] : sum;
 }
 
+/* two doubles in a vector register, loaded from and stored to any address */
+static inline sx_v2 sx_load2(const double *p)
+{
+    sx_v2 v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+static inline void sx_store2(double *p, sx_v2 v) { memcpy(p, &v, sizeof v); }
+
 /* a row's nonzero entries when it holds two at most (c1 = 0 where it holds one, c0 = 0 too where
  * none) */
 typedef struct {
@@ -108,8 +118,7 @@ typedef struct {
     double share_re[SX_MAX_N][SX_MAX_F + 1], share_im[SX_MAX_N][SX_MAX_F + 1], share_abs[SX_MAX_N][SX_MAX_F + 1];
     /* (each zero past the last functional: the loops take the functionals two at a time) */
     double cond;     /* the product of Vr's and Winv's balanced norms */
-    double Winv[SX_MAX_N * SX_MAX_N]; /* Winv, row-major */
-    double WinvT[SX_MAX_N * SX_MAX_N]; /* Winv by columns (sx_matvec_cols: every coordinate at once) */
+    double Winv_cols[SX_MAX_N * SX_MAX_N]; /* Winv by columns (sx_matvec_cols: every coordinate at once) */
     /* |alpha_k| <= pb0 + pb1 |ag| + pb2 |slope|, its particular part's size (|g0|/|lam|, |g1|/|lam|,
      * |g1|/|lam|^2), and each functional's largest share of any mode */
     double pb0[SX_MAX_N], pb1[SX_MAX_N], pb2[SX_MAX_N], share_max[SX_MAX_F];
@@ -403,6 +412,8 @@ double sx_poly_max_abs(const double *p, int deg, double err, double b, double be
 double sx_poly_integral(const double *p, int deg, double b);
 /* the square of p (degree 2 deg) */
 void sx_poly_square(const double *p, int deg, double *sq);
+/* the integral over [0, u] of p(v)^2 (p of degree deg) */
+double sx_poly_square_integral(const double *p, int deg, double u);
 void sx_poly_product(const double *p, const double *q, int deg, double *pq);
 
 /* ---- modes (rw_scene_exact_modes.c) ---- */
@@ -413,7 +424,8 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of);
  * their size is a few ulps times the condition */
 #define SX_MODES_MARGIN(cond) (256.0 * DBL_EPSILON * (cond) + 1e-12)
 
-/* ---- the quiet test's polynomials from a step's exact ends (rw_scene_exact_hermite.c) ---- */
+/* ---- the quiet test's polynomials from a step's exact ends: the modes' bounds
+ * (rw_scene_exact_hermite.c), the cubics from them (sx_hermite_polys: rw_scene_exact_quick.c) ---- */
 /* one mode's share of the departure from a functional's interpolant over a step per unit of the
  * functional's share |a| of the mode, for the value and for its rate in u; the size behind it (for
  * the rounding's margin); and a band's free part at the step's ends (value at 0 and 1, rate in u at
@@ -452,9 +464,16 @@ void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0
                    double *v1, double *d0, double *d1);
 /* the modes' bounds over a step (its constants hs) from its start xa0 (the region's modes valid) */
 void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
-/* the same from the modes' bounds over the step */
-void sx_hermite_polys_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[],
-                         sx_lopoly P[SX_MAX_F]);
+/* a cubic's range over a step as the centre and half-width of its Bernstein coefficients' hull,
+ * widened by its tail (a NaN leaves both NaN: nothing is clear of it) */
+static inline void sx_cubic_box(double b0, double b1, double b2, double b3, double tail, double *centre,
+                                double *radius)
+{
+    const double lo01 = b0 < b1 ? b0 : b1, lo23 = b2 < b3 ? b2 : b3, hi01 = b0 > b1 ? b0 : b1, hi23 = b2 > b3 ? b2 : b3;
+    const double lo = lo01 < lo23 ? lo01 : lo23, hi = hi01 > hi23 ? hi01 : hi23;
+    *centre = 0.5 * (lo + hi);
+    *radius = lo == lo && hi == hi ? 0.5 * (hi - lo) + tail : NAN;
+}
 /* each functional's cubic Hermite interpolant over a step (its constants hs) from its values and
  * rates at the exact ends xa0 and xa1 = exp(Aa h) xa0 (Bernstein coefficients), with the modes'
  * bound on the motion's departure from it as the tail; 0 if the region has no usable modes */
@@ -484,6 +503,7 @@ int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], d
 typedef struct {
     unsigned wall[RW_SCENE_MAX_STOREYS], diaphragm[RW_SCENE_MAX_STOREYS], peaks[RW_SCENE_MAX_STOREYS];
 } sx_suspects;
+#define SX_COLLAPSE_BIT (1u << 31) /* a wall's suspect collapse indicator (its lines: bits 0..SX_MAX_LINES-1) */
 /* the quiet test's suspects on given polynomials (no doubt kept): 0 if none */
 int sx_watch_suspects(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], sx_suspects *sus);
 /* the centre and half-width of a polynomial's range over its step */

@@ -83,10 +83,8 @@ static void modal_forcing(const sx_region *r, const sx_modes *m, int col, double
     const int n = r->n;
     double y[SX_MAX_N], v[SX_MAX_N];
     int k;
-    int i;
     for (k = 0; k < n; k++) v[k] = r->Aa[k * r->na + col];
-    for (k = 0; k < n; k++)
-        for (y[k] = 0.0, i = 0; i < n; i++) y[k] += m->Winv[k * n + i] * v[i];
+    sx_matvec_cols(n, n, m->Winv_cols, v, y);
     for (k = 0; k < m->count; k++)
         g[k] = m->pair[k] ? y[m->first[k]] - I * y[m->first[k] + 1] : y[m->first[k]];
 }
@@ -172,9 +170,8 @@ void sx_modes_build(sx_region *r)
     while (!(m->cond < SX_MODES_COND) && sx_block_worst_pair(r, wr, wi, blocked, Vr, Winv))
         if (inverse_basis(r, wi, blocked, Vr, Winv, &m->cond)) return;
     if (!(m->cond < SX_MODES_COND)) return;
-    memcpy(m->Winv, Winv, sizeof(double) * (size_t)(n * n));
+    sx_transpose(n, n, Winv, m->Winv_cols);
     for (i = 0; i < n; i++) i = add_mode(r, m, i, wr, wi, blocked, Vr, Winv);
-    sx_transpose(n, n, Winv, m->WinvT);
     modal_forcing(r, m, r->n + 2, m->g0);
     modal_forcing(r, m, r->n, m->g1);
     particular_sizes(m);

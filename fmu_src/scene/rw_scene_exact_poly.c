@@ -185,7 +185,12 @@ void sx_poly_product(const double *p, const double *q, int deg, double *pq)
 
 void sx_poly_square(const double *p, int deg, double *sq)
 {
-    sx_poly_product(p, p, deg, sq);
+    int j, k;
+    for (k = 0; k <= 2 * deg; k++) sq[k] = 0.0;
+    for (j = 0; j <= deg; j++) { /* each cross product once, doubled: half the products' multiplications */
+        sq[2 * j] += p[j] * p[j];
+        for (k = j + 1; k <= deg; k++) sq[j + k] += 2.0 * p[j] * p[k];
+    }
 }
 
 double sx_lopoly_at(const sx_lopoly *p, double u)
@@ -193,4 +198,11 @@ double sx_lopoly_at(const sx_lopoly *p, double u)
     const double v = 1.0 - u;
     if (!p->bern) return sx_poly_eval(p->coef, p->deg, u);
     return v * v * v * p->coef[0] + 3.0 * u * v * (v * p->coef[1] + u * p->coef[2]) + u * u * u * p->coef[3];
+}
+
+double sx_poly_square_integral(const double *p, int deg, double u)
+{
+    double sq[SX_MAX_DEG * 2 + 2];
+    sx_poly_square(p, deg, sq);
+    return sx_poly_integral(sq, 2 * deg, u);
 }

@@ -1,37 +1,37 @@
 /* The quiet test of a step from its exact ends, and its first pass: the common case between events,
- * in few operations. Every
- * functional's polynomial comes in one pass over the modes (the cubic Hermite interpolant of the
- * step's exact ends, rw_scene_exact_hermite.c, as arrays over the functionals, which the compiler
- * vectorises); each standing wall's lines are tested at once on the box of its rotations' ranges, and
- * each peak quantity is held against its peak by the bound its polynomial's coefficients give. A
- * step that passes is quiet, and its end's peaks are taken from the values the pass computed. One
- * that does not (a line or a peak near, a collapse indicator in play, a bilinear diaphragm's
- * indicators) is given the full test (sx_watch_quiet_polys), which clears everything this pass does. */
+ * in few operations. Every functional's polynomial comes in one pass over the modes (the cubic
+ * Hermite interpolant of the step's exact ends, bounded by rw_scene_exact_hermite.c, as arrays over
+ * the functionals: cubics_of, which the full test's polynomials come from too); each standing
+ * wall's lines are tested at once on the box of its rotations' ranges, and each peak quantity is
+ * held against its peak by the bound its polynomial's coefficients give. A step that passes is
+ * quiet, and its end's peaks are taken from the values the pass computed. One that does not (a line
+ * or a peak near, a collapse indicator in play, a bilinear diaphragm's indicators) is given the full
+ * test (sx_watch_quiet_polys), which clears everything this pass does. */
 #include "rw_scene_exact_internal.h"
 
 #include <float.h>
 #include <math.h>
-#include <string.h>
 
-/* every functional's polynomial over the step: its Bernstein coefficients b[0..3] (a band's free
- * motion taken out), its tails, and its exact value at the end */
+/* The cubics' assembly runs at every quiet test: inlined into both its callers, the first pass
+ * (sx_quiet_ends, the hot path) and the full test's polynomials (sx_hermite_polys); out of line it
+ * cost the first pass 1.5 % of a run's instructions. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE
+#endif
+
+/* every functional's cubic over a step as arrays over the functionals (two to a vector register, the
+ * arrays' last entry a zero pair for an odd count): Bernstein coefficients b[0..3] (a band's free
+ * motion taken out), tails, and the exact value at the step's end */
 typedef struct {
     double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], end[SX_MAX_F];
-} quick_polys;
-
-static sx_v2 load2(const double *p)
-{
-    sx_v2 v;
-    memcpy(&v, p, sizeof v);
-    return v;
-}
-
-static void store2(double *p, sx_v2 v) { memcpy(p, &v, sizeof v); }
+} cubics;
 
 /* the modes' tails and bands over the functionals two at a time (the share arrays hold zeros past the
- * last functional, and the polynomials' arrays room for them) */
-static void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, quick_polys *Q, double *d0, double *d1,
-                       double *size)
+ * last functional, and the cubics' arrays room for them) */
+static ALWAYS_INLINE void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q, double *d0,
+                                     double *d1, double *size)
 {
     int f, k;
     for (k = 0; k < m->count; k++) {
@@ -39,23 +39,25 @@ static void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, quick
         const double mode_size = sx_mode_size(B, k);
         const sx_v2 err = {mb->err, mb->err}, derr = {mb->derr, mb->derr}, msize = {mode_size, mode_size};
         for (f = 0; f < nf; f += 2) {
-            const sx_v2 a = load2(m->share_abs[k] + f);
-            store2(Q->tail + f, load2(Q->tail + f) + a * err);
-            store2(Q->dtail + f, load2(Q->dtail + f) + a * derr);
-            store2(size + f, load2(size + f) + a * msize);
+            const sx_v2 a = sx_load2(m->share_abs[k] + f);
+            sx_store2(Q->tail + f, sx_load2(Q->tail + f) + a * err);
+            sx_store2(Q->dtail + f, sx_load2(Q->dtail + f) + a * derr);
+            sx_store2(size + f, sx_load2(size + f) + a * msize);
         }
         if (!mb->band || B->modal) continue;
         for (f = 0; f < nf; f += 2) { /* Re(a w) in real arithmetic */
-            const sx_v2 ar = load2(m->share_re[k] + f), ai = load2(m->share_im[k] + f);
-            store2(Q->b[0] + f, load2(Q->b[0] + f) - (ar * mb->re[0] - ai * mb->im[0]));
-            store2(Q->b[3] + f, load2(Q->b[3] + f) - (ar * mb->re[1] - ai * mb->im[1]));
-            store2(d0 + f, load2(d0 + f) - (ar * mb->re[2] - ai * mb->im[2]));
-            store2(d1 + f, load2(d1 + f) - (ar * mb->re[3] - ai * mb->im[3]));
+            const sx_v2 ar = sx_load2(m->share_re[k] + f), ai = sx_load2(m->share_im[k] + f);
+            sx_store2(Q->b[0] + f, sx_load2(Q->b[0] + f) - (ar * mb->re[0] - ai * mb->im[0]));
+            sx_store2(Q->b[3] + f, sx_load2(Q->b[3] + f) - (ar * mb->re[1] - ai * mb->im[1]));
+            sx_store2(d0 + f, sx_load2(d0 + f) - (ar * mb->re[2] - ai * mb->im[2]));
+            sx_store2(d1 + f, sx_load2(d1 + f) - (ar * mb->re[3] - ai * mb->im[3]));
         }
     }
 }
 
-static void polys_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[], quick_polys *Q)
+/* every functional's cubic over the step from the modes' bounds over it and its exact ends */
+static ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[],
+                                    const double xa1[], cubics *Q)
 {
     const sx_modes *m = &r->modes;
     const int nf = r->nf;
@@ -72,7 +74,7 @@ static void polys_of(const sx_region *r, const sx_mode_bounds *B, const double x
     if (B->modal) sx_ends_modal(r, B, xa0, xa1, Q->b[0], Q->b[3], d0, d1);
     Q->b[0][nf] = Q->b[3][nf] = d0[nf] = d1[nf] = Q->tail[nf] = Q->dtail[nf] = size[nf] = 0.0; /* (an odd count's pair) */
     modes_over(m, B, nf, Q, d0, d1, size);
-    for (f = 0; f < nf; f++) {
+    for (f = 0; f < nf; f++) { /* the Bernstein coefficients, and the rounding's margin on both tails */
         const double round =
             margin * (fabs(Q->b[0][f]) + fabs(Q->b[3][f]) + fabs(d0[f]) + fabs(d1[f]) + size[f]) + DBL_MIN;
         Q->b[1][f] = Q->b[0][f] + d0[f] * (1.0 / 3.0);
@@ -81,8 +83,8 @@ static void polys_of(const sx_region *r, const sx_mode_bounds *B, const double x
     }
 }
 
-/* the same as the full test's polynomials (sx_lopoly) */
-static void lopolys_of(const sx_region *r, const quick_polys *Q, sx_lopoly P[SX_MAX_F])
+/* the same as the watch's polynomials (sx_lopoly) */
+static void lopolys_of(const sx_region *r, const cubics *Q, sx_lopoly P[SX_MAX_F])
 {
     int f, k;
     for (f = 0; f < r->nf; f++) {
@@ -91,8 +93,20 @@ static void lopolys_of(const sx_region *r, const quick_polys *Q, sx_lopoly P[SX_
     }
 }
 
+int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[],
+                     sx_lopoly P[SX_MAX_F])
+{
+    sx_mode_bounds B;
+    cubics Q;
+    if (!r->modes.valid) return 0;
+    sx_mode_bounds_of(r, hs, xa0, &B);
+    cubics_of(r, &B, xa0, xa1, &Q);
+    lopolys_of(r, &Q, P);
+    return 1;
+}
+
 /* the largest |b_k[f] + b_k[g]| (g < 0: |b_k[f]|) over the coefficients */
-static double coef_max(const quick_polys *Q, int f, int g)
+static double coef_max(const cubics *Q, int f, int g)
 {
     double m = 0.0;
     int k;
@@ -101,17 +115,6 @@ static double coef_max(const quick_polys *Q, int f, int g)
         m = v > m || v != v ? v : m;
     }
     return m;
-}
-
-/* functional f's range over the step as the centre and half-width of its coefficients' hull, widened
- * by its tail (a NaN leaves them NaN: nothing is clear of it) */
-static void box_of(const quick_polys *Q, int f, double *centre, double *radius)
-{
-    const double b0 = Q->b[0][f], b1 = Q->b[1][f], b2 = Q->b[2][f], b3 = Q->b[3][f];
-    const double lo01 = b0 < b1 ? b0 : b1, lo23 = b2 < b3 ? b2 : b3, hi01 = b0 > b1 ? b0 : b1, hi23 = b2 > b3 ? b2 : b3;
-    const double lo = lo01 < lo23 ? lo01 : lo23, hi = hi01 > hi23 ? hi01 : hi23;
-    *centre = 0.5 * (lo + hi);
-    *radius = lo == lo && hi == hi ? 0.5 * (hi - lo) + Q->tail[f] : NAN;
 }
 
 /* a collapse indicator G(q) = q.A q - c.q whose region's A has a positive definite symmetric part
@@ -124,13 +127,13 @@ static int collapse_far(const sx_collapse *c, double c1, double r1, double c2, d
 
 /* storey i's wall: no line within reach of its box, no collapse indicator in play, s1 and s2 under
  * their peaks */
-static int wall_clear(const sx_run *R, const sx_region *r, const quick_polys *Q, int i)
+static int wall_clear(const sx_run *R, const sx_region *r, const cubics *Q, int i)
 {
     const int f1 = r->f_of[i][SX_Q1], f2 = r->f_of[i][SX_Q2];
     const double h2 = 0.5 * R->sc.S.wall[i].h;
     double c1, r1, c2, r2;
-    box_of(Q, f1, &c1, &r1);
-    box_of(Q, f2, &c2, &r2);
+    sx_cubic_box(Q->b[0][f1], Q->b[1][f1], Q->b[2][f1], Q->b[3][f1], Q->tail[f1], &c1, &r1);
+    sx_cubic_box(Q->b[0][f2], Q->b[1][f2], Q->b[2][f2], Q->b[3][f2], Q->tail[f2], &c2, &r2);
     if (r->col[i].active && !collapse_far(&r->col[i], c1, r1, c2, r2)) return 0;
     if (sx_watch_box_lines(R, i, c1, r1, c2, r2, fabs(Q->b[0][f1]), fabs(Q->b[0][f2]))) return 0;
     return h2 * (coef_max(Q, f1, -1) + Q->tail[f1]) <= R->res->peak_s1[i] &&
@@ -139,13 +142,13 @@ static int wall_clear(const sx_run *R, const sx_region *r, const quick_polys *Q,
 
 /* can peak quantity f not rise over peak inside the step? (a quantity of the record alone is linear
  * over it: its ends hold its peak) */
-static int under(const sx_region *r, const quick_polys *Q, int f, double peak)
+static int under(const sx_region *r, const cubics *Q, int f, double peak)
 {
     return r->modes.share_max[f] == 0.0 || coef_max(Q, f, -1) + Q->tail[f] <= peak;
 }
 
 /* the end's peaks, as sx_watch_peaks_at takes them, from the values the pass computed */
-static void end_peaks(sx_run *R, const sx_region *r, const quick_polys *Q)
+static void end_peaks(sx_run *R, const sx_region *r, const cubics *Q)
 {
     rw_scene_result *res = R->res;
     int i;
@@ -162,7 +165,7 @@ static void end_peaks(sx_run *R, const sx_region *r, const quick_polys *Q)
 }
 
 /* the first pass over every storey: 1 quiet, 0 the full test must say */
-static int first_pass(sx_run *R, const sx_region *r, const quick_polys *Q)
+static int first_pass(sx_run *R, const sx_region *r, const cubics *Q)
 {
     const rw_scene_result *res = R->res;
     int i;
@@ -179,11 +182,11 @@ static int first_pass(sx_run *R, const sx_region *r, const quick_polys *Q)
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[])
 {
     sx_mode_bounds B;
-    quick_polys Q;
+    cubics Q;
     sx_lopoly P[SX_MAX_F];
     int why;
     sx_mode_bounds_of(r, hs, xa0, &B);
-    polys_of(r, &B, xa0, xa1, &Q);
+    cubics_of(r, &B, xa0, xa1, &Q);
     if (first_pass(R, r, &Q)) {
         end_peaks(R, r, &Q);
         return 0;

@@ -153,9 +153,6 @@ static void storeys(const sx_run *R, const sx_region *r, const sx_series *s, sto
     storey_polys(r, s, P, only);
 }
 
-/* is indicator bit k of a suspect set (all: no set) among the suspects? */
-static int suspect(const sx_suspects *sus, const unsigned *set, unsigned bit) { return !sus || (*set & bit); }
-
 double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx_suspects *sus)
 {
     storey_series P[RW_SCENE_MAX_STOREYS];
@@ -167,17 +164,17 @@ double sx_watch_step(sx_run *R, const sx_region *r, const sx_series *s, const sx
         if (in_play[i]) storeys(R, r, s, P, i);
     }
     for (i = 0; i < R->sc.S.n_storeys; i++) {
+        const unsigned diaphragm = sus ? sus->diaphragm[i] : ~0u, wall = sus ? sus->wall[i] : ~0u; /* (bits) */
         if (!in_play[i]) continue;
         for (k = 0; k < R->ndlines[i]; k++) {
             const sx_dline *L = &R->dlines[i][k];
-            if (suspect(sus, sus ? &sus->diaphragm[i] : NULL, 1u << k))
+            if (diaphragm & (1u << k))
                 first = fmin(first, diaphragm_root(L, L->kind == SX_DEFORM ? P[i].deform : P[i].rate, s->deg));
         }
         if (!P[i].wall) continue;
         for (k = 0; k < R->nlines[i]; k++)
-            if (suspect(sus, sus ? &sus->wall[i] : NULL, 1u << k))
-                first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
-        if (r->col[i].active && suspect(sus, sus ? &sus->wall[i] : NULL, 1u << 31))
+            if (wall & (1u << k)) first = fmin(first, line_root(&R->lines[i][k], P[i].q1, P[i].q2, s->deg));
+        if (r->col[i].active && (wall & SX_COLLAPSE_BIT))
             first = fmin(first, collapse_root(&r->col[i], P[i].q1, P[i].q2, s->deg));
     }
     for (i = 0; i < R->sc.S.n_storeys; i++)
@@ -193,19 +190,6 @@ double sx_series_peak(const sx_run *R, const sx_region *r, const sx_series *s, i
     return quantity(R, storey, &P[storey], kind, s->deg, p, &err) ? sx_poly_max_abs(p, s->deg, err, 1.0, best) : best;
 }
 
-/* the integral over [0, u] of p(v)^2 (p of degree deg) */
-static double square_integral(const double *p, int deg, double u)
-{
-    double sq[SX_PMAX];
-    int j, k;
-    for (k = 0; k <= 2 * deg; k++) sq[k] = 0.0;
-    for (j = 0; j <= deg; j++) { /* the square's coefficients, each product once and doubled */
-        sq[2 * j] += p[j] * p[j];
-        for (k = j + 1; k <= deg; k++) sq[j + k] += 2.0 * p[j] * p[k];
-    }
-    return sx_poly_integral(sq, 2 * deg, u);
-}
-
 void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_ground, double *w_damping)
 {
     double mom[SX_PMAX], prod[SX_PMAX], d[SX_PMAX];
@@ -219,6 +203,6 @@ void sx_series_work(const sx_region *r, const sx_series *s, double u, double *w_
     *w_damping = 0.0;
     for (t = 0; t < r->nterms; t++) {
         for (k = 0; k <= deg; k++) d[k] = sx_row_dot(r->dvec[t], r->d_nz[t], r->n, &r->d_pair[t], s->X + (size_t)k * (size_t)na);
-        *w_damping += r->dcoef[t] * s->L * square_integral(d, deg, u);
+        *w_damping += r->dcoef[t] * s->L * sx_poly_square_integral(d, deg, u);
     }
 }

@@ -299,8 +299,9 @@ static void from_half(const sx_region *r, const sx_step *half, sx_step *st)
     doubled(r, st);
 }
 
-/* a slot's memory, the first time it is built: E, Wd, Et (na x na), Wdp (na columns of padded(na)), T (n x na), wg (2 x na),
- * rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na), zwork (3 nz x na); 0, or 1 if none could be had */
+/* a slot's memory, the first time it is built: E, Wd, Et (na x na), Wdp (na columns of padded(na)),
+ * T (n x na), wg (2 x na), rows (nf (SX_LO+1) x na), zrows (nz SX_Z_NODES x na), zwork (3 nz x na);
+ * 0, or 1 if none could be had */
 static int table_memory(const sx_region *r, sx_step *st)
 {
     const size_t nn = (size_t)(r->na * r->na);

@@ -197,11 +197,9 @@ static double bound_of(const sx_lopoly *P)
  * coefficients' bound and the tail first: most steps stay under the peak by that) */
 static double may_rise_to(const sx_lopoly *P, double peak)
 {
-    span s;
     double bound;
     if (P->tail + coef_bound(P) <= peak) return 0.0;
-    s = poly_span(P);
-    bound = max2(fabs(s.lo), fabs(s.hi));
+    bound = bound_of(P);
     return bound > peak && !monotone(P) ? bound : 0.0;
 }
 
@@ -292,26 +290,18 @@ static int moves_away(const sx_line *L, const sx_lopoly *w, double tol)
  * hull, or its coefficients' sum, widened by its tail */
 void sx_watch_box(const sx_lopoly *p, double *centre, double *radius)
 {
+    span s;
     double lo, hi;
-    if (p->bern) { /* (a NaN leaves a bound NaN: nothing is then clear of it) */
-        const double *b = p->coef, lo01 = b[0] < b[1] ? b[0] : b[1], lo23 = b[2] < b[3] ? b[2] : b[3];
-        const double hi01 = b[0] > b[1] ? b[0] : b[1], hi23 = b[2] > b[3] ? b[2] : b[3];
-        lo = lo01 < lo23 ? lo01 : lo23;
-        hi = hi01 > hi23 ? hi01 : hi23;
-        if (lo != lo || hi != hi) lo = hi = NAN;
-    } else {
-        const span s = poly_span(p);
-        lo = s.lo + p->tail, hi = s.hi - p->tail;
+    if (p->bern) {
+        sx_cubic_box(p->coef[0], p->coef[1], p->coef[2], p->coef[3], p->tail, centre, radius);
+        return;
     }
+    s = poly_span(p);
+    lo = s.lo + p->tail, hi = s.hi - p->tail;
     *centre = 0.5 * (lo + hi);
     *radius = 0.5 * (hi - lo) + p->tail;
 }
 
-/* A line is cleared first on the box of q1's and q2's ranges: z = c + s|w| + t w moves by at most
- * (s + |t|) |dw|, so a line whose value at the box's centre is farther from zero than that over
- * the box's half-width is clear (a few operations, and it clears most lines: a wall at rest or
- * rocking away from them); then on the box's exact range; only a line neither clears is tested on
- * its own combination of the two polynomials, whose range is tighter where q1 and q2 move together */
 /* the lines of a wall the box of q1's and q2's ranges (centres c, half-widths r) does not clear at
  * once: z = c + s|w| + t w moves by at most (s + |t|) |dw|, so a line whose value at the box's centre
  * is farther from zero than that over the box's half-width is clear (a few operations, and it clears
@@ -350,8 +340,10 @@ static int line_clear(const sx_line *L, const storey_polys *P, double c1, double
 }
 
 /* storey i's wall over the step: the lines it may cross (bits by line) and, as bit SX_COLLAPSE_BIT,
- * the collapse indicator; every one (all) or up to the first (else) */
-#define SX_COLLAPSE_BIT (1u << 31)
+ * the collapse indicator; every one (all) or up to the first (else). A line is cleared first on the
+ * box of q1's and q2's ranges (sx_watch_box_lines: a few operations, and it clears most lines),
+ * then on the box's exact range; only a line neither clears is tested on its own combination of
+ * the two polynomials, whose range is tighter where q1 and q2 move together. */
 static unsigned wall_suspects(const sx_run *R, const sx_region *r, int i, const storey_polys *P, int all)
 {
     double c1, r1, c2, r2;
@@ -496,7 +488,7 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
     }
     low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
-    if (!r->modes.valid) sx_step_propagate(r, st, xa0, xa1);
+    sx_step_propagate(r, st, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
 }
