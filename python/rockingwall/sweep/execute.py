@@ -3,8 +3,6 @@ results file as it arrives."""
 import asyncio
 import contextlib
 import dataclasses
-import os
-import pathlib
 import shutil
 import signal
 import threading
@@ -15,7 +13,7 @@ from tqdm import tqdm
 
 from .. import scratch
 from ..errors import RockingWallError
-from . import engine_task, fmi2sim_task, provenance, rows
+from . import engine_task, fmi2sim_task, orphans, provenance, rows
 from .store import ResultsFile
 
 # Workers get the fmi2sim run function and the rows it makes by value; they import the installed
@@ -172,21 +170,6 @@ class ClusterError(RockingWallError):
     """The Dask cluster could not be started or reached: nothing ran."""
 
 
-def stop_orphans(tmp_root):
-    """SIGKILL the fmi2sim processes of this sweep still running after its workers are gone (a
-    worker killed in the middle of a run leaves its fmi2sim behind): every process whose command
-    line names one of this sweep's run folders (fmi2sim_task.command puts its summary file there).
-    Found in /proc rather than from a pid the worker wrote down: a worker killed just after it
-    started a run had not always written it (the orphan then ran on)."""
-    mark = os.path.join(str(tmp_root), fmi2sim_task.RUN_PREFIX).encode()
-    for cmdline in pathlib.Path("/proc").glob("[0-9]*/cmdline"):
-        try:
-            if mark in cmdline.read_bytes():
-                os.kill(int(cmdline.parent.name), signal.SIGKILL)
-        except (OSError, ValueError):
-            continue  # finished meanwhile
-
-
 def _rm_tree(path):
     # a run still being torn down may add a file while the tree is removed: try again once
     for _ in range(2):
@@ -238,5 +221,5 @@ def _run_all(store, todo, counts, fmi2sim, fmu, rtol, scheduler, workers, batch,
             return startup, time.perf_counter() - t0
     finally:
         bar.close()
-        stop_orphans(tmp_root)
+        orphans.stop_orphans(tmp_root)
         _rm_tree(tmp_root)

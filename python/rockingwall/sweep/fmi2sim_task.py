@@ -37,7 +37,7 @@ RUN_PREFIX = "run_"  # a run's folder in the sweep's: fmi2sim's command line nam
 def _run_dir(tmp_root):
     """A private folder for one run, inside the sweep's folder when this machine has it (a
     LocalCluster), so whatever a killed run leaves is removed with the sweep's folder, and an
-    fmi2sim its killed worker left running is found by its command line (execute.stop_orphans)."""
+    fmi2sim its killed worker left running is found by its command line (orphans.stop_orphans)."""
     root = tmp_root if tmp_root and os.path.isdir(tmp_root) else None
     return tempfile.mkdtemp(prefix=RUN_PREFIX, dir=root) if root else scratch.make("rw_sweep_run_")
 
