@@ -190,7 +190,7 @@ static void check_sympy_section(const char *json, const char *section)
         const char *km[] = {"base_mass", NULL}, *kc[] = {"base_per_qdd", NULL};
         const double x0[RW_NX] = {0, 0, 0, 0};
         double mass, c[2];
-        rw_regime m = {0, 0, 1, -1, 0, 0, 0};
+        rw_regime m = {.side_b = 1, .side_m = -1};
         rw_input in = {1.0, 0.0};
         double dx[RW_NX] = {0, 0, 0, 0};
         CHECK(section_numbers(json, section, km, &mass, 1) == 1 && section_numbers(json, section, kc, c, 2) == 2,
@@ -208,7 +208,7 @@ static void check_sympy_section(const char *json, const char *section)
     for (i = 1; i <= 4; i++) {
         char cond[2] = {(char)('0' + i), 0};
         const char *ka[] = {"conditions", cond, "A", NULL}, *kb[] = {"conditions", cond, "B", NULL};
-        rw_regime m = {0, 0, sides[i][0], sides[i][1], 0, 0, 0};
+        rw_regime m = {.side_b = sides[i][0], .side_m = sides[i][1]};
         double q[RW_NX] = {0.01 * sides[i][0], 0.01 * sides[i][0] + 0.01 * sides[i][1], 0, 0}, Q[2], a, b;
         rw_hinge_Q(&p, &d, &m, q, Q);
         CHECK(section_numbers(json, section, ka, &a, 1) == 1 && section_numbers(json, section, kb, &b, 1) == 1,
@@ -260,7 +260,7 @@ static void test_trilinear(void)
     for (wall = 0; wall < 2; wall++) {
         rw_params p = wall ? eccentric_params() : paper_params();
         rw_derived d;
-        rw_regime m = {0, 0, 1, 1, 0, 0, 0};
+        rw_regime m = {.side_b = 1, .side_m = 1};
         p.support = RW_SIMPLY_SUPPORTED;
         rw_derive(&p, &d);
         for (k = 0; k < 2; k++) {

@@ -67,7 +67,7 @@ static void test_capacities_per_side(void)
          * load at eTop; mid-height pivot at s*em: the upper body, the loads */
         const double cap_b = 2 * W1 * eb + Wo * eb + Wd * (eb - s * p.eTop);
         const double cap_m = W1 * em + Wo * em + Wd * (em - s * p.eTop);
-        const rw_regime m = {0, 0, s, s, 0, 0, 0};
+        const rw_regime m = {.side_b = s, .side_m = s};
         double q[RW_NX] = {0.01 * s, 0.02 * s, 0, 0}, Q[2];
         check_close("cap_b(s)", rw_cap_b_of(&d, s), cap_b, 1e-14);
         check_close("cap_m(s)", rw_cap_m_of(&d, s), cap_m, 1e-14);
@@ -92,7 +92,7 @@ static void test_doherty_hinge_reduces_to_trilinear(void)
             rw_params p = wall ? eccentric_params() : paper_params();
             rw_derived d;
             const int s = k == 0 ? 1 : -1;
-            rw_regime m = {0, 0, s, -s, 0, 0, 0};
+            rw_regime m = {.side_b = s, .side_m = -s};
             p.hingeLaw = RW_DOHERTY_HINGE;
             p.Kd = 0.0; /* the spring does no work along q2 = -q1 */
             rw_derive(&p, &d);
