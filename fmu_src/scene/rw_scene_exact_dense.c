@@ -134,6 +134,19 @@ static void rows_1(int ld, int cols, const double *restrict At, const double *re
     *y = s0;
 }
 
+/* rows i..i+1 of three products A x0, A x1, A x2 at once (each column of A loaded once) */
+static void rows_2x3(int ld, int cols, const double *restrict At, const double *const x[3], double *const y[3], int i)
+{
+    sx_v2 s0 = {0.0, 0.0}, s1 = s0, s2 = s0;
+    int j;
+    for (j = 0; j < cols; j++) {
+        const sx_v2 a = sx_load2(At + (size_t)j * (size_t)ld + i);
+        const sx_v2 x0 = {x[0][j], x[0][j]}, x1 = {x[1][j], x[1][j]}, x2 = {x[2][j], x[2][j]};
+        s0 += a * x0, s1 += a * x1, s2 += a * x2;
+    }
+    sx_store2(y[0] + i, s0), sx_store2(y[1] + i, s1), sx_store2(y[2] + i, s2);
+}
+
 #if defined(__GNUC__) && defined(__x86_64__) && defined(__linux__)
 /* The same blocks four doubles to a register where the processor has AVX2 (found once, as the library
  * loads). The same multiplications and additions in the same order, none fused (AVX2 without FMA):
@@ -178,6 +191,24 @@ __attribute__((target("avx2"))) static void rows_4_avx2(int ld, int cols, const 
     }
     memcpy(y, &s0, sizeof s0);
 }
+
+/* rows i..i+7 of three products at once */
+__attribute__((target("avx2"))) static void rows_8x3_avx2(int ld, int cols, const double *restrict At,
+                                                           const double *const x[3], double *const y[3], int i)
+{
+    sx_v4 s0 = {0.0, 0.0, 0.0, 0.0}, s1 = s0, t0 = s0, t1 = s0, u0 = s0, u1 = s0;
+    int j;
+    for (j = 0; j < cols; j++) {
+        const double *a = At + (size_t)j * (size_t)ld + i;
+        const sx_v4 a0 = load4(a), a1 = load4(a + 4);
+        const sx_v4 x0 = {x[0][j], x[0][j], x[0][j], x[0][j]}, x1 = {x[1][j], x[1][j], x[1][j], x[1][j]},
+                    x2 = {x[2][j], x[2][j], x[2][j], x[2][j]};
+        s0 += a0 * x0, s1 += a1 * x0, t0 += a0 * x1, t1 += a1 * x1, u0 += a0 * x2, u1 += a1 * x2;
+    }
+    memcpy(y[0] + i, &s0, sizeof s0), memcpy(y[0] + i + 4, &s1, sizeof s1);
+    memcpy(y[1] + i, &t0, sizeof t0), memcpy(y[1] + i + 4, &t1, sizeof t1);
+    memcpy(y[2] + i, &u0, sizeof u0), memcpy(y[2] + i + 4, &u1, sizeof u1);
+}
 #endif
 
 void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const double *restrict x,
@@ -194,6 +225,18 @@ void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const
     if (i + 4 <= rows) rows_4(ld, cols, At + i, x, y + i), i += 4;
     if (i + 2 <= rows) rows_2(ld, cols, At + i, x, y + i), i += 2;
     if (i < rows) rows_1(ld, cols, At + i, x, y + i);
+}
+
+void sx_matvec3_lead(int rows, int cols, int ld, const double *At, const double *const x[3], double *const y[3])
+{
+    int i = 0, k;
+#ifdef SX_AVX2
+    if (has_avx2)
+        for (; i + 8 <= rows; i += 8) rows_8x3_avx2(ld, cols, At, x, y, i);
+#endif
+    for (; i + 2 <= rows; i += 2) rows_2x3(ld, cols, At, x, y, i);
+    if (i < rows)
+        for (k = 0; k < 3; k++) rows_1(ld, cols, At + i, x[k], y[k] + i);
 }
 
 void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y)

@@ -158,7 +158,10 @@ void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const doub
     for (k = 0; k < m->count; k++) {
         B->wh[k] = hs->wh[k];
         B->modal |= B->mode[k].band && hs->wh[k] > SX_BAND_MODAL_WH;
+        B->err[k] = B->mode[k].err, B->derr[k] = B->mode[k].derr, B->size[k] = B->mode[k].size;
     }
+    if (B->modal)
+        for (k = 0; k < m->count; k++) B->size[k] = sx_mode_size(B, k);
 }
 
 double sx_mode_size(const sx_mode_bounds *B, int k)

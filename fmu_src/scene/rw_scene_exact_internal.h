@@ -348,6 +348,8 @@ void sx_balance(int n, const double *A, double *S, double *norm); /* diagonal S 
 void sx_matvec_cols(int rows, int cols, const double *restrict At, const double *restrict x, double *restrict y);
 /* the same with A's columns ld apart (its first `rows` rows) */
 void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const double *restrict x, double *restrict y);
+/* y[k] = the leading rows of A x[k] for three vectors at once, each entry's sum as sx_matvec_lead's */
+void sx_matvec3_lead(int rows, int cols, int ld, const double *At, const double *const x[3], double *const y[3]);
 void sx_transpose(int rows, int cols, const double *A, double *At); /* At (cols x rows) = A^T */
 double sx_sym2_min_eig(const double A[2][2]);
 void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
@@ -445,6 +447,9 @@ typedef struct {
     int modal;       /* a band turns so fast over the step (SX_BAND_MODAL_WH) that the ends' data come from
                         the modes' own coordinates (sx_ends_modal) */
     sx_mode_bound mode[SX_MAX_N];
+    /* the modes' tails (of the value, of the rate) and sizes (sx_mode_size) in one array each: the
+     * quiet test sums them over the functionals' shares in one product */
+    double err[SX_MAX_N], derr[SX_MAX_N], size[SX_MAX_N];
 } sx_mode_bounds;
 
 /* the constants of a step of length h (the region's modes valid) */

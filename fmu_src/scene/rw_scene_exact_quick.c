@@ -28,23 +28,25 @@ typedef struct {
     double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], end[SX_MAX_F];
 } cubics;
 
-/* the modes' tails and bands over the functionals two at a time (the share arrays hold zeros past the
- * last functional, and the cubics' arrays room for them) */
-static ALWAYS_INLINE void modes_over(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q, double *d0,
-                                     double *d1, double *size)
+/* the modes' tails over the functionals: tail_f = sum_k |a_fk| err_k (and the rate's, and the sizes'),
+ * the shares by columns (the modes) times the modes' bounds in one pass; each functional's sum runs
+ * over the modes in order from zero, as a loop over them would */
+static void tails_over(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q, double *size)
+{
+    const double *const by_mode[3] = {B->err, B->derr, B->size};
+    double *const sums[3] = {Q->tail, Q->dtail, size};
+    sx_matvec3_lead(nf, m->count, SX_MAX_F + 1, m->share_abs[0], by_mode, sums);
+}
+
+/* the bands' free motion taken out of the ends' data, over the functionals two at a time (the share
+ * arrays hold zeros past the last functional, and the cubics' arrays room for them) */
+static ALWAYS_INLINE void bands_out(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q, double *d0,
+                                    double *d1)
 {
     int f, k;
     for (k = 0; k < m->count; k++) {
         const sx_mode_bound *mb = &B->mode[k];
-        const double mode_size = sx_mode_size(B, k);
-        const sx_v2 err = {mb->err, mb->err}, derr = {mb->derr, mb->derr}, msize = {mode_size, mode_size};
-        for (f = 0; f < nf; f += 2) {
-            const sx_v2 a = sx_load2(m->share_abs[k] + f);
-            sx_store2(Q->tail + f, sx_load2(Q->tail + f) + a * err);
-            sx_store2(Q->dtail + f, sx_load2(Q->dtail + f) + a * derr);
-            sx_store2(size + f, sx_load2(size + f) + a * msize);
-        }
-        if (!mb->band || B->modal) continue;
+        if (!mb->band) continue;
         for (f = 0; f < nf; f += 2) { /* Re(a w) in real arithmetic */
             const sx_v2 ar = sx_load2(m->share_re[k] + f), ai = sx_load2(m->share_im[k] + f);
             sx_store2(Q->b[0] + f, sx_load2(Q->b[0] + f) - (ar * mb->re[0] - ai * mb->im[0]));
@@ -69,11 +71,11 @@ static ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds *B,
         Q->end[f] = Q->b[3][f] = sx_functional(r, f, xa1);
         d0[f] = h * sx_functional_rate(r, f, xa0);
         d1[f] = h * sx_functional_rate(r, f, xa1);
-        Q->tail[f] = Q->dtail[f] = size[f] = 0.0;
     }
     if (B->modal) sx_ends_modal(r, B, xa0, xa1, Q->b[0], Q->b[3], d0, d1);
     Q->b[0][nf] = Q->b[3][nf] = d0[nf] = d1[nf] = Q->tail[nf] = Q->dtail[nf] = size[nf] = 0.0; /* (an odd count's pair) */
-    modes_over(m, B, nf, Q, d0, d1, size);
+    tails_over(m, B, nf, Q, size);
+    if (B->bands && !B->modal) bands_out(m, B, nf, Q, d0, d1);
     for (f = 0; f < nf; f++) { /* the Bernstein coefficients, and the rounding's margin on both tails */
         const double round =
             margin * (fabs(Q->b[0][f]) + fabs(Q->b[3][f]) + fabs(d0[f]) + fabs(d1[f]) + size[f]) + DBL_MIN;

@@ -245,6 +245,23 @@ static void test_refusals(void)
     CHECK(rw_scene_exact_covers(&spec, msg, sizeof msg) == 0, "bilinear diaphragms refused: %s", msg);
 }
 
+/* the three products at once (sx_matvec3_lead: x, -x and 2x, the leading rows of A) against the
+ * row-wise sums y of A x: 1 if any entry's bits differ */
+static int three_at_once_differ(int rows, int cols, const double *At, const double *x, const double *y)
+{
+    double x1[SX_MAX_NA], x2[SX_MAX_NA], z[3][SX_MAX_NA];
+    const double *xs[3] = {x, x1, x2};
+    double *zs[3] = {z[0], z[1], z[2]};
+    int k, lead;
+    for (k = 0; k < cols; k++) x1[k] = -x[k], x2[k] = 2.0 * x[k]; /* (exact: each sum scales exactly) */
+    for (lead = 1; lead <= rows; lead += 4) {
+        sx_matvec3_lead(lead, cols, rows, At, xs, zs);
+        for (k = 0; k < lead; k++)
+            if (memcmp(&z[0][k], &y[k], sizeof(double)) || z[1][k] != -y[k] || z[2][k] != 2.0 * y[k]) return 1;
+    }
+    return 0;
+}
+
 /* the engine's product from a matrix stored by columns keeps each sum's order: the very bits of a
  * row's dot product taken in order, so that the layout changes no motion */
 static void test_products_agree_bitwise(void)
@@ -264,6 +281,7 @@ static void test_products_agree_bitwise(void)
             }
             sx_matvec_cols(rows, cols, At, x, y_cols);
             differ += memcmp(y_rows, y_cols, sizeof(double) * (size_t)rows) != 0;
+            differ += three_at_once_differ(rows, cols, At, x, y_rows);
         }
     CHECK(differ == 0, "%d of the products by columns differ from the row-wise ones", differ);
 }
