@@ -26,6 +26,7 @@
  * motion taken out), tails, and the exact value at the step's end */
 typedef struct {
     double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], end[SX_MAX_F];
+    double bmax[SX_MAX_F]; /* the largest |b_k| (NaN if any is) */
 } cubics;
 
 /* the modes' tails over the functionals: tail_f = sum_k |a_fk| err_k (and the rate's, and the sizes'),
@@ -57,6 +58,13 @@ static ALWAYS_INLINE void bands_out(const sx_modes *m, const sx_mode_bounds *B, 
     }
 }
 
+/* the larger of m and |v|, NaN if either is */
+static inline double abs_max(double m, double v)
+{
+    v = fabs(v);
+    return v > m || v != v ? v : m;
+}
+
 /* every functional's cubic over the step from the modes' bounds over it and its exact ends */
 static ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[],
                                     const double xa1[], cubics *Q)
@@ -82,6 +90,7 @@ static ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds *B,
         Q->b[1][f] = Q->b[0][f] + d0[f] * (1.0 / 3.0);
         Q->b[2][f] = Q->b[3][f] - d1[f] * (1.0 / 3.0);
         Q->tail[f] += round, Q->dtail[f] += round;
+        Q->bmax[f] = abs_max(abs_max(abs_max(fabs(Q->b[0][f]), Q->b[1][f]), Q->b[2][f]), Q->b[3][f]);
     }
 }
 
@@ -107,15 +116,12 @@ int sx_hermite_polys(const sx_region *r, const sx_hermite_step *hs, const double
     return 1;
 }
 
-/* the largest |b_k[f] + b_k[g]| (g < 0: |b_k[f]|) over the coefficients */
-static double coef_max(const cubics *Q, int f, int g)
+/* the largest |b_k[f] + b_k[g]| over the coefficients */
+static double sum_max(const cubics *Q, int f, int g)
 {
     double m = 0.0;
     int k;
-    for (k = 0; k < 4; k++) {
-        const double v = fabs(Q->b[k][f] + (g >= 0 ? Q->b[k][g] : 0.0));
-        m = v > m || v != v ? v : m;
-    }
+    for (k = 0; k < 4; k++) m = abs_max(m, Q->b[k][f] + Q->b[k][g]);
     return m;
 }
 
@@ -138,15 +144,15 @@ static int wall_clear(const sx_run *R, const sx_region *r, const cubics *Q, int 
     sx_cubic_box(Q->b[0][f2], Q->b[1][f2], Q->b[2][f2], Q->b[3][f2], Q->tail[f2], &c2, &r2);
     if (r->col[i].active && !collapse_far(&r->col[i], c1, r1, c2, r2)) return 0;
     if (sx_watch_box_lines(R, i, c1, r1, c2, r2, fabs(Q->b[0][f1]), fabs(Q->b[0][f2]))) return 0;
-    return h2 * (coef_max(Q, f1, -1) + Q->tail[f1]) <= R->res->peak_s1[i] &&
-           h2 * (coef_max(Q, f1, f2) + Q->tail[f1] + Q->tail[f2]) <= R->res->peak_s2[i];
+    return h2 * (Q->bmax[f1] + Q->tail[f1]) <= R->res->peak_s1[i] &&
+           h2 * (sum_max(Q, f1, f2) + Q->tail[f1] + Q->tail[f2]) <= R->res->peak_s2[i];
 }
 
 /* can peak quantity f not rise over peak inside the step? (a quantity of the record alone is linear
  * over it: its ends hold its peak) */
 static int under(const sx_region *r, const cubics *Q, int f, double peak)
 {
-    return r->modes.share_max[f] == 0.0 || coef_max(Q, f, -1) + Q->tail[f] <= peak;
+    return r->modes.share_max[f] == 0.0 || Q->bmax[f] + Q->tail[f] <= peak;
 }
 
 /* the end's peaks, as sx_watch_peaks_at takes them, from the values the pass computed */

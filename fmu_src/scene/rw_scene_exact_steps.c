@@ -165,11 +165,12 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
     return 0;
 }
 
-/* The dyadic piece `index` of `level` of the interval [ta, ta + L]: one slow step if the modes'
- * test clears it, else its two halves, down to the exact steps (docs/scenes.md) */
-static int dyadic(sx_run *R, double ta, double L, int level, double index, double ag_a, double slope)
+/* The dyadic piece `index` of `level` of the interval [ta, ta + L] (its `pieces` = 2^level): one slow
+ * step if the modes' test clears it, else its two halves, down to the exact steps (docs/scenes.md).
+ * (L / pieces is exact, as ldexp's would be, without a call into the library at every interval.) */
+static int dyadic(sx_run *R, double ta, double L, int level, double pieces, double index, double ag_a, double slope)
 {
-    const double h = ldexp(L, -level), t1 = index + 1.0 >= ldexp(1.0, level) ? ta + L : ta + (index + 1.0) * h;
+    const double h = L / pieces, t1 = index + 1.0 >= pieces ? ta + L : ta + (index + 1.0) * h;
     const sx_region *r = current(R);
     int why;
     if (R->t >= t1) return 0;
@@ -177,13 +178,13 @@ static int dyadic(sx_run *R, double ta, double L, int level, double index, doubl
     why = slow_step(R, t1, ta, ag_a, slope);
     if (why == 0) return 0;
     if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope, why > 0);
-    if (dyadic(R, ta, L, level + 1, 2.0 * index, ag_a, slope)) return 1;
-    return dyadic(R, ta, L, level + 1, 2.0 * index + 1.0, ag_a, slope);
+    if (dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index, ag_a, slope)) return 1;
+    return dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index + 1.0, ag_a, slope);
 }
 
 /* the interval [R->t, tb], the record linear over it */
 int sx_advance(sx_run *R, double tb)
 {
     const double ta = R->t, ag_a = sx_ground(R, ta), slope = (sx_ground(R, tb) - ag_a) / (tb - ta);
-    return dyadic(R, ta, tb - ta, 0, 0.0, ag_a, slope);
+    return dyadic(R, ta, tb - ta, 0, 1.0, 0.0, ag_a, slope);
 }
