@@ -40,6 +40,7 @@ double sx_ground(sx_run *R, double t)
     while (k > 0 && rec->t[k] > t) k--;
     while (k + 2 < rec->n && rec->t[k + 1] <= t) k++;
     R->hint = k;
+    if (t == rec->t[k]) return rec->ag[k]; /* (a sample: most calls, every interval's start and end) */
     return rec->ag[k] + (rec->ag[k + 1] - rec->ag[k]) * (t - rec->t[k]) / (rec->t[k + 1] - rec->t[k]);
 }
 

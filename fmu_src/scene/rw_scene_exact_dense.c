@@ -167,6 +167,35 @@ __attribute__((target("avx2"))) static sx_v4 load4(const double *p)
     return v;
 }
 
+/* rows 0..11 and 0..15: more rows at once are more sums in flight (each sum's adds wait on each
+ * other: a row's latency, not the processor's throughput, bounds a block of 8) */
+__attribute__((target("avx2"))) static void rows_16_avx2(int ld, int cols, const double *restrict At,
+                                                          const double *restrict x, double *restrict y)
+{
+    sx_v4 s0 = {0.0, 0.0, 0.0, 0.0}, s1 = s0, s2 = s0, s3 = s0;
+    int j;
+    for (j = 0; j < cols; j++) {
+        const double *a = At + (size_t)j * (size_t)ld;
+        const sx_v4 xj = {x[j], x[j], x[j], x[j]};
+        s0 += load4(a) * xj, s1 += load4(a + 4) * xj, s2 += load4(a + 8) * xj, s3 += load4(a + 12) * xj;
+    }
+    memcpy(y, &s0, sizeof s0), memcpy(y + 4, &s1, sizeof s1), memcpy(y + 8, &s2, sizeof s2);
+    memcpy(y + 12, &s3, sizeof s3);
+}
+
+__attribute__((target("avx2"))) static void rows_12_avx2(int ld, int cols, const double *restrict At,
+                                                          const double *restrict x, double *restrict y)
+{
+    sx_v4 s0 = {0.0, 0.0, 0.0, 0.0}, s1 = s0, s2 = s0;
+    int j;
+    for (j = 0; j < cols; j++) {
+        const double *a = At + (size_t)j * (size_t)ld;
+        const sx_v4 xj = {x[j], x[j], x[j], x[j]};
+        s0 += load4(a) * xj, s1 += load4(a + 4) * xj, s2 += load4(a + 8) * xj;
+    }
+    memcpy(y, &s0, sizeof s0), memcpy(y + 4, &s1, sizeof s1), memcpy(y + 8, &s2, sizeof s2);
+}
+
 __attribute__((target("avx2"))) static void rows_8_avx2(int ld, int cols, const double *restrict At,
                                                          const double *restrict x, double *restrict y)
 {
@@ -217,7 +246,9 @@ void sx_matvec_lead(int rows, int cols, int ld, const double *restrict At, const
     int i = 0;
 #ifdef SX_AVX2
     if (has_avx2) {
-        for (; i + 8 <= rows; i += 8) rows_8_avx2(ld, cols, At + i, x, y + i);
+        for (; i + 16 <= rows; i += 16) rows_16_avx2(ld, cols, At + i, x, y + i);
+        if (i + 12 <= rows) rows_12_avx2(ld, cols, At + i, x, y + i), i += 12;
+        if (i + 8 <= rows) rows_8_avx2(ld, cols, At + i, x, y + i), i += 8;
         if (i + 4 <= rows) rows_4_avx2(ld, cols, At + i, x, y + i), i += 4;
     }
 #endif
