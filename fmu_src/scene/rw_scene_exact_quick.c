@@ -58,11 +58,15 @@ static ALWAYS_INLINE void bands_out(const sx_modes *m, const sx_mode_bounds *B, 
     }
 }
 
-/* the larger of m and |v|, NaN if either is */
+/* the larger of m and |v|, without a branch (maxsd). A NaN may be dropped here: the coefficients come
+ * from the ends' data b0, b3, d0 and d1, and a NaN among those makes the functional's tails NaN (their
+ * rounding margin sums the data's sizes), so no bound that adds a tail clears the step. A test of
+ * v != v here was a branch at every coefficient that the processor mispredicted: 10 % of the first
+ * pass's time. */
 static inline double abs_max(double m, double v)
 {
     v = fabs(v);
-    return v > m || v != v ? v : m;
+    return v > m ? v : m;
 }
 
 /* every functional's cubic over the step from the modes' bounds over it and its exact ends */
