@@ -64,23 +64,24 @@ static double complex coordinate(const sx_modes *m, int k, const double y[])
 /* a slow mode (|mu| < 1) over the step: its free part's size |C| <= |zeta| + |alpha| (the particular
  * part's from the record's) */
 static void slow_mode(const sx_region *r, int k, const sx_hermite_step *hs, const double xa0[], const double y0[],
-                      double slope, sx_mode_bound *b)
+                      double slope, sx_mode_bounds *B)
 {
     const sx_modes *m = &r->modes;
     const double w4G = hs->w4[k] * hs->G[k], z = mag(coordinate(m, k, y0));
     const double c = z + m->pb0[k] + m->pb1[k] * fabs(xa0[r->n]) + m->pb2[k] * fabs(slope);
-    b->band = 0;
-    b->err = c * w4G * PEANO_VALUE;
-    b->derr = c * w4G * PEANO_RATE;
-    b->size = z * hs->G[k]; /* the rounding of zeta moves C by as much, the departure by that times G at most */
+    B->mode[k].band = 0;
+    B->err[k] = c * w4G * PEANO_VALUE;
+    B->derr[k] = c * w4G * PEANO_RATE;
+    B->size[k] = z * hs->G[k]; /* the rounding of zeta moves C by as much, the departure by that times G at most */
 }
 
 /* a mode that turns by a radian or more over the step: its coordinate, its free part C (zeta less
  * its particular part alpha = -(b0 + b1 / lam) / lam, b0 = g0 + g1 ag0, b1 = g1 slope) bounded
  * through the interpolant, or a band past |mu|^4 = 384 */
 static void fast_mode(const sx_region *r, int k, const sx_hermite_step *hs, const double xa0[], const double y0[],
-                      double slope, sx_mode_bound *b)
+                      double slope, sx_mode_bounds *B)
 {
+    sx_mode_bound *b = &B->mode[k];
     const sx_modes *m = &r->modes;
     const double wh = hs->wh[k], w4 = hs->w4[k], G = hs->G[k], h = hs->h;
     const double complex il = m->inv_lam[k], b1 = m->g1[k] * slope;
@@ -89,16 +90,16 @@ static void fast_mode(const sx_region *r, int k, const sx_hermite_step *hs, cons
     const double c = mag(C);
     b->band = w4 >= BAND_POWER;
     if (!b->band) {
-        b->err = c * w4 * G * PEANO_VALUE;
-        b->derr = c * w4 * G * PEANO_RATE;
-        b->size = mag(zeta) * G;
+        B->err[k] = c * w4 * G * PEANO_VALUE;
+        B->derr[k] = c * w4 * G * PEANO_RATE;
+        B->size[k] = mag(zeta) * G;
     } else {
         const double complex e = hs->emu[k], mu = m->lam[k] * h;
         const double complex w[4] = {C, C * e, mu * C, mu * C * e};
         int j;
-        b->err = c * G;
-        b->derr = c * G * wh;
-        b->size = (mag(zeta) + mag(alpha) + mag(b1 * il) * h + c) * (1.0 + wh) * G;
+        B->err[k] = c * G;
+        B->derr[k] = c * G * wh;
+        B->size[k] = (mag(zeta) + mag(alpha) + mag(b1 * il) * h + c) * (1.0 + wh) * G;
         b->psize = mag(alpha) + mag(b1 * il) * h; /* its particular part alone (sx_ends_modal) */
         for (j = 0; j < 4; j++) b->re[j] = creal(w[j]), b->im[j] = cimag(w[j]);
     }
@@ -113,27 +114,38 @@ static double complex apply_block(const double B[4], double complex z)
 
 /* a block over the step; reach: what it adds to the largest size the blocks' coordinates take */
 static void block_mode(const sx_region *r, int k, const double xa0[], const double y0[], double slope, double h,
-                       sx_mode_bound *b, double *reach)
+                       sx_mode_bounds *B, double *reach)
 {
     const sx_modes *m = &r->modes;
     const double complex b0 = m->g0[k] + m->g1[k] * xa0[r->n], b1 = m->g1[k] * slope;
     const double nb = m->abs_lam[k], g = exp(nb * h), h4 = h * h * h * h;
     const double complex z0 = coordinate(m, k, y0), d1 = apply_block(m->B[k], z0) + b0, d2 = apply_block(m->B[k], d1) + b1;
-    b->band = 0;
-    b->err = mag(d2) * nb * nb * g * h4 * PEANO_VALUE;
-    b->derr = mag(d2) * nb * nb * g * h4 * PEANO_RATE;
-    b->size = (mag(z0) + mag(d1) * h + mag(d2) * h * h) * g;
-    *reach += b->size;
+    B->mode[k].band = 0;
+    B->err[k] = mag(d2) * nb * nb * g * h4 * PEANO_VALUE;
+    B->derr[k] = mag(d2) * nb * nb * g * h4 * PEANO_RATE;
+    B->size[k] = (mag(z0) + mag(d1) * h + mag(d2) * h * h) * g;
+    *reach += B->size[k];
 }
 
 /* mode k driven by the blocks' rounding (a force of at most coupling x reach, the blocks' planes
  * being invariant to rounding only): the disturbance d (|d| <= F h G, |d'| <= F (1 + |lam| h) G)
  * departs from its own interpolant by at most |d| + |H[d]| */
-static void driven(const sx_modes *m, int k, double reach, double h, sx_mode_bound *b)
+static void driven(const sx_modes *m, int k, double reach, double h, sx_mode_bounds *B)
 {
     const double F = m->coupling[k] * reach, G = growth_over(m, k, h), spread = F * h * G * (1.0 + m->abs_lam[k] * h);
-    b->err += 3.0 * spread;
-    b->derr += 8.0 * spread;
+    B->err[k] += 3.0 * spread;
+    B->derr[k] += 8.0 * spread;
+}
+
+/* where the ends' data come from the modes' own coordinates (B->modal), the size behind mode k's part
+ * of them, for the rounding's margin: a band's particular part, another's motion and rate (its
+ * coordinate's size times 1 + |lam h|); elsewhere a mode's size stays its coordinate's (times its
+ * rate's |lam h| for a band, whose free part the data give up) */
+static void modal_sizes(const sx_modes *m, const sx_hermite_step *hs, sx_mode_bounds *B)
+{
+    int k;
+    for (k = 0; k < m->count; k++)
+        B->size[k] = B->mode[k].band ? B->mode[k].psize : B->size[k] * (1.0 + hs->wh[k]);
 }
 
 void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B)
@@ -146,28 +158,16 @@ void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const doub
     B->h = hs->h;
     B->bands = 0;
     for (k = 0; k < m->count; k++) {
-        sx_mode_bound *b = &B->mode[k];
-        if (m->block[k]) block_mode(r, k, xa0, y0, slope, hs->h, b, &reach);
-        else if (hs->wh[k] < 1.0) slow_mode(r, k, hs, xa0, y0, slope, b);
-        else fast_mode(r, k, hs, xa0, y0, slope, b);
-        B->bands += b->band;
+        if (m->block[k]) block_mode(r, k, xa0, y0, slope, hs->h, B, &reach);
+        else if (hs->wh[k] < 1.0) slow_mode(r, k, hs, xa0, y0, slope, B);
+        else fast_mode(r, k, hs, xa0, y0, slope, B);
+        B->bands += B->mode[k].band;
     }
     if (m->blocks)
-        for (k = 0; k < m->count; k++) driven(m, k, reach, hs->h, &B->mode[k]);
+        for (k = 0; k < m->count; k++) driven(m, k, reach, hs->h, B);
     B->modal = 0;
-    for (k = 0; k < m->count; k++) {
-        B->wh[k] = hs->wh[k];
-        B->modal |= B->mode[k].band && hs->wh[k] > SX_BAND_MODAL_WH;
-        B->err[k] = B->mode[k].err, B->derr[k] = B->mode[k].derr, B->size[k] = B->mode[k].size;
-    }
-    if (B->modal)
-        for (k = 0; k < m->count; k++) B->size[k] = sx_mode_size(B, k);
-}
-
-double sx_mode_size(const sx_mode_bounds *B, int k)
-{
-    const sx_mode_bound *b = &B->mode[k];
-    return !B->modal ? b->size : (b->band ? b->psize : b->size * (1.0 + B->wh[k]));
+    for (k = 0; k < m->count; k++) B->modal |= B->mode[k].band && hs->wh[k] > SX_BAND_MODAL_WH;
+    if (B->modal) modal_sizes(m, hs, B);
 }
 
 /* mode k's part of the ends' data in the modes' own coordinates: a band's particular part only

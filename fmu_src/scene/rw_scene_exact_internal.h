@@ -428,12 +428,10 @@ void sx_modes_adopt(sx_region *r, const sx_modes *of);
 
 /* ---- the quiet test's polynomials from a step's exact ends: the modes' bounds
  * (rw_scene_exact_hermite.c), the cubics from them (sx_hermite_polys: rw_scene_exact_quick.c) ---- */
-/* one mode's share of the departure from a functional's interpolant over a step per unit of the
- * functional's share |a| of the mode, for the value and for its rate in u; the size behind it (for
- * the rounding's margin); and a band's free part at the step's ends (value at 0 and 1, rate in u at
- * 0 and 1: real and imaginary parts), which the ends' data give up */
+/* a mode over a step besides its tails and size (sx_mode_bounds' arrays): whether it is a band, and a
+ * band's free part at the step's ends (value at 0 and 1, rate in u at 0 and 1: real and imaginary
+ * parts), which the ends' data give up */
 typedef struct {
-    double err, derr, size;
     double psize; /* a band's particular part's size */
     int band;
     double re[4], im[4];
@@ -442,13 +440,14 @@ typedef struct {
 /* the modes' bounds over a step from its start xa0 */
 typedef struct {
     double h;        /* the step's length */
-    double wh[SX_MAX_N]; /* each mode's |lam h| */
     int bands;       /* how many modes are bands */
     int modal;       /* a band turns so fast over the step (SX_BAND_MODAL_WH) that the ends' data come from
                         the modes' own coordinates (sx_ends_modal) */
     sx_mode_bound mode[SX_MAX_N];
-    /* the modes' tails (of the value, of the rate) and sizes (sx_mode_size) in one array each: the
-     * quiet test sums them over the functionals' shares in one product */
+    /* each mode's share of the departure from a functional's interpolant per unit of the functional's
+     * share |a| of it, for the value and for its rate in u, and the size behind its part of the ends'
+     * data (for the rounding's margin): one array each, which the quiet test sums over the
+     * functionals' shares in one product */
     double err[SX_MAX_N], derr[SX_MAX_N], size[SX_MAX_N];
 } sx_mode_bounds;
 
@@ -460,10 +459,6 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs);
  * the physical rate leaves the rounding of its coordinate times |lam h| in the slow part's; there
  * the data are summed from the modes' own coordinates instead, which the band's rate never enters. */
 #define SX_BAND_MODAL_WH 32.0
-/* the size behind mode k's part of the ends' data, for the rounding's margin: from the modes' own
- * coordinates (B->modal), a band's particular part and another's motion and rate; else its
- * coordinate's (times its rate's |lam h| for a band, whose free part the data give up) */
-double sx_mode_size(const sx_mode_bounds *B, int k);
 /* the ends' data (values and rates in u) from the modes' own coordinates, the bands' free parts out */
 void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0[], const double xa1[], double *v0,
                    double *v1, double *d0, double *d1);

@@ -26,7 +26,7 @@
  * motion taken out), tails, and the exact value at the step's end */
 typedef struct {
     double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], end[SX_MAX_F];
-    double bmax[SX_MAX_F]; /* the largest |b_k| (NaN if any is) */
+    double bmax[SX_MAX_F]; /* the largest |b_k| (a NaN among them shows in the tails: abs_max) */
 } cubics;
 
 /* the modes' tails over the functionals: tail_f = sum_k |a_fk| err_k (and the rate's, and the sizes'),
