@@ -18,16 +18,16 @@ its diaphragm by a stiff tie (1e8 N/m per m) or a soft one (1e6). The scenes:
   scene under the record (wall-clock), one after another and on threads;
 - light roofs: the house with its roof's mass down to the building file's least, 1e-6 kg/m (a mode
   of 1e7 rad/s), on the exact engine, beside the 200-kg/m roof.
-Each scene: the exact engine (the best CPU time of 15 calls in-process, each call followed by four of
-one wall's, whose best the scene's "x wall" divides by: the two bests come from the same seconds, as
-the machine's speed wanders) and CVODES (rtol 1e-8, one call), their peaks' largest relative
-difference, and the floor: the arithmetic the exact engine's
-method cannot skip at the steps and events it counted. Per record interval one exact propagation
-exp(Aa h) xa and one dissipation form xa.Wd xa (2 na^2 multiply-adds; na = 3 + 2 x the degrees of
-freedom), per event one exact series (about 20 na^2), at the rate this core does dense arithmetic
-(a 256 x 256 matrix product's flops over its CPU time, measured in the same run). Every time is
-CPU time on a shared machine: read ratios, not absolutes. A run's is its thread's (time.thread_time):
-the process's would count NumPy's BLAS threads, which spin for a while after the matrix product.
+Each scene: the exact engine (the best CPU time of 15 calls in-process, each call followed by four
+of one wall's, whose best the scene's "x wall" divides by: the two bests come from the same seconds,
+as the machine's speed wanders) and CVODES (rtol 1e-8, one call), their peaks' largest relative
+difference, and the floor: the arithmetic the exact engine's method cannot skip at the steps and
+events it counted. Per record interval one exact propagation exp(Aa h) xa and one dissipation form
+xa.Wd xa (2 na^2 multiply-adds; na = 3 + 2 x the degrees of freedom), per event one exact series
+(about 20 na^2), at the rate this core does dense arithmetic (a 256 x 256 matrix product's flops
+over its CPU time, measured in the same run). Every time is CPU time on a shared machine: read
+ratios, not absolutes. A run's is its thread's (time.thread_time): the process's would count NumPy's
+BLAS threads, which spin for a while after the matrix product.
 
     .venv/bin/python scripts/bench_scenes.py [--pga 0.2] [--calls 15]
 """
