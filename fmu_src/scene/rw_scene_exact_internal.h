@@ -519,6 +519,9 @@ unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double
  * peaks are taken */
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
 
+/* 1 if a standing wall's indicator line surely changes sign between a step's exact ends xa0 and xa1
+ * (then the quiet test cannot clear the step, and need not run), else 0 */
+int sx_watch_sure_cross(const sx_run *R, const sx_region *r, const double xa0[], const double xa1[]);
 /* the peaks at a state of the region (a quiet step's exact end, the state after an event) */
 void sx_watch_peaks_at(sx_run *R, const sx_region *r, const double xa[]);
 /* the walls' indicator lines under the current modes (after every event) */

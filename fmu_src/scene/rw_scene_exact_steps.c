@@ -144,8 +144,10 @@ static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slop
 }
 
 /* a slow step [R->t, t1] cleared by the quiet test on its (long) table: 0 if taken, else why not
- * (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes, or no memory for the table) */
-static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
+ * (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes, or no memory for the table). in_failed: the step is
+ * a piece of one that failed, so a line that surely crosses over it is looked for first (over a
+ * whole record interval that would cost more than it saves: few of them hold a crossing) */
+static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope, int in_failed)
 {
     sx_region *r = current(R);
     const double h = t1 - R->t;
@@ -157,6 +159,7 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope)
                                     pieces end on the exact series */
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     sx_step_propagate(r, st, xa0, xa1);
+    if (in_failed && sx_watch_sure_cross(R, r, xa0, xa1)) return SX_MAY_CROSS;
     st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
     why = sx_quiet_ends(R, r, &st->herm, xa0, xa1);
     st->used = R->stamp;
@@ -175,7 +178,7 @@ static int dyadic(sx_run *R, double ta, double L, int level, double pieces, doub
     int why;
     if (R->t >= t1) return 0;
     if (R->t > ta + index * h || !r->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope, 0);
-    why = slow_step(R, t1, ta, ag_a, slope);
+    why = slow_step(R, t1, ta, ag_a, slope, level > 0);
     if (why == 0) return 0;
     if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope, why > 0);
     if (dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index, ag_a, slope)) return 1;

@@ -327,6 +327,33 @@ unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double
     return bits;
 }
 
+/* Does a standing wall's line take opposite signs at a step's two exact ends, each farther from zero
+ * than 1e-9 of the line's terms (rounding is 1e-16 of them)? Then no quiet test can clear the step:
+ * the polynomials' ranges hold the ends' values, so the line's range over them spans zero. A piece
+ * whose parent failed the test mostly holds the crossing that failed it, and this says so in a few
+ * operations a line where the test takes thousands (rw_scene_exact_steps.c). */
+int sx_watch_sure_cross(const sx_run *R, const sx_region *r, const double xa0[], const double xa1[])
+{
+    int i, k;
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        const sx_line_set *L = &R->line_set[i];
+        const int f1 = r->f_of[i][SX_Q1], f2 = r->f_of[i][SX_Q2];
+        double p0, p1, q0, q1, P, Q;
+        if (f1 < 0 || R->nlines[i] == 0) continue;
+        p0 = sx_functional(r, f1, xa0), p1 = sx_functional(r, f1, xa1);
+        q0 = sx_functional(r, f2, xa0), q1 = sx_functional(r, f2, xa1);
+        P = fabs(p0) + fabs(p1), Q = fabs(q0) + fabs(q1);
+        for (k = 0; k < R->nlines[i]; k++) {
+            const double w0 = L->a0[k] * p0 + L->a1[k] * q0, w1 = L->a0[k] * p1 + L->a1[k] * q1;
+            const double z0 = L->c[k] + L->s[k] * fabs(w0) + L->t[k] * w0;
+            const double z1 = L->c[k] + L->s[k] * fabs(w1) + L->t[k] * w1;
+            const double m = 1e-9 * (L->abs_c[k] + L->slope[k] * (L->abs_a0[k] * P + L->abs_a1[k] * Q));
+            if ((z0 > m && z1 < -m) || (z0 < -m && z1 > m)) return 1;
+        }
+    }
+    return 0;
+}
+
 /* a line the first pass did not clear: on the box's exact range, then on its own combination of the
  * two polynomials, whose range is tighter where q1 and q2 move together */
 static int line_clear(const sx_line *L, const storey_polys *P, double c1, double r1, double c2, double r2)
@@ -484,7 +511,7 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
     sx_lopoly P[SX_MAX_F];
     if (r->modes.valid) { /* the ends first: the polynomials are their interpolants */
         sx_step_propagate(r, st, xa0, xa1);
-        return sx_quiet_ends(R, r, &st->herm, xa0, xa1) == 0;
+        return !sx_watch_sure_cross(R, r, xa0, xa1) && sx_quiet_ends(R, r, &st->herm, xa0, xa1) == 0;
     }
     low_polys(r, st, xa0, P);
     if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;

@@ -3,8 +3,9 @@
  * the exact motion (the Taylor series, in parts) at every point tried, and the interpolant's rate,
  * widened by its rate's tail, the motion's rate. Random regions of random scenes (ties up to 1e9
  * N/m per m, whose modes turn by many radians over a record interval and are bands there), steps
- * from a fraction of the series' limit to 20 ms; and the free mechanism kept as a block. Run under
- * ASan/UBSan by scripts/run_tests.sh. */
+ * from a fraction of the series' limit to 20 ms; and the free mechanism kept as a block. A step that
+ * surely crosses a line is never cleared by the quiet test. Run under ASan/UBSan by
+ * scripts/run_tests.sh. */
 #include <complex.h>
 #include <math.h>
 #include <stdlib.h>
@@ -223,12 +224,63 @@ static void test_a_free_mechanism_is_a_block_that_bounds(void)
     sx_region_free(&r);
 }
 
+/* A step whose exact ends put one of a wall's lines on opposite sides of zero surely holds a crossing
+ * (sx_watch_sure_cross), and the run then skips the quiet test: that is sound only where the test
+ * could never clear such a step. Random regions, states and steps (a record interval of 5 ms, its
+ * halves and quarters, and pieces within the series' limit) with the scene's own lines; every peak
+ * out of reach, so that only a crossing can fail the test. */
+static void test_a_sure_crossing_is_never_cleared(void)
+{
+    int n, s, regions = 0, sure = 0, tried = 0, wrong = 0;
+    for (n = 0; n < 60; n++) {
+        sx_run *R = (sx_run *)calloc(1, sizeof *R);
+        rw_scene_result res;
+        rw_scene_spec spec;
+        sx_region r;
+        int i;
+        CHECK(R != NULL, "no memory");
+        if (!R) return;
+        random_spec(&spec);
+        spec.building.diaphragm_law = BD_ELASTIC;
+        if (!region_of(&spec, 1, &R->sc, &r)) {
+            free(R);
+            continue;
+        }
+        regions++;
+        memset(&res, 0, sizeof res);
+        for (i = 0; i < RW_SCENE_MAX_STOREYS; i++)
+            res.peak_s1[i] = res.peak_s2[i] = res.peak_diaphragm[i] = res.peak_base_acc[i] = HUGE_VAL;
+        R->res = &res;
+        sx_watch_lines(R);
+        for (s = 0; s < 32; s++) {
+            const double h = s < 24 ? 5e-3 / (1 << (s % 3)) : sx_hmax(&r) * uniform(0.05, 1.0);
+            const sx_step *st = sx_step_of(&r, h, 0.0, 1);
+            double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
+            CHECK(st != NULL, "no table");
+            if (!st) break;
+            start_state(&r, &R->sc, xa0);
+            sx_step_propagate(&r, st, xa0, xa1);
+            tried++;
+            if (!sx_watch_sure_cross(R, &r, xa0, xa1)) continue;
+            sure++;
+            wrong += sx_quiet_ends(R, &r, &st->herm, xa0, xa1) != SX_MAY_CROSS;
+        }
+        sx_region_free(&r);
+        free(R);
+    }
+    printf("sure crossings: %d regions, %d steps, %d sure to cross, %d of them not failed by the quiet test\n",
+           regions, tried, sure, wrong);
+    CHECK(regions >= 30 && sure >= 50, "too few sure crossings tried (%d regions, %d)", regions, sure);
+    CHECK(wrong == 0, "the quiet test did not fail %d steps that surely cross", wrong);
+}
+
 int main(void)
 {
     srand(20261207);
     test_random_regions_bound_their_motion();
     test_light_diaphragms_bound_their_motion();
     test_a_free_mechanism_is_a_block_that_bounds();
+    test_a_sure_crossing_is_never_cleared();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
