@@ -37,6 +37,7 @@
 #endif
 #define SX_CACHE_BYTES 64e6 /* ... within this much memory (five storeys: about 100) */
 #define SX_MAX_LINES (RW_NZ + 2) /* a wall's indicator lines (+ the toppling limit's two) */
+#define SX_LINE_SLOTS ((SX_MAX_LINES + 3) & ~3) /* ... as arrays, in blocks of four (sx_line_set) */
 
 /* kinds of functionals (the deformation's rate only where a bilinear diaphragm yields: its
  * unloading is where the rate changes sign) */
@@ -226,10 +227,12 @@ typedef struct {
 } sx_line;
 
 /* a wall's lines as arrays, each line's coefficients with what the quiet test's first pass takes of
- * them: |a0|, |a1|, |c| and s + |t|, the most z moves per unit of |w| */
+ * them: |a0|, |a1|, |c| and s + |t|, the most z moves per unit of |w|; past the last line, up to a
+ * multiple of four, lines that never come near zero (z = 1), so that the box test runs in whole
+ * blocks of four */
 typedef struct {
-    double a0[SX_MAX_LINES], a1[SX_MAX_LINES], abs_a0[SX_MAX_LINES], abs_a1[SX_MAX_LINES];
-    double s[SX_MAX_LINES], t[SX_MAX_LINES], c[SX_MAX_LINES], abs_c[SX_MAX_LINES], slope[SX_MAX_LINES];
+    double a0[SX_LINE_SLOTS], a1[SX_LINE_SLOTS], abs_a0[SX_LINE_SLOTS], abs_a1[SX_LINE_SLOTS];
+    double s[SX_LINE_SLOTS], t[SX_LINE_SLOTS], c[SX_LINE_SLOTS], abs_c[SX_LINE_SLOTS], slope[SX_LINE_SLOTS];
 } sx_line_set;
 
 /* one indicator of a bilinear diaphragm on its region: z = c + a v, v the functional of `kind`

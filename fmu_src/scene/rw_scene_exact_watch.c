@@ -21,11 +21,13 @@ static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc
 
 static void line_set(const sx_line *L, int n, sx_line_set *set)
 {
+    static const sx_line far = {0.0, 0.0, 0.0, 0.0, 1.0}; /* z = 1: never near zero */
     int k;
-    for (k = 0; k < n; k++) {
-        set->a0[k] = L[k].a0, set->a1[k] = L[k].a1, set->abs_a0[k] = fabs(L[k].a0), set->abs_a1[k] = fabs(L[k].a1);
-        set->s[k] = L[k].s, set->t[k] = L[k].t, set->c[k] = L[k].c, set->abs_c[k] = fabs(L[k].c);
-        set->slope[k] = L[k].s + fabs(L[k].t);
+    for (k = 0; k < SX_LINE_SLOTS; k++) {
+        const sx_line *l = k < n ? &L[k] : &far;
+        set->a0[k] = l->a0, set->a1[k] = l->a1, set->abs_a0[k] = fabs(l->a0), set->abs_a1[k] = fabs(l->a1);
+        set->s[k] = l->s, set->t[k] = l->t, set->c[k] = l->c, set->abs_c[k] = fabs(l->c);
+        set->slope[k] = l->s + fabs(l->t);
     }
 }
 
@@ -313,17 +315,18 @@ __attribute__((target_clones("avx2", "default"))) /* (four lines to a register w
 unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double c2, double r2, double Q1, double Q2)
 {
     const sx_line_set *restrict L = &R->line_set[i];
-    const int n = R->nlines[i];
-    double margin[SX_MAX_LINES];
+    const int blocks = (R->nlines[i] + 3) / 4; /* (the lines past the last never fire: sx_line_set) */
+    double margin[SX_LINE_SLOTS];
     unsigned bits = 0;
-    int k;
-    for (k = 0; k < n; k++) { /* (no branch: vectorised) */
-        const double wc = L->a0[k] * c1 + L->a1[k] * c2, wr = L->abs_a0[k] * r1 + L->abs_a1[k] * r2;
-        const double zc = L->c[k] + L->s[k] * fabs(wc) + L->t[k] * wc;
-        const double tol = SX_TOL * (L->abs_c[k] + L->abs_a0[k] * Q1 + L->abs_a1[k] * Q2) + DBL_MIN;
-        margin[k] = fabs(zc) - (L->slope[k] * wr + 2.0 * tol);
-    }
-    for (k = 0; k < n; k++) bits |= (unsigned)!(margin[k] > 0.0) << k;
+    int b, j;
+    for (b = 0; b < blocks; b++)
+        for (j = 4 * b; j < 4 * b + 4; j++) { /* (no branch: vectorised) */
+            const double wc = L->a0[j] * c1 + L->a1[j] * c2, wr = L->abs_a0[j] * r1 + L->abs_a1[j] * r2;
+            const double zc = L->c[j] + L->s[j] * fabs(wc) + L->t[j] * wc;
+            const double tol = SX_TOL * (L->abs_c[j] + L->abs_a0[j] * Q1 + L->abs_a1[j] * Q2) + DBL_MIN;
+            margin[j] = fabs(zc) - (L->slope[j] * wr + 2.0 * tol);
+        }
+    for (j = 0; j < 4 * blocks; j++) bits |= (unsigned)!(margin[j] > 0.0) << j;
     return bits;
 }
 
