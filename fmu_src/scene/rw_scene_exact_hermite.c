@@ -40,11 +40,16 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs)
     const sx_modes *m = &r->modes;
     int k;
     hs->h = h;
+    hs->bands = hs->modal = 0;
     for (k = 0; k < m->count; k++) {
+        int band;
         hs->wh[k] = m->abs_lam[k] * h;
         hs->w4[k] = hs->wh[k] * hs->wh[k] * hs->wh[k] * hs->wh[k];
         hs->G[k] = growth_over(m, k, h);
         hs->emu[k] = !m->block[k] && hs->w4[k] >= BAND_POWER ? cexp(m->lam[k] * h) : 1.0;
+        band = !m->block[k] && !(hs->wh[k] < 1.0) && hs->w4[k] >= BAND_POWER; /* (fast_mode's bands) */
+        hs->bands += band;
+        hs->modal |= band && hs->wh[k] > SX_BAND_MODAL_WH;
     }
 }
 
@@ -156,17 +161,14 @@ void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const doub
     int k;
     coordinates(r, xa0, y0);
     B->h = hs->h;
-    B->bands = 0;
+    B->bands = hs->bands, B->modal = hs->modal;
     for (k = 0; k < m->count; k++) {
         if (m->block[k]) block_mode(r, k, xa0, y0, slope, hs->h, B, &reach);
         else if (hs->wh[k] < 1.0) slow_mode(r, k, hs, xa0, y0, slope, B);
         else fast_mode(r, k, hs, xa0, y0, slope, B);
-        B->bands += B->mode[k].band;
     }
     if (m->blocks)
         for (k = 0; k < m->count; k++) driven(m, k, reach, hs->h, B);
-    B->modal = 0;
-    for (k = 0; k < m->count; k++) B->modal |= B->mode[k].band && hs->wh[k] > SX_BAND_MODAL_WH;
     if (B->modal) modal_sizes(m, hs, B);
 }
 

@@ -141,6 +141,8 @@ typedef struct {
     double h;
     double wh[SX_MAX_N], w4[SX_MAX_N], G[SX_MAX_N];
     double complex emu[SX_MAX_N];
+    int bands, modal; /* how many modes are bands over the step, and whether one turns past
+                         SX_BAND_MODAL_WH (sx_mode_bounds' own fields, which the length alone sets) */
 } sx_hermite_step;
 
 /* the exact propagators of a region over one step length h */
