@@ -267,8 +267,7 @@ int rw_scene_run_exact(const rw_scene_spec *spec, const rw_scene_record *rec, co
     sx_run *R;
     int code;
     if (!spec || !rec || !opt || !res) return RW_SCENE_BAD_ARGUMENT;
-    res->message[0] = '\0';
-    res->steps = res->events = 0;
+    rw_scene_result_start(res);
     if (rw_scene_check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
     if (rw_scene_validate(spec, res->message, sizeof res->message)) return RW_SCENE_BAD_SPEC;
     if (rw_scene_exact_covers(spec, res->message, sizeof res->message)) return RW_SCENE_UNSUPPORTED;

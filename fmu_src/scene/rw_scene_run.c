@@ -340,6 +340,16 @@ static int integrate(run *r, double t)
     return RW_SCENE_OK;
 }
 
+void rw_scene_result_start(rw_scene_result *res)
+{
+    double *out[5];
+    out[0] = res->s1_out, out[1] = res->s2_out, out[2] = res->diaphragm_out, out[3] = res->base_acc_out;
+    out[4] = res->tie_out;
+    memset(res, 0, sizeof *res);
+    res->s1_out = out[0], res->s2_out = out[1], res->diaphragm_out = out[2], res->base_acc_out = out[3];
+    res->tie_out = out[4];
+}
+
 int rw_scene_check_arguments(const rw_scene_record *rec, const rw_scene_options *opt, char *msg, size_t n)
 {
     size_t k;
@@ -382,8 +392,7 @@ int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw
     run *r;
     int code;
     if (!spec || !rec || !opt || !res) return RW_SCENE_BAD_ARGUMENT;
-    res->message[0] = '\0';
-    res->steps = res->events = 0;
+    rw_scene_result_start(res);
     res->t_newton = NAN;
     if (rw_scene_check_arguments(rec, opt, res->message, sizeof res->message)) return RW_SCENE_BAD_ARGUMENT;
     if (rw_scene_validate(spec, res->message, sizeof res->message)) return RW_SCENE_BAD_SPEC;

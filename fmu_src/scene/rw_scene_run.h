@@ -62,6 +62,11 @@ typedef struct {
 int rw_scene_run(const rw_scene_spec *spec, const rw_scene_record *rec, const rw_scene_options *opt,
                  rw_scene_result *res);
 
+/* The result's outputs set to nothing yet, its history pointers (the caller's) kept: both runners
+ * start from it, so that a struct an earlier run filled says this run's numbers alone (its peaks
+ * and maxima are kept as the larger of theirs and the motion's). */
+void rw_scene_result_start(rw_scene_result *res);
+
 /* The record, options and output grid checked (both runners): 0, or 1 with msg filled. */
 int rw_scene_check_arguments(const rw_scene_record *rec, const rw_scene_options *opt, char *msg, size_t n);
 
