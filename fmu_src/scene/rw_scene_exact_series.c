@@ -127,8 +127,8 @@ static void matmul(int na, const double *A, const double *B, double *C)
 
 /* C = A B (add: C += A B) for a dense A given by columns (At, na x na), a column of C at a time
  * through the products' kernels (sx_matvec_cols): each entry's sum runs over l in order, as in
- * matmul (whose skipped zeros add nothing), so the bits are matmul's in a third of the
- * instructions where A has few zeros (the tables' doublings: 4 % of the house's run) */
+ * matmul (whose skipped zeros add nothing), so the bits are matmul's, in about a quarter of its
+ * instructions where A has few zeros (4 000 against 17 600 for the house's doublings) */
 static void dense_product(int na, const double *At, const double *B, double *C, int add)
 {
     double b[SX_MAX_NA], c[SX_MAX_NA];
