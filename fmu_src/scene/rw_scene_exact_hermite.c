@@ -46,8 +46,8 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs)
         hs->wh[k] = m->abs_lam[k] * h;
         hs->w4[k] = hs->wh[k] * hs->wh[k] * hs->wh[k] * hs->wh[k];
         hs->G[k] = growth_over(m, k, h);
-        hs->emu[k] = !m->block[k] && hs->w4[k] >= BAND_POWER ? cexp(m->lam[k] * h) : 1.0;
-        band = !m->block[k] && !(hs->wh[k] < 1.0) && hs->w4[k] >= BAND_POWER; /* (fast_mode's bands) */
+        band = !m->block[k] && hs->w4[k] >= BAND_POWER; /* (fast_mode's: |mu|^4 past 384 is past |mu| = 1) */
+        hs->emu[k] = band ? cexp(m->lam[k] * h) : 1.0;
         hs->bands += band;
         hs->modal |= band && hs->wh[k] > SX_BAND_MODAL_WH;
     }
