@@ -46,6 +46,13 @@ enum { SX_Q1 = 0, SX_Q2, SX_DEFORM, SX_BASE_ACC, SX_DEFORM_RATE };
  * the base acceleration */
 enum { SX_PEAK_S1 = 0, SX_PEAK_S2, SX_PEAK_DEFORM, SX_PEAK_ACC, SX_PEAK_KINDS };
 
+/* a function inlined into each of its callers in the quiet test's hot path */
+#if defined(__GNUC__)
+#define SX_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define SX_ALWAYS_INLINE
+#endif
+
 /* a . b over n entries, in two running sums (even and odd entries: not a row's order) held as one
  * vector register (GCC's vector extension: SSE2 on x86-64) */
 typedef double sx_v2 __attribute__((vector_size(16)));
@@ -143,6 +150,7 @@ typedef struct {
     double complex emu[SX_MAX_N];
     int bands, modal; /* how many modes are bands over the step, and whether one turns past
                          SX_BAND_MODAL_WH (sx_mode_bounds' own fields, which the length alone sets) */
+    int nfast, fast[SX_MAX_N]; /* the modes (not blocks) that turn by a radian or more over it */
 } sx_hermite_step;
 
 /* the exact propagators of a region over one step length h */
@@ -448,7 +456,7 @@ typedef struct {
     int bands;       /* how many modes are bands */
     int modal;       /* a band turns so fast over the step (SX_BAND_MODAL_WH) that the ends' data come from
                         the modes' own coordinates (sx_ends_modal) */
-    sx_mode_bound mode[SX_MAX_N];
+    sx_mode_bound mode[SX_MAX_N]; /* (set where the step holds bands: read only there) */
     /* each mode's share of the departure from a functional's interpolant per unit of the functional's
      * share |a| of it, for the value and for its rate in u, and the size behind its part of the ends'
      * data (for the rounding's margin): one array each, which the quiet test sums over the
@@ -469,6 +477,9 @@ void sx_ends_modal(const sx_region *r, const sx_mode_bounds *B, const double xa0
                    double *v1, double *d0, double *d1);
 /* the modes' bounds over a step (its constants hs) from its start xa0 (the region's modes valid) */
 void sx_mode_bounds_of(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
+/* the same, each mode's bounds taken one mode at a time as a region with blocks takes them (the
+ * tests hold sx_mode_bounds_of's vectorised pass to it, to the bit) */
+void sx_mode_bounds_each(const sx_region *r, const sx_hermite_step *hs, const double xa0[], sx_mode_bounds *B);
 /* a cubic's range over a step as the centre and half-width of its Bernstein coefficients' hull,
  * widened by its tail (a NaN leaves both NaN: nothing is clear of it) */
 static inline void sx_cubic_box(double b0, double b1, double b2, double b3, double tail, double *centre,

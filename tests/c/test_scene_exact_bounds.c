@@ -4,8 +4,8 @@
  * widened by its rate's tail, the motion's rate. Random regions of random scenes (ties up to 1e9
  * N/m per m, whose modes turn by many radians over a record interval and are bands there), steps
  * from a fraction of the series' limit to 20 ms; and the free mechanism kept as a block. A step that
- * surely crosses a line is never cleared by the quiet test. Run under ASan/UBSan by
- * scripts/run_tests.sh. */
+ * surely crosses a line is never cleared by the quiet test. The modes' bounds taken at once are each
+ * mode's own, to the bit. Run under ASan/UBSan by scripts/run_tests.sh. */
 #include <complex.h>
 #include <math.h>
 #include <stdlib.h>
@@ -224,6 +224,62 @@ static void test_a_free_mechanism_is_a_block_that_bounds(void)
     sx_region_free(&r);
 }
 
+/* same bits: 1 if the doubles at a and b hold the same bits */
+static int same_bits(const double *a, const double *b, int n) { return memcmp(a, b, sizeof(double) * (size_t)n) == 0; }
+
+/* mode k's bounds in a and b, to the bit (where the step holds bands, which modes are bands and
+ * their free parts too) */
+static int same_mode(const sx_mode_bounds *a, const sx_mode_bounds *b, int k)
+{
+    const sx_mode_bound *x = &a->mode[k], *y = &b->mode[k];
+    if (!same_bits(&a->err[k], &b->err[k], 1) || !same_bits(&a->derr[k], &b->derr[k], 1) ||
+        !same_bits(&a->size[k], &b->size[k], 1) || a->bands != b->bands || a->modal != b->modal)
+        return 0;
+    if (!a->bands) return 1;
+    if (x->band != y->band) return 0;
+    return !x->band || (same_bits(&x->psize, &y->psize, 1) && same_bits(x->re, y->re, 4) && same_bits(x->im, y->im, 4));
+}
+
+/* Without blocks the modes' bounds come from one pass over the modes without a branch (every mode
+ * as a slow one, then the fast ones again): the same bits as each mode's own bound, as a region with
+ * blocks takes them. Random regions of random scenes, their slow modes, fast ones and bands, over
+ * steps from a fraction of the series' limit to 20 ms. */
+static void test_the_modes_bounds_at_once_are_each_modes(void)
+{
+    int n, s, k, regions = 0, slow = 0, fast = 0, bands = 0, differ = 0;
+    for (n = 0; n < 60; n++) {
+        rw_scene_spec spec;
+        rw_scene sc;
+        sx_region r;
+        random_spec(&spec);
+        spec.building.diaphragm_law = coin() ? BD_BILINEAR : BD_ELASTIC;
+        if (!region_of(&spec, 1, &sc, &r)) continue;
+        regions += !r.modes.blocks;
+        for (s = 0; s < 12 && !r.modes.blocks; s++) {
+            const double h = s < 4 ? sx_hmax(&r) * uniform(0.05, 1.0) : (s < 8 ? 5e-3 : uniform(5e-3, 2e-2));
+            double xa0[SX_MAX_NA];
+            sx_hermite_step hs;
+            sx_mode_bounds at_once, each;
+            start_state(&r, &sc, xa0);
+            sx_hermite_step_of(&r, h, &hs);
+            sx_mode_bounds_of(&r, &hs, xa0, &at_once);
+            sx_mode_bounds_each(&r, &hs, xa0, &each);
+            for (k = 0; k < r.modes.count; k++) {
+                slow += hs.wh[k] < 1.0;
+                fast += hs.wh[k] >= 1.0 && !(hs.bands && each.mode[k].band);
+                bands += hs.bands && each.mode[k].band;
+                differ += !same_mode(&at_once, &each, k);
+            }
+        }
+        sx_region_free(&r);
+    }
+    printf("modes' bounds at once: %d regions, %d slow modes, %d fast, %d bands: %d not each mode's to the bit\n",
+           regions, slow, fast, bands, differ);
+    CHECK(regions >= 30 && slow > 0 && fast > 0 && bands > 0, "too few modes tried (%d regions: %d, %d, %d)", regions,
+          slow, fast, bands);
+    CHECK(differ == 0, "%d modes' bounds differ from each mode's own", differ);
+}
+
 /* A step whose exact ends put one of a wall's lines on opposite sides of zero surely holds a crossing
  * (sx_watch_sure_cross), and the run then skips the quiet test: that is sound only where the test
  * could never clear such a step. Random regions, states and steps (a record interval of 5 ms, its
@@ -281,6 +337,7 @@ int main(void)
     test_light_diaphragms_bound_their_motion();
     test_a_free_mechanism_is_a_block_that_bounds();
     test_a_sure_crossing_is_never_cleared();
+    test_the_modes_bounds_at_once_are_each_modes();
     printf("%d checks, %d failures\n", checks, failures);
     return failures ? 1 : 0;
 }
