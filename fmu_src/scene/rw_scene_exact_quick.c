@@ -12,10 +12,6 @@
 #include <float.h>
 #include <math.h>
 
-/* (The cubics' assembly runs at every quiet test: inlined into both its callers, the first pass
- * (sx_quiet_ends, the hot path) and the full test's polynomials (sx_hermite_polys); out of line it
- * cost the first pass 1.5 % of a run's instructions.) */
-
 /* every functional's cubic over a step as arrays over the functionals (two to a vector register, the
  * arrays' last entry a zero pair for an odd count): Bernstein coefficients b[0..3] (a band's free
  * motion taken out), tails, and the exact value at the step's end */
@@ -36,8 +32,8 @@ static void tails_over(const sx_modes *m, const sx_mode_bounds *B, int nf, cubic
 
 /* the bands' free motion taken out of the ends' data, over the functionals two at a time (the share
  * arrays hold zeros past the last functional, and the cubics' arrays room for them) */
-static SX_ALWAYS_INLINE void bands_out(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q, double *d0,
-                                    double *d1)
+static SX_ALWAYS_INLINE void bands_out(const sx_modes *m, const sx_mode_bounds *B, int nf, cubics *Q,
+                                       double *d0, double *d1)
 {
     int f, k;
     for (k = 0; k < m->count; k++) {
@@ -64,9 +60,12 @@ static inline double abs_max(double m, double v)
     return v > m ? v : m;
 }
 
-/* every functional's cubic over the step from the modes' bounds over it and its exact ends */
+/* every functional's cubic over the step from the modes' bounds over it and its exact ends (it runs
+ * at every quiet test: inlined into both its callers, the first pass (sx_quiet_ends, the hot path)
+ * and the full test's polynomials (sx_hermite_polys); out of line it cost the first pass 1.5 % of a
+ * run's instructions) */
 static SX_ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds *B, const double xa0[],
-                                    const double xa1[], cubics *Q)
+                                       const double xa1[], cubics *Q)
 {
     const sx_modes *m = &r->modes;
     const int nf = r->nf;
