@@ -228,12 +228,12 @@ void rw_scene_indicators(const rw_scene *sc, double ag, const double x[], double
     }
 }
 
-int rw_scene_event_update(rw_scene *sc, double t, double ag, double x[])
+int rw_scene_event_update(rw_scene *sc, double t, double ag, double x[], double dx[])
 {
-    double dx[RW_SCENE_NX], xb[BD_NX];
+    double own_dx[RW_SCENE_NX], xb[BD_NX];
     rw_scene_aux aux;
     int i, flags = 0;
-    rw_scene_derivatives(sc, ag, x, dx, &aux);
+    rw_scene_derivatives(sc, ag, x, dx ? dx : own_dx, &aux);
     building_states(sc, x, xb);
     for (i = 0; i < sc->S.n_storeys; i++) {
         const rw_params *p = &sc->S.wall[i];

@@ -71,8 +71,9 @@ void rw_scene_derivatives(const rw_scene *sc, double ag, const double x[], doubl
  * mid-height switch that is bookkeeping only) */
 void rw_scene_indicators(const rw_scene *sc, double ag, const double x[], double z[]);
 /* One event-mode update of every standing wall at time t: impacts, switches, collapse. Returns a
- * bit set: 1 states changed, 2 a regime changed, 4 a wall collapsed. */
-int rw_scene_event_update(rw_scene *sc, double t, double ag, double x[]);
+ * bit set: 1 states changed, 2 a regime changed, 4 a wall collapsed. dx (may be NULL): the rates
+ * at the state it started from, which are the rates at the state it leaves where it returns 0. */
+int rw_scene_event_update(rw_scene *sc, double t, double ag, double x[], double dx[]);
 
 /* Energy of the scene with velocities relative to the ground (walls, their ties, floors,
  * diaphragms, the springs' work), and the powers that change it: the ground's work rate and the

@@ -368,8 +368,9 @@ double sx_sym2_min_eig(const double A[2][2]);
 void sx_sym2_eig(const double A[2][2], double mu[2], double e[2][2]); /* A's symmetric part: mu_k, rows e_k */
 
 /* ---- the region (rw_scene_exact_region.c) ---- */
-/* the key of the region the motion at x goes into; 0, or an error code */
-void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key);
+/* the key of the region the motion at x goes into; dx: the scene's rates at x where the caller has
+ * them (the event update's), NULL to have them evaluated here */
+void sx_region_key(const rw_scene *sc, double ag, const double x[], const double *dx, sx_key *key);
 int sx_key_equal(const sx_key *a, const sx_key *b);
 /* builds region r for key (allocates; frees an old build first): 0 or RW_SCENE_NO_MEMORY. A
  * sibling (NULL: none) is a built region whose key differs from this one's in constants only (the

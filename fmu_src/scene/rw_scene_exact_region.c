@@ -18,12 +18,12 @@ typedef struct {
 
 static int standing(const rw_scene *sc, int i) { return sc->S.has_wall[i] && !sc->collapsed[i]; }
 
-void sx_region_key(const rw_scene *sc, double ag, const double x[], sx_key *key)
+void sx_region_key(const rw_scene *sc, double ag, const double x[], const double *dx, sx_key *key)
 {
-    double dx[RW_SCENE_NX];
+    double own_dx[RW_SCENE_NX];
     int i;
     memset(key, 0, sizeof *key);
-    rw_scene_derivatives(sc, ag, x, dx, NULL);
+    if (!dx) rw_scene_derivatives(sc, ag, x, own_dx, NULL), dx = own_dx;
     for (i = 0; i < sc->S.n_storeys; i++) {
         const double *xi = RW_SCENE_WALL(x, i), *di = RW_SCENE_WALL(dx, i);
         /* on a breakpoint the motion a moment later picks the region (its acceleration decides a

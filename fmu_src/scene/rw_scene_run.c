@@ -255,7 +255,7 @@ static int handle_events(run *r, double t)
     int rounds = 0, flags;
     do {
         const double before = energy(r, t);
-        flags = rw_scene_event_update(&r->sc, t, ag, x);
+        flags = rw_scene_event_update(&r->sc, t, ag, x, NULL);
         r->losses += before - energy(r, t);
         r->res->events++;
         if (++rounds > MAX_ROUNDS_PER_EVENT) {

@@ -1,8 +1,8 @@
 /* The exact scene engine (fmu_src/scene/rw_scene_exact*.c): its linear system against the scene's
  * own rates (rw_scene_derivatives) at random states of random scenes (linear and bilinear
- * diaphragms), short runs against CVODES, what it refuses, its two matrix-vector products
- * giving the same bits, and a run after another giving the same bits. Run under ASan/UBSan by
- * scripts/run_tests.sh. */
+ * diaphragms), the event update's rates where it changes nothing (the region's key takes them),
+ * short runs against CVODES, what it refuses, its two matrix-vector products giving the same bits,
+ * and a run after another giving the same bits. Run under ASan/UBSan by scripts/run_tests.sh. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,6 +68,42 @@ static void test_rates_match_the_scene(void)
     printf("rates: worst relative difference %.3g (scene %d) over 400 random scenes and states\n", worst, worst_case);
     CHECK(worst <= 1e-12, "the linear system's rates differ from rw_scene_derivatives by %.3g (scene %d)", worst,
           worst_case);
+}
+
+/* the event update's rates (rw_scene_event_update's dx) where its last round changed nothing are the
+ * rates at the state it leaves, to the bit, and so is the region's key the engine takes from them
+ * (sx_handle_events hands them to sx_region_key, which then skips its own evaluation) */
+static void test_a_quiet_update_leaves_the_rates_at_its_state(void)
+{
+    int n, quiet = 0, after_change = 0;
+    for (n = 0; n < 400; n++) {
+        rw_scene_spec spec;
+        rw_scene sc;
+        sx_key given, own;
+        double x[RW_SCENE_NX], dx[RW_SCENE_NX], fresh[RW_SCENE_NX];
+        const double ag = uniform(-5.0, 5.0);
+        int i, rounds = 0, flags;
+        random_spec(&spec);
+        memset(x, 0, sizeof x);
+        rw_scene_init(&sc, &spec, 0.0, x);
+        for (i = 0; i < spec.n_storeys; i++)
+            sc.regime[i].side_b = coin() ? 1 : -1, sc.regime[i].side_m = coin() ? 1 : -1;
+        random_state(&sc, x);
+        for (i = 0; i < spec.n_storeys; i++) /* some walls at rest on their base, where impacts and lifts happen */
+            if (spec.has_wall[i] && coin()) RW_SCENE_WALL(x, i)[0] = RW_SCENE_WALL(x, i)[1] = 0.0;
+        do flags = rw_scene_event_update(&sc, 0.0, ag, x, dx);
+        while ((flags & 3) && ++rounds < 100);
+        if (flags) continue;
+        quiet++, after_change += rounds > 0;
+        rw_scene_derivatives(&sc, ag, x, fresh, NULL);
+        CHECK(memcmp(dx, fresh, sizeof dx) == 0, "scene %d: the update's rates are not the state's", n);
+        sx_region_key(&sc, ag, x, dx, &given);
+        sx_region_key(&sc, ag, x, NULL, &own);
+        CHECK(memcmp(&given, &own, sizeof given) == 0, "scene %d: the key from the update's rates differs", n);
+    }
+    printf("event update's rates: %d quiet updates (%d after rounds that changed the state) of 400\n", quiet,
+           after_change);
+    CHECK(quiet >= 100 && after_change >= 10, "too few cases tried (%d quiet, %d after a change)", quiet, after_change);
 }
 
 /* the exact engine against CVODES at rtol 1e-10 (Adams, or BDF with bdf): peaks within 1e-4, the
@@ -330,6 +366,7 @@ int main(void)
 {
     srand(12345);
     test_rates_match_the_scene();
+    test_a_quiet_update_leaves_the_rates_at_its_state();
     test_runs_against_cvodes();
     test_bilinear_against_cvodes();
     test_bouc_wen_against_cvodes();

@@ -89,7 +89,7 @@ static int region_of(const rw_scene_spec *spec, int sides, rw_scene *sc, sx_regi
     for (i = 0; sides && i < spec->n_storeys; i++)
         sc->regime[i].side_b = coin() ? 1 : -1, sc->regime[i].side_m = coin() ? 1 : -1;
     random_state(sc, x);
-    sx_region_key(sc, uniform(-5.0, 5.0), x, &key);
+    sx_region_key(sc, uniform(-5.0, 5.0), x, NULL, &key);
     memset(r, 0, sizeof *r);
     CHECK(sx_region_build(sc, &key, r, NULL) == 0, "the region was not built");
     if (r->modes.valid) return 1;

@@ -307,7 +307,7 @@ static void event_update(void *M, double time, const fmu_logger *log, fmu_event_
     evaluate(S, NULL, &v);
     energy_before = energy_now(S, &v);
     memcpy(before, S->sc.collapsed, sizeof before);
-    flags = rw_scene_event_update(&S->sc, time, S->ag, v.xs);
+    flags = rw_scene_event_update(&S->sc, time, S->ag, v.xs, NULL);
     unpack(S->sc.S.n_storeys, v.xs, S->x);
     if (flags) {
         evaluate(S, NULL, &v);
