@@ -510,11 +510,14 @@ void sx_block_coupling(const sx_region *r, const double *Vr, const double *Winv,
 
 /* ---- watching a step (rw_scene_exact_watch.c) ---- */
 /* the quiet test on given polynomials of the functionals over a step of length h from xa0 in the
- * current region: 0 (quiet: then the peaks are those of the step's ends, sx_watch_peaks_at,
- * and of the doubts it left, sx_doubt_peak), or the first reason why not it found (SX_MAY_PEAK
- * only where no doubt could be kept) */
+ * current region, on the storeys in the bit set storeys (SX_ALL_STOREYS: every one; a storey left
+ * out must be clear by other means): 0 (quiet: then the peaks are those of the step's ends,
+ * sx_watch_peaks_at, and of the doubts it left, sx_doubt_peak), or the first reason why not it
+ * found (SX_MAY_PEAK only where no doubt could be kept) */
 enum { SX_MAY_CROSS = 1, SX_MAY_PEAK = 2 };
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[]);
+#define SX_ALL_STOREYS (~0u)
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[],
+                         unsigned storeys);
 /* what the quiet test could not clear over a step, per storey: bits of the wall's lines (bit 31: its
  * collapse indicator), of its bilinear diaphragm's indicators, and of its peak quantities */
 typedef struct {
@@ -531,8 +534,8 @@ unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double
 
 /* ---- the quiet test from a step's exact ends (rw_scene_exact_quick.c) ---- */
 /* the quiet test of a step from xa0 to its exact end xa1 (the region's modes valid; the step's
- * constants hs): a first pass on every functional's polynomial at once, then, where it does not
- * clear the step, the full test (sx_watch_quiet_polys) on the same polynomials; quiet (0), the end's
+ * constants hs): a first pass on every functional's polynomial at once, then, on the storeys it does
+ * not clear, the full test (sx_watch_quiet_polys) on the same polynomials; quiet (0), the end's
  * peaks are taken */
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
 

@@ -4,9 +4,9 @@
  * the functionals: cubics_of, which the full test's polynomials come from too); each standing
  * wall's lines are tested at once on the box of its rotations' ranges, and each peak quantity is
  * held against its peak by the bound its polynomial's coefficients give. A step that passes is
- * quiet, and its end's peaks are taken from the values the pass computed. One that does not (a line
- * or a peak near, a collapse indicator in play, a bilinear diaphragm's indicators) is given the full
- * test (sx_watch_quiet_polys), which clears everything this pass does. */
+ * quiet, and its end's peaks are taken from the values the pass computed. The storeys it does not
+ * clear (a line or a peak near, a collapse indicator in play, a bilinear diaphragm's indicators) are
+ * given the full test (sx_watch_quiet_polys), which clears everything this pass does. */
 #include "rw_scene_exact_internal.h"
 
 #include <float.h>
@@ -170,19 +170,22 @@ static void end_peaks(sx_run *R, const sx_region *r, const cubics *Q)
     }
 }
 
-/* the first pass over every storey: 1 quiet, 0 the full test must say */
-static int first_pass(sx_run *R, const sx_region *r, const cubics *Q)
+/* the first pass over every storey: the storeys it does not clear, whose say is the full test's (0:
+ * quiet). A storey it clears, the full test would clear too (its boxes are the same, and each of its
+ * bounds is at least as tight), so that takes the others only: most steps that fail the first pass
+ * fail it on one storey. */
+static unsigned first_pass(sx_run *R, const sx_region *r, const cubics *Q)
 {
     const rw_scene_result *res = R->res;
+    unsigned unclear = 0;
     int i;
     for (i = 0; i < R->sc.S.n_storeys; i++) {
         const int *f = r->f_of[i];
-        if (R->ndlines[i]) return 0;
-        if (f[SX_Q1] >= 0 && !wall_clear(R, r, Q, i)) return 0;
-        if (!under(r, Q, f[SX_DEFORM], res->peak_diaphragm[i]) || !under(r, Q, f[SX_BASE_ACC], res->peak_base_acc[i]))
-            return 0;
+        if (R->ndlines[i] || (f[SX_Q1] >= 0 && !wall_clear(R, r, Q, i)) ||
+            !under(r, Q, f[SX_DEFORM], res->peak_diaphragm[i]) || !under(r, Q, f[SX_BASE_ACC], res->peak_base_acc[i]))
+            unclear |= 1u << i;
     }
-    return 1;
+    return unclear;
 }
 
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[])
@@ -190,14 +193,15 @@ int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, cons
     sx_mode_bounds B;
     cubics Q;
     sx_lopoly P[SX_MAX_F];
+    unsigned unclear;
     int why;
     sx_mode_bounds_of(r, hs, xa0, &B);
     cubics_of(r, &B, xa0, xa1, &Q);
-    if (first_pass(R, r, &Q)) {
+    if (!(unclear = first_pass(R, r, &Q))) {
         end_peaks(R, r, &Q);
         return 0;
     }
     lopolys_of(r, &Q, P);
-    if ((why = sx_watch_quiet_polys(R, r, P, hs->h, xa0)) == 0) end_peaks(R, r, &Q);
+    if ((why = sx_watch_quiet_polys(R, r, P, hs->h, xa0, unclear)) == 0) end_peaks(R, r, &Q);
     return why;
 }

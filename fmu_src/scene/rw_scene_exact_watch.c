@@ -449,11 +449,11 @@ static double coarse_quantity(const sx_run *R, int i, const storey_polys *s, int
 
 /* the step's peaks that may rise inside it are kept as doubts (1: one could not be); a quantity
  * whose coarse bound is under its peak (most, once a record's peaks have been reached) first */
-static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double xa0[])
+static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double xa0[], unsigned storeys)
 {
     int i, kind;
     for (i = 0; i < R->sc.S.n_storeys; i++)
-        for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
+        for (kind = 0; kind < SX_PEAK_KINDS && (storeys >> i & 1u); kind++) {
             const double peak = *sx_peak_of(R->res, i, kind);
             sx_lopoly p;
             double bound;
@@ -478,14 +478,16 @@ double sx_watch_peak_bound(sx_run *R, const sx_region *r, double h, const double
 }
 
 /* the crossings first: a peak that may rise costs a doubt, not a halving */
-int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[])
+int sx_watch_quiet_polys(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], double h, const double xa0[],
+                         unsigned storeys)
 {
     storey_polys S[RW_SCENE_MAX_STOREYS];
     int i;
     storey_view(R, r, P, S);
     for (i = 0; i < R->sc.S.n_storeys; i++)
-        if ((S[i].q1 && wall_suspects(R, r, i, &S[i], 0)) || diaphragm_suspects(R, i, &S[i])) return SX_MAY_CROSS;
-    return doubt_peaks(R, S, h, xa0) ? SX_MAY_PEAK : 0;
+        if ((storeys >> i & 1u) && ((S[i].q1 && wall_suspects(R, r, i, &S[i], 0)) || diaphragm_suspects(R, i, &S[i])))
+            return SX_MAY_CROSS;
+    return doubt_peaks(R, S, h, xa0, storeys) ? SX_MAY_PEAK : 0;
 }
 
 int sx_watch_suspects(sx_run *R, const sx_region *r, sx_lopoly P[SX_MAX_F], sx_suspects *sus)
@@ -517,7 +519,7 @@ int sx_watch_quiet(sx_run *R, const sx_region *r, const sx_step *st, const doubl
         return !sx_watch_sure_cross(R, r, xa0, xa1) && sx_quiet_ends(R, r, &st->herm, xa0, xa1) == 0;
     }
     low_polys(r, st, xa0, P);
-    if (sx_watch_quiet_polys(R, r, P, st->h, xa0) != 0) return 0;
+    if (sx_watch_quiet_polys(R, r, P, st->h, xa0, SX_ALL_STOREYS) != 0) return 0;
     sx_step_propagate(r, st, xa0, xa1);
     sx_watch_peaks_at(R, r, xa1);
     return 1;
