@@ -171,9 +171,10 @@ static void end_peaks(sx_run *R, const sx_region *r, const cubics *Q)
 }
 
 /* the first pass over every storey: the storeys it does not clear, whose say is the full test's (0:
- * quiet). A storey it clears, the full test would clear too (its boxes are the same, and each of its
- * bounds is at least as tight), so that takes the others only: most steps that fail the first pass
- * fail it on one storey. */
+ * quiet). A storey it clears is taken as clear, as it is where the pass clears every storey: the
+ * full test's boxes are the same and its bounds no looser (but for the rounding of a peak's bound
+ * times h/2, summed in another order), so that takes the others only: most steps that fail the
+ * first pass fail it on one storey. */
 static unsigned first_pass(sx_run *R, const sx_region *r, const cubics *Q)
 {
     const rw_scene_result *res = R->res;
