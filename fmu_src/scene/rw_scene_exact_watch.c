@@ -452,8 +452,9 @@ static double coarse_quantity(const sx_run *R, int i, const storey_polys *s, int
 static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double xa0[], unsigned storeys)
 {
     int i, kind;
-    for (i = 0; i < R->sc.S.n_storeys; i++)
-        for (kind = 0; kind < SX_PEAK_KINDS && (storeys >> i & 1u); kind++) {
+    for (i = 0; i < R->sc.S.n_storeys; i++) {
+        if (!(storeys >> i & 1u)) continue;
+        for (kind = 0; kind < SX_PEAK_KINDS; kind++) {
             const double peak = *sx_peak_of(R->res, i, kind);
             sx_lopoly p;
             double bound;
@@ -461,6 +462,7 @@ static int doubt_peaks(sx_run *R, const storey_polys S[], double h, const double
             bound = may_rise_to(&p, peak);
             if (bound > 0.0 && sx_doubt_peak(R, i, kind, bound, h, xa0)) return 1;
         }
+    }
     return 0;
 }
 
