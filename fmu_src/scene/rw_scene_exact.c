@@ -186,24 +186,39 @@ static void observe(sx_run *R)
     }
 }
 
-/* where the next interval ends: the next record sample, output time or the end */
-static double next_stop(sx_run *R)
+/* where the interval from t ends: the next record sample, output time (the first not yet written
+ * past the row due at t) or the end */
+static double stop_after(sx_run *R, double t)
 {
     const rw_scene_record *rec = R->rec;
     double stop = R->opt->t_end;
-    size_t k = R->hint;
-    while (k < rec->n && rec->t[k] <= R->t) k++;
+    size_t k = R->hint, out = R->next_out;
+    while (k > 0 && rec->t[k - 1] > t) k--; /* (a window's samples may have moved the hint past t) */
+    while (k < rec->n && rec->t[k] <= t) k++;
     if (k < rec->n && rec->t[k] < stop) stop = rec->t[k];
-    if (R->next_out < R->opt->n_out && R->opt->t_out[R->next_out] < stop) stop = R->opt->t_out[R->next_out];
+    if (t > R->t)
+        while (out < R->opt->n_out && R->opt->t_out[out] <= t) out++;
+    if (out < R->opt->n_out && R->opt->t_out[out] < stop) stop = R->opt->t_out[out];
     return stop;
+}
+
+static double next_stop(sx_run *R) { return stop_after(R, R->t); }
+
+void sx_observe(sx_run *R)
+{
+    observe(R);
+    R->res->t_reached = R->t;
 }
 
 static int integrate(sx_run *R)
 {
+    double t[SX_WINDOW + 1];
     while (R->t < R->opt->t_end) {
-        if (sx_advance(R, next_stop(R))) return R->error;
-        observe(R);
-        R->res->t_reached = R->t;
+        int n = 1;
+        t[0] = R->t, t[1] = next_stop(R);
+        while (n < SX_WINDOW && t[n] < R->opt->t_end) t[n + 1] = stop_after(R, t[n]), n++;
+        if (!(n > 1 && sx_window(R, t, n)) && sx_advance(R, t[1])) return R->error;
+        sx_observe(R);
     }
     return RW_SCENE_OK;
 }
@@ -259,6 +274,7 @@ static sx_run *new_run(const rw_scene_spec *spec, const rw_scene_record *rec, co
     R->cur = -1;
     R->t = rec->t[0];
     R->last_event_t = NAN;
+    R->window_backoff = 1;
     rw_scene_start_state(spec, opt->x0, R->x);
     rw_scene_init(&R->sc, spec, rec->ag[0], R->x);
     return R;

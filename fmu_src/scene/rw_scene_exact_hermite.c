@@ -54,6 +54,44 @@ void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs)
     }
 }
 
+/* A window of n steps of length h (L = n h) whose record's slope changes by ds_j at the sample t_j
+ * inside it (u = s_j = j / n, to rounding) adds to mode k the motion kappa_j = g1 ds_j phi(t - t_j),
+ * phi(v) = (e^(lam v) - 1 - lam v) / lam^2 past the kink and zero before it: C^1, with kappa_j'' =
+ * g1 ds_j e^(lam (t - t_j)) past it. Every other part of the motion is as over one step. The cubic
+ * Hermite interpolant's departure from a C^1 function g on [0, 1] is int_0^1 K(u, s) g''(s) ds with
+ * the kernel K(u, s) = (u - s)_+ - H[(. - s)_+](u), so that |kappa_j - H kappa_j| <= L^2 |g1| |ds_j| G
+ * max_u int_{s_j}^1 |K(u, s)| ds, the kernel's integral (sx_window_kinks). A functional's own term in
+ * the record, F_ag ag, kinks there itself: its departure is L |F_ag| |ds_j| |K(u, s_j)|. Per table,
+ * each functional's L^2 sum_k |a_fk| |g1_k| G_k (modes) and L |F_ag| (record). */
+void sx_kink_of(const sx_region *r, const sx_hermite_step *hs, double modes[SX_MAX_F], double record[SX_MAX_F])
+{
+    const sx_modes *m = &r->modes;
+    const double L = hs->h;
+    int f, k;
+    for (f = 0; f < r->nf; f++) {
+        modes[f] = 0.0;
+        record[f] = L * fabs(r->F[f][r->n]);
+    }
+    for (k = 0; k < m->count; k++) {
+        const double c = L * L * mag(m->g1[k]) * hs->G[k];
+        for (f = 0; f < r->nf; f++) modes[f] += m->share_abs[k][f] * c;
+    }
+}
+
+/* The kernel's bounds for a kink at u = j / n, past s = j / n - 0.01 (rounding moves it by far less):
+ * max_u int_s^1 |K(u, s')| ds' and max over s' within 0.01 of j / n and u of |K(u, s')|, rounded up
+ * (tests/c/test_scene_window.c computes them again) */
+#if SX_WINDOW > 4
+#error "the kernel's bounds are tabled for windows of 4 steps at most"
+#endif
+void sx_window_kinks(int n, int j, double *value, double *record)
+{
+    static const double V[5][4] = {{0}, {0}, {0, 0.0375}, {0, 0.0470, 0.0230}, {0, 0.0480, 0.0375, 0.0168}};
+    static const double E[5][4] = {{0}, {0}, {0, 0.126}, {0, 0.103, 0.103}, {0, 0.075, 0.126, 0.075}};
+    *value = V[n][j];
+    *record = E[n][j];
+}
+
 /* every mode's coordinates y = Winv x from the state, in one product (vectorised by columns) */
 static void coordinates(const sx_region *r, const double x[], double y[])
 {

@@ -32,6 +32,9 @@
 #define SX_MAX_DEG 40    /* cap of a series' degree (reached only for rho > 1) */
 #define SX_RHO 1.0       /* a step's ||A h|| in the balanced norm */
 #define SX_STEPS 8       /* step lengths cached per region */
+#ifndef SX_WINDOW
+#define SX_WINDOW 3      /* record intervals a quiet test takes at once (sx_window) */
+#endif
 #ifndef SX_REGIONS /* (the C tests build the scenes with the least memory too) */
 #define SX_REGIONS 96    /* regions cached per run (two walls visit about 50) ... */
 #endif
@@ -174,6 +177,11 @@ typedef struct {
                       in row 3 k + m (the hysteretic force's work, exactly) */
     double *mem;  /* all of the above, allocated when the slot is first built (NULL before) */
     sx_hermite_step herm; /* the quiet test's constants (the region's modes valid) */
+    /* a window of SX_WINDOW such steps (sx_window): the quiet test's constants over its length, and
+       each functional's bounds on what kinks of the record inside it add to the departure from the
+       window's cubic (sx_kink_of) */
+    sx_hermite_step herm_w;
+    double kink_modes[SX_MAX_F], kink_record[SX_MAX_F];
 } sx_step;
 
 typedef struct {
@@ -291,6 +299,8 @@ typedef struct {
     int error;               /* an event's error code (Zeno, no memory, a singular mass matrix) */
     sx_doubt *doubts;        /* the steps whose peaks are in doubt, in the order taken */
     int ndoubts;
+    int window_wait;         /* record intervals to take one by one before a window is tried again */
+    int window_backoff;      /* ... after the next failure, in units of WINDOW_WAIT (doubled at each) */
 } sx_run;
 
 /* row . v (na entries, nz of them not zero). Most rows hold one or two (a displacement, a velocity,
@@ -316,6 +326,11 @@ static inline double sx_functional_rate(const sx_region *r, int f, const double 
 double sx_ground(sx_run *R, double t);  /* the record at t */
 int sx_handle_events(sx_run *R);        /* the event update at R->t, then the region: 0 or an error code */
 int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
+/* the record intervals [t[0] = R->t, t[1]], ..., [t[n-1], t[n]] at once, where the quiet test clears
+ * them over the window they make (each observed at its end by sx_observe but the last): the
+ * intervals taken (n; 1 if the first alone was, its own quiet test clearing it; 0 if none) */
+int sx_window(sx_run *R, const double t[], int n);
+void sx_observe(sx_run *R); /* the output row due at R->t and the energy balance there */
 
 /* ---- bilinear diaphragms (rw_scene_exact_bilinear.c) ---- */
 /* is diaphragm i bilinear (its z and the work done on it are states the engine keeps)? */
@@ -467,6 +482,12 @@ typedef struct {
 
 /* the constants of a step of length h (the region's modes valid) */
 void sx_hermite_step_of(const sx_region *r, double h, sx_hermite_step *hs);
+/* each functional's bounds on the departure from its cubic over a window of steps (its constants hs)
+ * that kinks of the record inside it add, per unit of a slope's change and of the kernel's bound:
+ * through the modes and through its own term in the record */
+void sx_kink_of(const sx_region *r, const sx_hermite_step *hs, double modes[SX_MAX_F], double record[SX_MAX_F]);
+/* the kernel's bounds for a kink at the j-th of n steps' ends inside a window (0 < j < n <= SX_WINDOW) */
+void sx_window_kinks(int n, int j, double *value, double *record);
 /* The data of the interpolant (each functional's values and rates at a step's ends) are the motion's
  * own less each band's free part. Where a band turns past this many radians over the step (a
  * diaphragm of grams per metre: 1e7 rad/s), its rate at the ends is so large that taking it out of
@@ -538,6 +559,10 @@ unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double
  * not clear, the full test (sx_watch_quiet_polys) on the same polynomials; quiet (0), the end's
  * peaks are taken */
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
+/* the first pass over a window of n steps of table st from xa[0] over xa[1..n] (each the start of the
+ * next step, the record's sample in it) to its end xe: 0 if it clears every storey (the peaks at the
+ * samples inside and at the end are then taken), else 1 */
+int sx_quiet_window(sx_run *R, const sx_region *r, const sx_step *st, int n, double xa[][SX_MAX_NA], const double xe[]);
 
 /* 1 if a standing wall's indicator line surely changes sign between a step's exact ends xa0 and xa1
  * (then the quiet test cannot clear the step, and need not run), else 0 */

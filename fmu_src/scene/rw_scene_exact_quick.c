@@ -206,3 +206,39 @@ int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, cons
     if ((why = sx_watch_quiet_polys(R, r, P, hs->h, xa0, unclear)) == 0) end_peaks(R, r, &Q);
     return why;
 }
+
+/* the peaks at a sample inside a window of the quantities of the record alone, which may peak at its
+ * kink (the pass held every other under its peak over the whole window) */
+static void kink_peaks(sx_run *R, const sx_region *r, const double xa[])
+{
+    static const int kinds[2][2] = {{SX_DEFORM, SX_PEAK_DEFORM}, {SX_BASE_ACC, SX_PEAK_ACC}};
+    int i, k;
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        for (k = 0; k < 2; k++) {
+            const int f = r->f_of[i][kinds[k][0]];
+            double *peak = sx_peak_of(R->res, i, kinds[k][1]);
+            if (f >= 0 && r->modes.share_max[f] == 0.0 && fabs(sx_functional(r, f, xa)) > *peak)
+                *peak = fabs(sx_functional(r, f, xa));
+        }
+}
+
+int sx_quiet_window(sx_run *R, const sx_region *r, const sx_step *st, int n, double xa[][SX_MAX_NA], const double xe[])
+{
+    double modes = 0.0, record = 0.0;
+    sx_mode_bounds B;
+    cubics Q;
+    int f, j;
+    for (j = 1; j < n; j++) { /* the kinks' weights (a NaN slope leaves every tail NaN) */
+        const double ds = fabs(xa[j][r->n + 1] - xa[j - 1][r->n + 1]);
+        double value, rec;
+        sx_window_kinks(n, j, &value, &rec);
+        modes += ds * value, record += ds * rec;
+    }
+    sx_mode_bounds_of(r, &st->herm_w, xa[0], &B);
+    cubics_of(r, &B, xa[0], xe, &Q);
+    for (f = 0; f < r->nf; f++) Q.tail[f] += modes * st->kink_modes[f] + record * st->kink_record[f];
+    if (first_pass(R, r, &Q)) return 1;
+    for (j = 1; j < n; j++) kink_peaks(R, r, xa[j]);
+    end_peaks(R, r, &Q);
+    return 0;
+}

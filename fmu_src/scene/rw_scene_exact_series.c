@@ -394,7 +394,11 @@ sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp)
     }
     sx_transpose(r->na, r->na, st->E, st->Et);
     padded_cols(r->na, st->Wd, st->Wdp);
-    if (r->modes.valid) sx_hermite_step_of(r, h, &st->herm);
+    if (r->modes.valid) {
+        sx_hermite_step_of(r, h, &st->herm);
+        sx_hermite_step_of(r, SX_WINDOW * h, &st->herm_w);
+        sx_kink_of(r, &st->herm_w, st->kink_modes, st->kink_record);
+    }
     st->used = stamp;
     st->h = h;
     return st;

@@ -1,12 +1,14 @@
 /* How the exact scene engine takes a record interval (the record linear over it): one slow step if
  * the modes' quiet test clears it, else its dyadic halves, down to the steps the exact series
  * converge over, each cleared by the quiet test on its table or examined on its series (which
- * stops at the first root and has the event handled). docs/scenes.md says how. */
+ * stops at the first root and has the event handled); and, where it can, three intervals at once
+ * under one quiet test (sx_window). docs/scenes.md says how. */
 #include "rw_scene_exact_internal.h"
 
 #include <limits.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static sx_region *current(sx_run *R) { return R->regions[R->cur]; }
 
@@ -183,6 +185,69 @@ static int dyadic(sx_run *R, double ta, double L, int level, double pieces, doub
     if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope, why > 0);
     if (dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index, ag_a, slope)) return 1;
     return dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index + 1.0, ag_a, slope);
+}
+
+/* After a window the quiet test did not clear, the record intervals taken one by one before the next
+ * is tried: WINDOW_WAIT times a back-off that doubles at each failure in a row, up to WINDOW_BACKOFF
+ * (failures come in runs, a peak rising or a wall near its lines, and a failed window's test is
+ * spent). The house's instructions were least with these (scripts/bench_scenes.py's house: windows of
+ * 3 steps, waits of 2 up to 16). */
+#ifndef WINDOW_BACKOFF
+#define WINDOW_BACKOFF 8
+#endif
+#ifndef WINDOW_WAIT
+#define WINDOW_WAIT 2
+#endif
+
+/* can the current region take a window (linear, its modes without blocks, no band so fast that the
+ * ends' data come from the modes' own coordinates)? */
+static int window_region(const sx_run *R, const sx_region *r, const sx_step *st)
+{
+    int i;
+    if (!r->modes.valid || r->modes.blocks || r->nz || st->herm_w.modal) return 0;
+    for (i = 0; i < R->sc.S.n_storeys; i++)
+        if (R->ndlines[i]) return 0;
+    return 1;
+}
+
+/* Record intervals of the same table at once: each step propagated exactly as one by one, and one
+ * quiet test over the window they make (the record kinks at the samples inside it:
+ * rw_scene_exact_hermite.c bounds what that adds). Where it clears, the steps are taken as sx_advance
+ * takes them, to the bit; where not, the first is tested alone as slow_step tests it. */
+int sx_window(sx_run *R, const double t[], int n)
+{
+    sx_region *r = current(R);
+    double x[RW_SCENE_NX], xa[SX_WINDOW][SX_MAX_NA], xe[SX_WINDOW][SX_MAX_NA];
+    sx_step *st;
+    int j, why;
+    if (R->window_wait > 0) return R->window_wait--, 0;
+    if (n != SX_WINDOW || !r->modes.valid || !(st = sx_step_of(r, t[1] - t[0], SX_TIME_TOL(t[1]), R->stamp))) return 0;
+    if (!window_region(R, r, st)) return 0;
+    for (j = 1; j < n; j++)
+        if (sx_step_of(r, t[j + 1] - t[j], SX_TIME_TOL(t[j + 1]), R->stamp) != st) return 0;
+    memcpy(x, R->x, sizeof x);
+    for (j = 0; j < n; j++) { /* (each start as sx_advance gathers it) */
+        const double ag = sx_ground(R, t[j]), slope = (sx_ground(R, t[j + 1]) - ag) / (t[j + 1] - t[j]);
+        if (j) sx_scatter(r, xe[j - 1], x);
+        sx_gather(r, x, ag, slope, xa[j]);
+        sx_step_propagate(r, st, xa[j], xe[j]);
+    }
+    if (sx_quiet_window(R, r, st, n, xa, xe[n - 1]) == 0) {
+        R->window_backoff = 1;
+        for (j = 0; j < n; j++) {
+            if (j) sx_observe(R);
+            table_step(R, r, st, xa[j], xe[j], t[j + 1]);
+        }
+        return n;
+    }
+    R->window_wait = R->window_backoff * WINDOW_WAIT;
+    if (R->window_backoff < WINDOW_BACKOFF) R->window_backoff *= 2;
+    st->used = LONG_MAX; /* (kept while in use: slow_step) */
+    why = sx_quiet_ends(R, r, &st->herm, xa[0], xe[0]);
+    st->used = R->stamp;
+    if (why) return 0;
+    table_step(R, r, st, xa[0], xe[0], t[1]);
+    return 1;
 }
 
 /* the interval [R->t, tb], the record linear over it */

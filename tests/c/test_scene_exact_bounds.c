@@ -13,23 +13,11 @@
 
 #include "check.h"
 #include "scene_random.h"
+#include "scene_series.h"
 #include "rw_scene_exact.h"
 #include "rw_scene_exact_internal.h"
 
 #define POINTS 16 /* the points tried in a step, past its start */
-
-/* the exact motion over [0, L] from xa0 (series parts no longer than the region's limit) */
-static void exact_state(const sx_region *r, const double xa0[], double L, double xa[])
-{
-    const int parts = sx_parts(r, L);
-    sx_series s;
-    int p;
-    memcpy(xa, xa0, sizeof(double) * (size_t)r->na);
-    for (p = 0; p < parts && L > 0.0; p++) {
-        sx_series_of(r, xa, L / parts, &s);
-        sx_series_at(r, &s, 1.0, xa);
-    }
-}
 
 /* a Bernstein cubic's rate in u */
 static double bern_rate(const double *b, double u)
