@@ -214,10 +214,11 @@ static int integrate(sx_run *R)
 {
     double t[SX_WINDOW + 1];
     while (R->t < R->opt->t_end) {
-        int n = 1;
+        int n = 1, taken;
         t[0] = R->t, t[1] = next_stop(R);
         while (n < SX_WINDOW && t[n] < R->opt->t_end) t[n + 1] = stop_after(R, t[n]), n++;
-        if (!(n > 1 && sx_window(R, t, n)) && sx_advance(R, t[1])) return R->error;
+        taken = n > 1 ? sx_window(R, t, n) : 0;
+        if (taken < 0 || (taken == 0 && sx_advance(R, t[1]))) return R->error;
         sx_observe(R);
     }
     return RW_SCENE_OK;

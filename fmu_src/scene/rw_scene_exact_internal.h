@@ -328,7 +328,8 @@ int sx_handle_events(sx_run *R);        /* the event update at R->t, then the re
 int sx_advance(sx_run *R, double tb);   /* the interval [R->t, tb]: 0, or 1 with R->error set */
 /* the record intervals [t[0] = R->t, t[1]], ..., [t[n-1], t[n]] at once, where the quiet test clears
  * them over the window they make (each observed at its end by sx_observe but the last): the
- * intervals taken (n; 1 if the first alone was, its own quiet test clearing it; 0 if none) */
+ * intervals taken (n; 1 where the window failed and the first was taken alone, as sx_advance takes
+ * it; 0 if no window was tried), or -1 with R->error set */
 int sx_window(sx_run *R, const double t[], int n);
 void sx_observe(sx_run *R); /* the output row due at R->t and the energy balance there */
 
@@ -559,8 +560,8 @@ unsigned sx_watch_box_lines(const sx_run *R, int i, double c1, double r1, double
  * not clear, the full test (sx_watch_quiet_polys) on the same polynomials; quiet (0), the end's
  * peaks are taken */
 int sx_quiet_ends(sx_run *R, const sx_region *r, const sx_hermite_step *hs, const double xa0[], const double xa1[]);
-/* the first pass over a window of n steps of table st from xa[0] over xa[1..n] (each the start of the
- * next step, the record's sample in it) to its end xe: 0 if it clears every storey (the peaks at the
+/* the first pass over a window of n steps of table st from xa[0] over xa[1..n-1] (each the start of
+ * a step, the record's sample in it) to its end xe: 0 if it clears every storey (the peaks at the
  * samples inside and at the end are then taken), else 1 */
 int sx_quiet_window(sx_run *R, const sx_region *r, const sx_step *st, int n, double xa[][SX_MAX_NA], const double xe[]);
 

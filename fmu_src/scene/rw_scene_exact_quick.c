@@ -216,9 +216,9 @@ static void kink_peaks(sx_run *R, const sx_region *r, const double xa[])
     for (i = 0; i < R->sc.S.n_storeys; i++)
         for (k = 0; k < 2; k++) {
             const int f = r->f_of[i][kinds[k][0]];
-            double *peak = sx_peak_of(R->res, i, kinds[k][1]);
-            if (f >= 0 && r->modes.share_max[f] == 0.0 && fabs(sx_functional(r, f, xa)) > *peak)
-                *peak = fabs(sx_functional(r, f, xa));
+            double *peak = sx_peak_of(R->res, i, kinds[k][1]), v;
+            if (f < 0 || r->modes.share_max[f] != 0.0) continue;
+            if ((v = fabs(sx_functional(r, f, xa))) > *peak) *peak = v;
         }
 }
 

@@ -145,6 +145,18 @@ static int exact_steps(sx_run *R, double t1, double ta, double ag_a, double slop
     return 0;
 }
 
+/* the quiet test of a step of table st from xa0 to its exact end xa1 (the region's modes valid), and
+ * the step taken where it clears: 0, else why not */
+static int cleared_step(sx_run *R, const sx_region *r, sx_step *st, const double xa0[], const double xa1[], double t1)
+{
+    int why;
+    st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
+    why = sx_quiet_ends(R, r, &st->herm, xa0, xa1);
+    st->used = R->stamp;
+    if (!why) table_step(R, r, st, xa0, xa1, t1);
+    return why;
+}
+
 /* a slow step [R->t, t1] cleared by the quiet test on its (long) table: 0 if taken, else why not
  * (SX_MAY_CROSS, SX_MAY_PEAK, or -1: no modes, or no memory for the table). in_failed: the step is
  * a piece of one that failed, so a line that surely crosses over it is looked for first (over a
@@ -155,36 +167,38 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope,
     const double h = t1 - R->t;
     double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
     sx_step *st;
-    int why;
     if (!r->modes.valid) return -1;
     if (!(st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp))) return -1; /* no memory for it: the dyadic
                                     pieces end on the exact series */
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     sx_step_propagate(r, st, xa0, xa1);
     if (in_failed && sx_watch_sure_cross(R, r, xa0, xa1)) return SX_MAY_CROSS;
-    st->used = LONG_MAX; /* kept while in use: doubts settled inside the test (their store full) build tables */
-    why = sx_quiet_ends(R, r, &st->herm, xa0, xa1);
-    st->used = R->stamp;
-    if (why) return why;
-    table_step(R, r, st, xa0, xa1, t1);
-    return 0;
+    return cleared_step(R, r, st, xa0, xa1, t1);
 }
 
 /* The dyadic piece `index` of `level` of the interval [ta, ta + L] (its `pieces` = 2^level): one slow
  * step if the modes' test clears it, else its two halves, down to the exact steps (docs/scenes.md).
  * (L / pieces is exact, as ldexp's would be, without a call into the library at every interval.) */
+static int dyadic(sx_run *R, double ta, double L, int level, double pieces, double index, double ag_a, double slope);
+
+/* that piece once its slow step has failed for why: its exact steps, or its two halves */
+static int halves(sx_run *R, double ta, double L, int level, double pieces, double index, double ag_a, double slope,
+                  int why)
+{
+    const double h = L / pieces, t1 = index + 1.0 >= pieces ? ta + L : ta + (index + 1.0) * h;
+    if (h <= 2.0 * sx_hmax(current(R))) return exact_steps(R, t1, ta, ag_a, slope, why > 0);
+    if (dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index, ag_a, slope)) return 1;
+    return dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index + 1.0, ag_a, slope);
+}
+
 static int dyadic(sx_run *R, double ta, double L, int level, double pieces, double index, double ag_a, double slope)
 {
     const double h = L / pieces, t1 = index + 1.0 >= pieces ? ta + L : ta + (index + 1.0) * h;
-    const sx_region *r = current(R);
     int why;
     if (R->t >= t1) return 0;
-    if (R->t > ta + index * h || !r->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope, 0);
+    if (R->t > ta + index * h || !current(R)->modes.valid || level >= 30) return exact_steps(R, t1, ta, ag_a, slope, 0);
     why = slow_step(R, t1, ta, ag_a, slope, level > 0);
-    if (why == 0) return 0;
-    if (h <= 2.0 * sx_hmax(r)) return exact_steps(R, t1, ta, ag_a, slope, why > 0);
-    if (dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index, ag_a, slope)) return 1;
-    return dyadic(R, ta, L, level + 1, 2.0 * pieces, 2.0 * index + 1.0, ag_a, slope);
+    return why == 0 ? 0 : halves(R, ta, L, level, pieces, index, ag_a, slope, why);
 }
 
 /* After a window the quiet test did not clear, the record intervals taken one by one before the next
@@ -199,12 +213,12 @@ static int dyadic(sx_run *R, double ta, double L, int level, double pieces, doub
 #define WINDOW_WAIT 2
 #endif
 
-/* can the current region take a window (linear, its modes without blocks, no band so fast that the
+/* can the current region (its modes valid) take a window (linear, its modes without blocks, no band so fast that the
  * ends' data come from the modes' own coordinates)? */
 static int window_region(const sx_run *R, const sx_region *r, const sx_step *st)
 {
     int i;
-    if (!r->modes.valid || r->modes.blocks || r->nz || st->herm_w.modal) return 0;
+    if (r->modes.blocks || r->nz || st->herm_w.modal) return 0;
     for (i = 0; i < R->sc.S.n_storeys; i++)
         if (R->ndlines[i]) return 0;
     return 1;
@@ -213,11 +227,12 @@ static int window_region(const sx_run *R, const sx_region *r, const sx_step *st)
 /* Record intervals of the same table at once: each step propagated exactly as one by one, and one
  * quiet test over the window they make (the record kinks at the samples inside it:
  * rw_scene_exact_hermite.c bounds what that adds). Where it clears, the steps are taken as sx_advance
- * takes them, to the bit; where not, the first is tested alone as slow_step tests it. */
+ * takes them, to the bit; where not, the first interval is taken as sx_advance takes it, its slow
+ * step's test on the ends already propagated (and its halves where that fails too). */
 int sx_window(sx_run *R, const double t[], int n)
 {
     sx_region *r = current(R);
-    double x[RW_SCENE_NX], xa[SX_WINDOW][SX_MAX_NA], xe[SX_WINDOW][SX_MAX_NA];
+    double x[RW_SCENE_NX], ag[SX_WINDOW + 1], xa[SX_WINDOW][SX_MAX_NA], xe[SX_WINDOW][SX_MAX_NA];
     sx_step *st;
     int j, why;
     if (R->window_wait > 0) return R->window_wait--, 0;
@@ -226,10 +241,10 @@ int sx_window(sx_run *R, const double t[], int n)
     for (j = 1; j < n; j++)
         if (sx_step_of(r, t[j + 1] - t[j], SX_TIME_TOL(t[j + 1]), R->stamp) != st) return 0;
     memcpy(x, R->x, sizeof x);
+    for (j = 0; j <= n; j++) ag[j] = sx_ground(R, t[j]);
     for (j = 0; j < n; j++) { /* (each start as sx_advance gathers it) */
-        const double ag = sx_ground(R, t[j]), slope = (sx_ground(R, t[j + 1]) - ag) / (t[j + 1] - t[j]);
         if (j) sx_scatter(r, xe[j - 1], x);
-        sx_gather(r, x, ag, slope, xa[j]);
+        sx_gather(r, x, ag[j], (ag[j + 1] - ag[j]) / (t[j + 1] - t[j]), xa[j]);
         sx_step_propagate(r, st, xa[j], xe[j]);
     }
     if (sx_quiet_window(R, r, st, n, xa, xe[n - 1]) == 0) {
@@ -242,12 +257,8 @@ int sx_window(sx_run *R, const double t[], int n)
     }
     R->window_wait = R->window_backoff * WINDOW_WAIT;
     if (R->window_backoff < WINDOW_BACKOFF) R->window_backoff *= 2;
-    st->used = LONG_MAX; /* (kept while in use: slow_step) */
-    why = sx_quiet_ends(R, r, &st->herm, xa[0], xe[0]);
-    st->used = R->stamp;
-    if (why) return 0;
-    table_step(R, r, st, xa[0], xe[0], t[1]);
-    return 1;
+    if ((why = cleared_step(R, r, st, xa[0], xe[0], t[1])) == 0) return 1;
+    return halves(R, t[0], t[1] - t[0], 0, 1.0, 0.0, ag[0], xa[0][r->n + 1], why) ? -1 : 1;
 }
 
 /* the interval [R->t, tb], the record linear over it */
