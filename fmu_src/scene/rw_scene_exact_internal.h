@@ -136,9 +136,11 @@ typedef struct {
 } sx_modes;
 
 /* a functional's low-degree polynomial over a step (u in [0, 1]): its range is within the
- * coefficients' and `tail`, its derivative's within theirs and `dtail` */
+ * coefficients' and `tail`, its derivative's within theirs and `dtail`; `start` its exact value at
+ * the step's start (a Hermite cubic's coef[0] is not that where a band's free motion was taken out
+ * of it) */
 typedef struct {
-    double coef[SX_LO + 1], tail, dtail;
+    double coef[SX_LO + 1], tail, dtail, start;
     int deg;  /* the coefficients in use */
     int bern; /* 1: coef[0..3] are the Bernstein coefficients of a cubic (sx_hermite_polys), else
                  the monomial ones (the Taylor rows of a step's table) */
@@ -409,6 +411,8 @@ double sx_region_energy(const sx_region *r, const double x[]);
  * rounding of the record's times); NULL if its memory could not be had (the caller takes the
  * step on the exact series instead) */
 sx_step *sx_step_of(sx_region *r, double h, double tol, long stamp);
+/* is st the table of a step of length h (within tol, the rounding of the record's times)? */
+int sx_step_fits(const sx_step *st, double h, double tol);
 /* exp(Aa h / 2^k) by columns for k = 0..levels, each na x na in Et in turn: the shortest from its
  * table, the others by squaring it as sx_step_of squares a long table's; 0, or 1 if that table
  * could not be had */

@@ -14,9 +14,9 @@
 
 /* every functional's cubic over a step as arrays over the functionals (two to a vector register, the
  * arrays' last entry a zero pair for an odd count): Bernstein coefficients b[0..3] (a band's free
- * motion taken out), tails, and the exact value at the step's end */
+ * motion taken out), tails, and the exact values at the step's start and end */
 typedef struct {
-    double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], end[SX_MAX_F];
+    double b[4][SX_MAX_F + 1], tail[SX_MAX_F + 1], dtail[SX_MAX_F + 1], start[SX_MAX_F], end[SX_MAX_F];
     double bmax[SX_MAX_F]; /* the largest |b_k| (a NaN among them shows in the tails: abs_max) */
 } cubics;
 
@@ -73,7 +73,7 @@ static SX_ALWAYS_INLINE void cubics_of(const sx_region *r, const sx_mode_bounds 
     double d0[SX_MAX_F + 1], d1[SX_MAX_F + 1], size[SX_MAX_F + 1];
     int f;
     for (f = 0; f < nf; f++) {
-        Q->b[0][f] = sx_functional(r, f, xa0);
+        Q->start[f] = Q->b[0][f] = sx_functional(r, f, xa0);
         Q->end[f] = Q->b[3][f] = sx_functional(r, f, xa1);
         d0[f] = h * sx_functional_rate(r, f, xa0);
         d1[f] = h * sx_functional_rate(r, f, xa1);
@@ -98,7 +98,7 @@ static void lopolys_of(const sx_region *r, const cubics *Q, sx_lopoly P[SX_MAX_F
     int f, k;
     for (f = 0; f < r->nf; f++) {
         for (k = 0; k < 4; k++) P[f].coef[k] = Q->b[k][f];
-        P[f].tail = Q->tail[f], P[f].dtail = Q->dtail[f], P[f].deg = 3, P[f].bern = 1;
+        P[f].tail = Q->tail[f], P[f].dtail = Q->dtail[f], P[f].start = Q->start[f], P[f].deg = 3, P[f].bern = 1;
     }
 }
 

@@ -289,14 +289,18 @@ static void doubled(const sx_region *r, sx_step *st)
     st->h *= 2.0;
 }
 
+int sx_step_fits(const sx_step *st, double h, double tol)
+{
+    return st->h > 0.0 && fabs(st->h - h) <= (1e-12 * h > tol ? 1e-12 * h : tol);
+}
+
 /* the slot of length h, the one found last first (most steps are a record interval's) */
 static sx_step *cached(sx_region *r, double h, double tol)
 {
-    const double within = 1e-12 * h > tol ? 1e-12 * h : tol;
     int k;
-    if (fabs(r->step[r->last_step].h - h) <= within && r->step[r->last_step].h > 0.0) return &r->step[r->last_step];
+    if (sx_step_fits(&r->step[r->last_step], h, tol)) return &r->step[r->last_step];
     for (k = 0; k < SX_STEPS; k++)
-        if (r->step[k].h > 0.0 && fabs(r->step[k].h - h) <= within) return &r->step[r->last_step = k];
+        if (sx_step_fits(&r->step[k], h, tol)) return &r->step[r->last_step = k];
     return NULL;
 }
 

@@ -213,6 +213,7 @@ static void combine(sx_lopoly *out, const sx_lopoly *a, double ca, const sx_lopo
     for (k = 0; k <= out->deg; k++) out->coef[k] = ca * a->coef[k] + (b ? cb * b->coef[k] : 0.0);
     out->tail = fabs(ca) * a->tail + (b ? fabs(cb) * b->tail : 0.0);
     out->dtail = fabs(ca) * a->dtail + (b ? fabs(cb) * b->dtail : 0.0);
+    out->start = ca * a->start + (b ? cb * b->start : 0.0);
 }
 
 /* storey i's functionals' polynomials (NULL: the storey has none) */
@@ -254,6 +255,7 @@ static void low_polys(const sx_region *r, const sx_step *st, const double xa0[],
         for (k = 0; k <= SX_LO; k++) p->coef[k] = coef[f * (SX_LO + 1) + k];
         p->tail = r->f_scale[f] * tn / (1.0 - q);
         p->dtail = r->f_scale[f] * tn * ((SX_LO + 1) / (1.0 - q) + q / ((1.0 - q) * (1.0 - q)));
+        p->start = p->coef[0]; /* (the Taylor row of degree 0 is the functional's own) */
         p->deg = SX_LO;
         p->bern = 0;
     }
@@ -276,10 +278,13 @@ static void storey_view(const sx_run *R, const sx_region *r, const sx_lopoly P[S
 
 /* An affine line z = c + t w (w a Bernstein cubic) that moves away from zero all over the step in
  * the direction it starts with has no root, though it starts within rounding of zero (an event has
- * just set it there) or its range over the step reaches over zero (a band) */
+ * just set it there) or its range over the step reaches over zero (a band). The direction it starts
+ * with is its exact start's sign: the cubic's b[0] lacks a band's free motion, and a wall's base
+ * whose fast mode had carried it across a side's line (z > 0 at the start, b[0] on the far side)
+ * was taken past the line with no event (a grid of output rows that split the step found it). */
 static int moves_away(const sx_line *L, const sx_lopoly *w, double tol)
 {
-    const double *b = w->coef, z0 = L->c + L->t * b[0];
+    const double *b = w->coef, z0 = L->c + L->t * w->start;
     const double r0 = 3.0 * L->t * (b[1] - b[0]), r1 = 3.0 * L->t * (b[2] - b[1]), r2 = 3.0 * L->t * (b[3] - b[2]);
     const double lo = (r0 < r1 ? (r0 < r2 ? r0 : r2) : (r1 < r2 ? r1 : r2)) - fabs(L->t) * w->dtail;
     const double hi = (r0 > r1 ? (r0 > r2 ? r0 : r2) : (r1 > r2 ? r1 : r2)) + fabs(L->t) * w->dtail;

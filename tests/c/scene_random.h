@@ -50,10 +50,27 @@ static void random_spec(rw_scene_spec *s)
     }
 }
 
+/* a scene of walls in two storeys, both tied by `tie` (rigid in-plane walls, elastic diaphragms:
+ * the assessor's house's kind, whose regions the exact engine takes in windows) */
+static inline void random_house(rw_scene_spec *spec, double tie)
+{
+    int i;
+    do random_spec(spec);
+    while (spec->n_storeys < 2);
+    spec->n_storeys = 2;
+    spec->rigid_in_plane = 1;
+    spec->building.diaphragm_law = BD_ELASTIC;
+    for (i = 0; i < 2; i++) {
+        spec->has_wall[i] = 1;
+        random_wall(&spec->wall[i]);
+        spec->wall[i].Kd = tie;
+    }
+}
+
 /* a state of a motion: rotations up to the toppling limit, the building a few centimetres off, each
  * tie stretched by a force of at most a few kN per metre (random displacements of a 1e8 N/m per m
  * tie would make forces of MN, whose rates the scene's own arithmetic takes to 1e-10 only) */
-static void random_state(const rw_scene *sc, double *x)
+static inline void random_state(const rw_scene *sc, double *x)
 {
     const int N = sc->S.n_storeys;
     double y_below = 0.0, w_below = 0.0;

@@ -170,22 +170,6 @@ static void test_windows_bound_their_motion(void)
     CHECK(t.misses_without_kinks > 0, "the kinks' share of the tails was never needed: the test cannot tell");
 }
 
-/* a scene of walls in two storeys (rigid in-plane walls, elastic diaphragms: regions a window takes) */
-static void house(rw_scene_spec *spec, double tie)
-{
-    int i;
-    do random_spec(spec);
-    while (spec->n_storeys < 2);
-    spec->n_storeys = 2;
-    spec->rigid_in_plane = 1;
-    spec->building.diaphragm_law = BD_ELASTIC;
-    for (i = 0; i < 2; i++) {
-        spec->has_wall[i] = 1;
-        random_wall(&spec->wall[i]);
-        spec->wall[i].Kd = tie;
-    }
-}
-
 /* Runs that take windows against runs that stop at every sample for an output row: the same windows,
  * to the bit (once a failed window's samples moved the record's hint past the interval that
  * followed, and a run without output rows took two intervals as one). */
@@ -201,7 +185,7 @@ static void test_windows_take_every_interval(void)
         const rw_scene_record rec = {801, t, ag};
         rw_scene_options opt;
         rw_scene_spec spec;
-        house(&spec, n % 2 ? 1e6 : 1e8);
+        random_house(&spec, n % 2 ? 1e6 : 1e8);
         memset(&opt, 0, sizeof opt);
         opt.t_end = 4.0;
         memset(&a, 0, sizeof a), memset(&b, 0, sizeof b);
