@@ -281,7 +281,8 @@ typedef struct {
     double t;
     sx_region **regions;     /* the cached regions, each allocated as its slot is first used */
     int nregions, cur, capacity;
-    long stamp;
+    long stamp;              /* a clock: every region entry and every request for a step table ticks it,
+                                so that the region and the table used least recently go first */
     int nlines[RW_SCENE_MAX_STOREYS];
     sx_line lines[RW_SCENE_MAX_STOREYS][SX_MAX_LINES];
     sx_line_set line_set[RW_SCENE_MAX_STOREYS]; /* the same, as arrays for the quiet test's first pass */

@@ -71,7 +71,7 @@ static const halves *chain_for(sx_run *R, halves *c, const sx_doubt *d)
     c->region = -1;
     if (!(Et = (double *)realloc(c->Et, (size_t)(levels + 1) * nn * sizeof(double)))) return NULL;
     c->Et = Et;
-    if (sx_halves_of(r, d->h, levels, SX_TIME_TOL(d->t1), R->stamp, c->Et)) return NULL;
+    if (sx_halves_of(r, d->h, levels, SX_TIME_TOL(d->t1), ++R->stamp, c->Et)) return NULL;
     c->region = d->region, c->levels = levels, c->h = d->h;
     return c;
 }

@@ -106,7 +106,7 @@ static int quiet_step(sx_run *R, double h, double t1, double ag0, double slope)
     sx_step *st;
     int quiet;
     if (h > sx_hmax(r) * (1.0 + 1e-12)) return 0;
-    st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp);
+    st = sx_step_of(r, h, SX_TIME_TOL(t1), ++R->stamp);
     if (!st || (st->is_long && !r->modes.valid)) return 0; /* no memory, or a length at the limit, doubled: no
                                                               polynomial rows (the modes bound without them) */
     sx_gather(r, R->x, ag0, slope, xa0);
@@ -168,7 +168,7 @@ static int slow_step(sx_run *R, double t1, double ta, double ag_a, double slope,
     double xa0[SX_MAX_NA], xa1[SX_MAX_NA];
     sx_step *st;
     if (!r->modes.valid) return -1;
-    if (!(st = sx_step_of(r, h, SX_TIME_TOL(t1), R->stamp))) return -1; /* no memory for it: the dyadic
+    if (!(st = sx_step_of(r, h, SX_TIME_TOL(t1), ++R->stamp))) return -1; /* no memory for it: the dyadic
                                     pieces end on the exact series */
     sx_gather(r, R->x, ag_a + slope * (R->t - ta), slope, xa0);
     sx_step_propagate(r, st, xa0, xa1);
@@ -236,7 +236,7 @@ int sx_window(sx_run *R, const double t[], int n)
     sx_step *st;
     int j, why;
     if (R->window_wait > 0) return R->window_wait--, 0;
-    if (n != SX_WINDOW || !r->modes.valid || !(st = sx_step_of(r, t[1] - t[0], SX_TIME_TOL(t[1]), R->stamp))) return 0;
+    if (n != SX_WINDOW || !r->modes.valid || !(st = sx_step_of(r, t[1] - t[0], SX_TIME_TOL(t[1]), ++R->stamp))) return 0;
     if (!window_region(R, r, st)) return 0;
     for (j = 1; j < n; j++) /* (asking for their tables instead could take st's slot for another length) */
         if (!sx_step_fits(st, t[j + 1] - t[j], SX_TIME_TOL(t[j + 1]))) return 0;
