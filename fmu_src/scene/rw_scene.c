@@ -350,3 +350,13 @@ double rw_scene_diaphragm_deformation(const rw_scene *sc, const double x[], int 
     building_states(sc, x, xb);
     return bd_diaphragm_deformation(xb, i);
 }
+
+double rw_scene_tie_force(const rw_scene *sc, const double x[], int i)
+{
+    double xb[BD_NX];
+    rw_input in;
+    if (!standing(sc, i)) return 0.0;
+    building_states(sc, x, xb);
+    in.ag = 0.0, in.u_top = wall_u_top(xb, i); /* (the top spring's force does not take ag) */
+    return rw_F_top(&sc->S.wall[i], &in, RW_SCENE_WALL(x, i));
+}

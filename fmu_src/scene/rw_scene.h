@@ -85,5 +85,8 @@ void rw_scene_powers(const rw_scene *sc, double ag, const double x[], double *p_
 double rw_scene_s1(const rw_scene *sc, const double x[], int i);
 double rw_scene_s2(const rw_scene *sc, const double x[], int i);
 double rw_scene_diaphragm_deformation(const rw_scene *sc, const double x[], int i);
+/* the tie's force on diaphragm i, + toward +x (0 without a standing wall): the wall's top spring at
+ * the state, as rw_scene_derivatives's aux.F_top */
+double rw_scene_tie_force(const rw_scene *sc, const double x[], int i);
 
 #endif

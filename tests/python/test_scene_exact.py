@@ -115,6 +115,29 @@ def test_output_grid_and_bad_input():
             se.run(spec, t, ag, engine=engine, x0=[np.nan] + [0.0] * 11)
 
 
+@pytest.mark.parametrize("law", ["linear", "bilinear"])
+def test_rows_of_base_acceleration_and_tie_force_are_the_scenes(law):
+    """A row's base acceleration comes from the exact engine's region (the functional its peak is
+    taken from) and its tie force from the wall's top spring at the state, where CVODES's rows take
+    both from the scene's rates: two storeys, each wall on the diaphragm below, the same histories."""
+    t = np.linspace(0.0, 3.0, 601)
+    ag = 4.0 * np.sin(2 * np.pi * 1.5 * t) * np.exp(-t)
+    grid = np.linspace(0.0, 3.0, 241)   # (rows between the samples too)
+    wall = dict(WALL, Kd=1e6)
+    storeys = tuple(se.StoreySpec(wall=wall, md=md, kd=kd, cd=2 * 0.05 * np.sqrt(kd * md), Fyd=0.3 * kd * 0.01,
+                                  alphad=0.1) for md, kd in ((600.0, 6e4), (200.0, 2e4)))
+    spec = se.Spec(storeys=storeys, diaphragm_law=law)
+    a = se.run(spec, t, ag, engine="exact", t_out=grid)
+    b = se.run(spec, t, ag, engine="cvode", rtol=1e-11, t_out=grid)
+    assert a.engine == "exact"
+    for name in ("base_acc", "tie"):
+        x, y = getattr(a, name)[:, :2], getattr(b, name)[:, :2]
+        assert np.max(np.abs(x - y)) <= 1e-6 * np.max(np.abs(y)), name
+    floor_own = a.base_acc[:, 1] - np.interp(grid, t, ag)   # the floor's own motion, not the ground's
+    assert np.max(np.abs(floor_own)) > 0.1 * np.max(np.abs(ag))
+    assert np.max(np.abs(a.base_acc[:, 1])) <= a.peak_base_acc[1] * (1 + 1e-12)
+
+
 @pytest.mark.parametrize("tie", [0.0, 100.0])
 def test_collapse_past_instability_at_the_root_of_its_indicator(tie):
     """A wall hardly held at its top (a tie of 0 or 100 N/m per m) falls past its instability (the
