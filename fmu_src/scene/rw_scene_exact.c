@@ -158,7 +158,6 @@ static void track(double *peak, double v)
     if (fabs(v) > *peak) *peak = fabs(v);
 }
 
-/* the output row due at t and the energy balance (the energy from the region's quadratic form) */
 /* the output row due at R->t: the state's own functions, and each base's acceleration from the
  * region's functional, the one its peak is taken from (the scene's rates, which the row took before,
  * were 40 % of a run that writes a row every millisecond, as the building's floors ask for) */
@@ -179,6 +178,7 @@ static void write_row(sx_run *R, const sx_region *r)
     R->next_out++;
 }
 
+/* the energy balance (the energy from the region's quadratic form) and the output row due at t */
 static void observe(sx_run *R)
 {
     const double t = R->t;
