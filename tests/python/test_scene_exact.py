@@ -48,21 +48,33 @@ def test_peaks_within_one_percent_of_the_independent_solver(runs, name, kd, s1, 
     assert not exact.collapsed[0]
 
 
-def test_the_assessors_house_under_kobe_agrees_with_cvodes(fema, repo):
-    """The building file's two-storey house (its upper wall collapses) under Kobe at 0.5 g: the exact
-    engine against CVODES at rtol 1e-12 with the same events. The quiet test once took a wall's base
-    line as moving away from zero from the start of a cubic whose fast mode it had taken out, and a
-    crossing went by with no event: two events fewer, peaks 1e-5 to 8e-5 off and the collapse
-    1.6e-5 s early, where now they agree within 1e-8 and 1e-9 s."""
+# the building file's house under two records at 0.5 g: what CVODES says of its walls
+HOUSE_CASES = [("ff07a", [False, True]),    # Kobe NIS000: the upper wall collapses at 10.75 s
+               ("ff21b", [False, False])]   # Cape Mendocino's second component: both walls stand
+
+
+@pytest.mark.parametrize("name, collapsed", HOUSE_CASES)
+def test_the_assessors_house_agrees_with_cvodes(repo, name, collapsed):
+    """The building file's two-storey house under FEMA P695 records at 0.5 g: the exact engine
+    against CVODES at rtol 1e-12 with the same events and collapses. The quiet test once took a
+    wall's base line as moving away from zero from the start of a cubic whose fast mode it had taken
+    out, and a crossing went by with no event: under Kobe two events fewer, peaks 1e-5 to 8e-5 off
+    and the collapse 1.6e-5 s early; under ff21b the upper wall fell where it stands (a third of the
+    suite's 88 runs of this house moved). Now within ten times CVODES's own change from rtol 1e-10 to
+    1e-12 (which the motion's sensitivity sets: 2e-7 of a peak under Kobe)."""
     spec = monolithic.building_spec(building_file.read(repo / "examples" / "two-storey-brick.toml"))
-    rec = fema["ff07a"]
+    by_name = {r.name: r for r in suite.fema_farfield(suite.fema_cache())}
+    rec = records.read_at2(by_name[name].path).to_pga(0.5)
     exact = se.run(spec, rec.t, rec.ag, engine="exact")
-    cvode = se.run(spec, rec.t, rec.ag, engine="cvode", rtol=1e-12)
-    assert exact.engine == "exact" and exact.events == cvode.events
-    assert list(exact.collapsed[:2]) == list(cvode.collapsed[:2]) == [False, True]
-    assert exact.t_collapse[1] == pytest.approx(cvode.t_collapse[1], abs=1e-8)
+    fine = se.run(spec, rec.t, rec.ag, engine="cvode", rtol=1e-12)
+    coarse = se.run(spec, rec.t, rec.ag, engine="cvode", rtol=1e-10)
+    assert exact.engine == "exact" and exact.events == fine.events
+    assert list(exact.collapsed[:2]) == list(fine.collapsed[:2]) == collapsed
+    for i in np.flatnonzero(collapsed):
+        assert abs(exact.t_collapse[i] - fine.t_collapse[i]) <= 1e-8 + 10 * abs(coarse.t_collapse[i] - fine.t_collapse[i])
     for key in ("peak_s1", "peak_s2", "peak_diaphragm"):
-        assert getattr(exact, key)[:2] == pytest.approx(getattr(cvode, key)[:2], rel=1e-7), key
+        e, f, c = (np.asarray(getattr(r, key)[:2]) for r in (exact, fine, coarse))
+        assert np.all(np.abs(e - f) <= 1e-8 * np.abs(f) + 10 * np.abs(c - f)), key
 
 
 @pytest.mark.parametrize("name, kd, s1, s2", REFERENCE)
