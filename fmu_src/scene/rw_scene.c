@@ -37,6 +37,16 @@ static double wall_u_top(const double xb[BD_NX], int i)
     return diaphragm_displacement(xb, i) - diaphragm_displacement(xb, i - 1);
 }
 
+/* the inputs of wall i as its own model sees them, at the base acceleration a_base (0 for what
+ * reads its top alone: the top spring's force, its energy) */
+static rw_input wall_input(const double xb[BD_NX], int i, double a_base)
+{
+    rw_input in;
+    in.ag = a_base;
+    in.u_top = wall_u_top(xb, i);
+    return in;
+}
+
 /* The wall's model evaluated at base accelerations 0 and 1: it is affine in a_b (rw_derivatives
  * and rw_F_base), whatever its regime, so two evaluations give the whole dependence. */
 static void wall_linearised(const rw_scene *sc, int i, const double x[], const double xb[BD_NX], wall_lin *w)
@@ -46,12 +56,11 @@ static void wall_linearised(const rw_scene *sc, int i, const double x[], const d
     const rw_regime *m = &sc->regime[i];
     const double *xi = RW_SCENE_WALL(x, i);
     double dx1[RW_NX];
-    rw_input in0, in1;
+    const rw_input in0 = wall_input(xb, i, 0.0);
+    rw_input in1 = in0;
     int k;
-    w->u_top = wall_u_top(xb, i);
-    in0.ag = 0.0;
     in1.ag = 1.0;
-    in0.u_top = in1.u_top = w->u_top;
+    w->u_top = in0.u_top;
     rw_derivatives(p, d, m, &in0, xi, w->dx0);
     rw_derivatives(p, d, m, &in1, xi, dx1);
     for (k = 0; k < RW_NX; k++) w->beta[k] = dx1[k] - w->dx0[k];
@@ -136,8 +145,7 @@ void rw_scene_init(rw_scene *sc, const rw_scene_spec *spec, double ag0, double x
         }
         rw_derive(&sc->S.wall[i], &sc->D[i]);
         /* the initial regime: from the start states, or the start accelerations on the ground's */
-        in.ag = ag0;
-        in.u_top = wall_u_top(xb, i);
+        in = wall_input(xb, i, ag0);
         rw_init_regime(&sc->S.wall[i], &sc->D[i], &in, RW_SCENE_WALL(x, i), &sc->regime[i], NULL, NULL);
     }
 }
@@ -195,16 +203,6 @@ void rw_scene_derivatives(const rw_scene *sc, double ag, const double x[], doubl
     }
 }
 
-/* the instant's inputs of wall i as its own model sees them */
-static rw_input wall_input(const rw_scene *sc, const double xb[BD_NX], const rw_scene_aux *aux, int i)
-{
-    rw_input in;
-    (void)sc;
-    in.ag = aux->a_base[i];
-    in.u_top = wall_u_top(xb, i);
-    return in;
-}
-
 void rw_scene_indicators(const rw_scene *sc, double ag, const double x[], double z[])
 {
     double dx[RW_SCENE_NX], xb[BD_NX];
@@ -219,7 +217,7 @@ void rw_scene_indicators(const rw_scene *sc, double ag, const double x[], double
             for (k = 0; k < RW_NZ; k++) zi[k] = 1.0;
             continue;
         }
-        in = wall_input(sc, xb, &aux, i);
+        in = wall_input(xb, i, aux.a_base[i]);
         rw_event_indicators(&sc->S.wall[i], &sc->D[i], &sc->regime[i], &in, RW_SCENE_WALL(x, i), zi);
         /* as in both exact engines: under a law of q alone the mid-height hinge's switch changes
          * nothing in the motion (rw_mid_switch_is_bookkeeping), so no solver need stop there; the
@@ -241,7 +239,7 @@ int rw_scene_event_update(rw_scene *sc, double t, double ag, double x[], double 
         rw_event_result r;
         rw_input in;
         if (!standing(sc, i)) continue;
-        in = wall_input(sc, xb, &aux, i);
+        in = wall_input(xb, i, aux.a_base[i]);
         rw_event_update(p, &sc->D[i], &sc->regime[i], &in, xi, &r, NULL, NULL);
         sc->impacts[i] += r.impacts;
         if (r.states_changed) flags |= 1;
@@ -304,8 +302,7 @@ double rw_scene_energy(const rw_scene *sc, double ag, const double x[])
         if (!standing(sc, i)) continue;
         /* a tied wall's energy reads its top's displacement only (rw_energy), not its base's
          * acceleration: the scene's rates are not needed here */
-        in.ag = 0.0;
-        in.u_top = wall_u_top(xb, i);
+        in = wall_input(xb, i, 0.0);
         E += rw_energy(&sc->S.wall[i], &sc->D[i], &sc->regime[i], &in, xi) + 0.5 * wall_mass(sc, i) * vb * vb +
              vb * wall_rocking_momentum(sc, i, xi);
     }
@@ -357,6 +354,6 @@ double rw_scene_tie_force(const rw_scene *sc, const double x[], int i)
     rw_input in;
     if (!standing(sc, i)) return 0.0;
     building_states(sc, x, xb);
-    in.ag = 0.0, in.u_top = wall_u_top(xb, i); /* (the top spring's force does not take ag) */
+    in = wall_input(xb, i, 0.0);
     return rw_F_top(&sc->S.wall[i], &in, RW_SCENE_WALL(x, i));
 }
